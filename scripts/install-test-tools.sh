@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Installs the system tools nrgdb's tests use, when missing: xmllint
+# (libxml2-utils) for IndoorGML schema validation. Safe to run repeatedly;
+# without root or apt-get it only says what is missing (the tests that need a
+# tool then skip with a notice, unless NRGDB_REQUIRE_SHARED=1).
+set -u
+need=()
+command -v xmllint >/dev/null 2>&1 || need+=(libxml2-utils)
+[ ${#need[@]} -eq 0 ] && exit 0
+if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+  echo "install-test-tools: installing ${need[*]}" >&2
+  { apt-get install -y -q "${need[@]}" || { apt-get update -q && apt-get install -y -q "${need[@]}"; }; } >/dev/null 2>&1 \
+    || echo "install-test-tools: could not install ${need[*]}" >&2
+else
+  echo "install-test-tools: missing ${need[*]} (install them to run every test)" >&2
+fi
+exit 0

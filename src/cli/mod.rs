@@ -1,0 +1,62 @@
+//! Subcommands of the `nrgdb` binary: each turns its clap arguments into
+//! library parameters, calls the library and writes to a `Write`.
+//!
+//! Exit codes: 0 success, 1 "no result" or findings (e.g. `check`), 2 error.
+
+use std::io::Write;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+/// The command line.
+#[derive(Debug, Parser)]
+#[command(
+    name = "nrgdb",
+    version,
+    about = "A graph database and query engine for indoor models (IndoorGML Node-Relation Graphs)",
+    long_about = "nrgdb extracts IndoorGML Node-Relation Graphs (rooms, corridors, doors and how they \
+connect) from occupancy grid maps, stores their revisions, queries and routes over them, and reads, \
+writes and checks IndoorGML 1.0.3.\n\nAll coordinates are metres in the map frame (origin lower left, y up).",
+    propagate_version = true
+)]
+pub struct Cli {
+    /// More log output (-v info, -vv debug); logs go to stderr.
+    #[arg(short, long, global = true, action = clap::ArgAction::Count)]
+    pub verbose: u8,
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// The subcommands.
+#[derive(Debug, Subcommand)]
+pub enum Command {}
+
+/// Runs one subcommand, writing its report to `out`.
+pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
+    let _ = out;
+    match command {}
+}
+
+/// Sends `tracing` output to stderr at a level chosen by `-v` or `RUST_LOG`.
+pub fn init_logging(verbose: u8) {
+    let default = match verbose {
+        0 => "warn",
+        1 => "info",
+        _ => "debug",
+    };
+    let filter = tracing_subscriber::EnvFilter::try_from_default_env()
+        .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new(default));
+    let _ = tracing_subscriber::fmt()
+        .with_env_filter(filter)
+        .with_writer(std::io::stderr)
+        .try_init();
+}
+
+/// Whether an error is only stdout closing early (`nrgdb … | head`).
+pub fn is_broken_pipe(report: &miette::Report) -> bool {
+    report
+        .chain()
+        .filter_map(|e| e.downcast_ref::<std::io::Error>())
+        .any(|e| e.kind() == std::io::ErrorKind::BrokenPipe)
+}

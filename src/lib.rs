@@ -1,0 +1,14 @@
+//! # nrgdb
+//!
+//! A graph database and query engine for indoor models. nrgdb turns a
+//! robot's 2D occupancy grid map into an IndoorGML Node-Relation Graph
+//! (rooms, corridors, doors and how they connect), stores its revisions,
+//! queries and routes over it, and reads and writes IndoorGML 1.0.3.
+//!
+//! Data flows one way: `grid` → `imaging` → `extract` → [`model`] ↔
+//! [`indoorgml`] · `store` · `query` · `route` · `diff` · `server`.
+//! Every public coordinate is in metres in the map frame (ROS convention:
+//! origin at the lower left, y up).
+
+pub mod atomic;
+pub mod model;

@@ -1,0 +1,23 @@
+//! The `nrgdb` command line: a thin layer over the library (see `cli/`).
+
+mod cli;
+
+use std::process::ExitCode;
+
+use clap::Parser;
+
+fn main() -> ExitCode {
+    let args = cli::Cli::parse();
+    cli::init_logging(args.verbose);
+    let stdout = std::io::stdout();
+    match cli::run(args.command, &mut stdout.lock()) {
+        Ok(code) => code,
+        Err(report) => {
+            if cli::is_broken_pipe(&report) {
+                return ExitCode::SUCCESS;
+            }
+            eprintln!("{report:?}");
+            ExitCode::from(2)
+        }
+    }
+}

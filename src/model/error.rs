@@ -1,0 +1,54 @@
+//! Errors raised when a model breaks one of its invariants.
+
+use super::SpaceId;
+
+/// A model that is not a well-formed NRG.
+#[derive(Debug, thiserror::Error, PartialEq)]
+#[non_exhaustive]
+pub enum ModelError {
+    /// Two spaces share an id.
+    #[error("space id {0} is used twice (ids must be unique)")]
+    DuplicateSpace(SpaceId),
+    /// A connection names a space that is not in the model.
+    #[error("connection {a}-{b} names space {missing}, which is not in the model")]
+    UnknownSpace {
+        /// First end of the connection.
+        a: SpaceId,
+        /// Second end of the connection.
+        b: SpaceId,
+        /// The end that does not exist.
+        missing: SpaceId,
+    },
+    /// A connection joins a space to itself.
+    #[error("connection {0}-{0} joins a space to itself")]
+    SelfLoop(SpaceId),
+    /// Two connections join the same pair of spaces.
+    #[error("spaces {a} and {b} are connected twice (at most one connection a pair)")]
+    DuplicateConnection {
+        /// First end.
+        a: SpaceId,
+        /// Second end.
+        b: SpaceId,
+    },
+    /// A coordinate or length is NaN or infinite.
+    #[error("{what} of space {id} is not a finite number")]
+    NotFinite {
+        /// The space concerned.
+        id: SpaceId,
+        /// Which value is broken.
+        what: &'static str,
+    },
+    /// A connection length is negative or not finite.
+    #[error("connection {a}-{b} has length {length_m} m; it must be finite and >= 0")]
+    BadLength {
+        /// First end.
+        a: SpaceId,
+        /// Second end.
+        b: SpaceId,
+        /// The offending length.
+        length_m: f64,
+    },
+    /// A polygon ring with fewer than three distinct points.
+    #[error("polygon of space {0} has fewer than 3 points")]
+    DegeneratePolygon(SpaceId),
+}

@@ -1,0 +1,22 @@
+//! The Node-Relation Graph (NRG) of IndoorGML as plain data: [`Space`]s,
+//! [`Connection`]s between them and the [`Nrg`] that holds both.
+//!
+//! Owns the types every other module exchanges, their invariants
+//! ([`Nrg::new`] checks them), the public JSON form and the navigable
+//! connectivity graph ([`ConnectivityGraph`]). Coordinates are metres in the
+//! map frame (x right, y up). Uses nothing from the rest of the crate; must
+//! not know about XML, SQL, HTTP or the terminal.
+
+mod connection;
+mod error;
+mod geometry;
+mod graph;
+mod nrg;
+mod space;
+
+pub use connection::{Connection, ConnectionKind};
+pub use error::ModelError;
+pub use geometry::{Point, Ring, point_in_ring, polygon_area, polygon_centroid, ring_is_ccw};
+pub use graph::ConnectivityGraph;
+pub use nrg::Nrg;
+pub use space::{Space, SpaceId, SpaceKind};

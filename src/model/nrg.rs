@@ -1,0 +1,250 @@
+//! The NRG: spaces and the connections between them, with their invariants.
+
+use std::collections::{BTreeMap, HashSet};
+
+use serde::{Deserialize, Serialize};
+
+use super::{Connection, ModelError, Space, SpaceId};
+
+/// A Node-Relation Graph: the spaces of one floor and how they connect.
+///
+/// Invariants (checked by [`Nrg::new`]): space ids are unique, every
+/// connection names two distinct existing spaces, a pair is connected at
+/// most once, coordinates and lengths are finite. Spaces are kept sorted by
+/// id and connections by `(a, b)` with `a < b`, so equal models serialise to
+/// equal bytes.
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct Nrg {
+    spaces: Vec<Space>,
+    connections: Vec<Connection>,
+}
+
+#[derive(Deserialize)]
+struct RawNrg {
+    spaces: Vec<Space>,
+    #[serde(default)]
+    connections: Vec<Connection>,
+}
+
+impl<'de> Deserialize<'de> for Nrg {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let raw = RawNrg::deserialize(d)?;
+        Nrg::new(raw.spaces, raw.connections).map_err(serde::de::Error::custom)
+    }
+}
+
+impl Nrg {
+    /// Builds a model, checking its invariants and normalising order,
+    /// connection direction and areas.
+    pub fn new(
+        mut spaces: Vec<Space>,
+        mut connections: Vec<Connection>,
+    ) -> Result<Nrg, ModelError> {
+        spaces.sort_by_key(|s| s.id);
+        for pair in spaces.windows(2) {
+            if pair[0].id == pair[1].id {
+                return Err(ModelError::DuplicateSpace(pair[0].id));
+            }
+        }
+        for space in &mut spaces {
+            check_space(space)?;
+            space.update_area();
+        }
+        let ids: HashSet<SpaceId> = spaces.iter().map(|s| s.id).collect();
+        let mut seen = HashSet::new();
+        for c in &mut connections {
+            if c.a == c.b {
+                return Err(ModelError::SelfLoop(c.a));
+            }
+            for end in [c.a, c.b] {
+                if !ids.contains(&end) {
+                    return Err(ModelError::UnknownSpace {
+                        a: c.a,
+                        b: c.b,
+                        missing: end,
+                    });
+                }
+            }
+            if !c.length_m.is_finite() || c.length_m < 0.0 {
+                return Err(ModelError::BadLength {
+                    a: c.a,
+                    b: c.b,
+                    length_m: c.length_m,
+                });
+            }
+            let (a, b) = c.key();
+            c.a = a;
+            c.b = b;
+            if !seen.insert((a, b)) {
+                return Err(ModelError::DuplicateConnection { a, b });
+            }
+        }
+        connections.sort_by_key(|c| c.key());
+        Ok(Nrg {
+            spaces,
+            connections,
+        })
+    }
+
+    /// The spaces, sorted by id.
+    pub fn spaces(&self) -> &[Space] {
+        &self.spaces
+    }
+
+    /// The connections, sorted by `(a, b)` with `a < b`.
+    pub fn connections(&self) -> &[Connection] {
+        &self.connections
+    }
+
+    /// The space with this id.
+    pub fn space(&self, id: SpaceId) -> Option<&Space> {
+        self.spaces
+            .binary_search_by_key(&id, |s| s.id)
+            .ok()
+            .and_then(|i| self.spaces.get(i))
+    }
+
+    /// The connection between two spaces, in either order.
+    pub fn connection(&self, a: SpaceId, b: SpaceId) -> Option<&Connection> {
+        let key = if a <= b { (a, b) } else { (b, a) };
+        self.connections
+            .binary_search_by_key(&key, |c| c.key())
+            .ok()
+            .and_then(|i| self.connections.get(i))
+    }
+
+    /// Connections touching `id`.
+    pub fn connections_of(&self, id: SpaceId) -> impl Iterator<Item = &Connection> {
+        self.connections
+            .iter()
+            .filter(move |c| c.a == id || c.b == id)
+    }
+
+    /// Number of connections per space (all kinds).
+    pub fn degrees(&self) -> BTreeMap<SpaceId, usize> {
+        let mut deg: BTreeMap<SpaceId, usize> = self.spaces.iter().map(|s| (s.id, 0)).collect();
+        for c in &self.connections {
+            for end in [c.a, c.b] {
+                if let Some(d) = deg.get_mut(&end) {
+                    *d += 1;
+                }
+            }
+        }
+        deg
+    }
+
+    /// The smallest id not used by any space (ids start at 1).
+    pub fn next_id(&self) -> SpaceId {
+        SpaceId(self.spaces.last().map_or(1, |s| s.id.0.saturating_add(1)))
+    }
+
+    /// Takes the model apart.
+    pub fn into_parts(self) -> (Vec<Space>, Vec<Connection>) {
+        (self.spaces, self.connections)
+    }
+
+    /// The public JSON form, pretty-printed.
+    pub fn to_json(&self) -> String {
+        // Serialising plain data with string keys cannot fail.
+        serde_json::to_string_pretty(self).unwrap_or_default()
+    }
+
+    /// Reads the public JSON form.
+    pub fn from_json(text: &str) -> Result<Nrg, serde_json::Error> {
+        serde_json::from_str(text)
+    }
+}
+
+fn check_space(space: &Space) -> Result<(), ModelError> {
+    let finite = |p: &[f64; 2]| p[0].is_finite() && p[1].is_finite();
+    if !finite(&space.anchor) {
+        return Err(ModelError::NotFinite {
+            id: space.id,
+            what: "anchor",
+        });
+    }
+    for ring in std::iter::once(&space.polygon).chain(&space.holes) {
+        if !ring.iter().all(finite) {
+            return Err(ModelError::NotFinite {
+                id: space.id,
+                what: "polygon",
+            });
+        }
+    }
+    if space.polygon.len() < 3 {
+        return Err(ModelError::DegeneratePolygon(space.id));
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::{ConnectionKind, SpaceKind};
+
+    fn square(id: u32, x: f64) -> Space {
+        let poly = vec![[x, 0.0], [x + 1.0, 0.0], [x + 1.0, 1.0], [x, 1.0]];
+        Space::new(SpaceId(id), SpaceKind::Room, [x + 0.5, 0.5], poly)
+    }
+
+    fn conn(a: u32, b: u32) -> Connection {
+        Connection {
+            a: SpaceId(a),
+            b: SpaceId(b),
+            kind: ConnectionKind::Open,
+            length_m: 1.0,
+        }
+    }
+
+    #[test]
+    fn normalises_order_and_direction() {
+        let nrg = Nrg::new(vec![square(2, 1.0), square(1, 0.0)], vec![conn(2, 1)]).unwrap();
+        assert_eq!(nrg.spaces()[0].id, SpaceId(1));
+        assert_eq!(nrg.connections()[0].key(), (SpaceId(1), SpaceId(2)));
+        assert!(nrg.connection(SpaceId(2), SpaceId(1)).is_some());
+    }
+
+    #[test]
+    fn rejects_broken_models() {
+        assert_eq!(
+            Nrg::new(vec![square(1, 0.0), square(1, 1.0)], vec![]),
+            Err(ModelError::DuplicateSpace(SpaceId(1)))
+        );
+        assert!(matches!(
+            Nrg::new(vec![square(1, 0.0)], vec![conn(1, 9)]),
+            Err(ModelError::UnknownSpace {
+                missing: SpaceId(9),
+                ..
+            })
+        ));
+        assert_eq!(
+            Nrg::new(vec![square(1, 0.0)], vec![conn(1, 1)]),
+            Err(ModelError::SelfLoop(SpaceId(1)))
+        );
+        assert!(matches!(
+            Nrg::new(
+                vec![square(1, 0.0), square(2, 1.0)],
+                vec![conn(1, 2), conn(2, 1)]
+            ),
+            Err(ModelError::DuplicateConnection { .. })
+        ));
+    }
+
+    #[test]
+    fn json_round_trip_keeps_everything() {
+        let mut s = square(1, 0.0);
+        s.name = Some("Kitchen".into());
+        s.attributes.insert("floor".into(), serde_json::json!(2));
+        let nrg = Nrg::new(vec![s, square(2, 1.0)], vec![conn(1, 2)]).unwrap();
+        let text = nrg.to_json();
+        assert!(text.contains("\"area_m2\": 1.0"));
+        assert_eq!(Nrg::from_json(&text).unwrap(), nrg);
+    }
+
+    #[test]
+    fn json_with_unknown_space_is_refused() {
+        let text = r#"{"spaces":[],"connections":[{"a":1,"b":2,"kind":"door","length_m":1}]}"#;
+        let err = Nrg::from_json(text).unwrap_err().to_string();
+        assert!(err.contains("not in the model"), "{err}");
+    }
+}

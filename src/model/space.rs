@@ -1,0 +1,140 @@
+//! A space (an IndoorGML cell and its dual state): a room, a corridor or a door.
+
+use std::fmt;
+use std::str::FromStr;
+
+use serde::{Deserialize, Serialize};
+use serde_json::{Map, Value};
+
+use super::geometry::{Point, Ring, polygon_area};
+
+/// Stable integer identity of a space within one map.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+#[serde(transparent)]
+pub struct SpaceId(pub u32);
+
+impl fmt::Display for SpaceId {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.0)
+    }
+}
+
+/// What a space is used for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SpaceKind {
+    /// A room: a space people stay in (IndoorGML `GeneralSpace`).
+    Room,
+    /// A corridor: a space people pass through (IndoorGML `TransitionSpace`).
+    Corridor,
+    /// A door or doorway (IndoorGML `ConnectionSpace`, the thick-door model).
+    Door,
+    /// Anything else (IndoorGML `CellSpace`).
+    Other,
+}
+
+impl SpaceKind {
+    /// All kinds, in a fixed order.
+    pub const ALL: [SpaceKind; 4] = [
+        SpaceKind::Room,
+        SpaceKind::Corridor,
+        SpaceKind::Door,
+        SpaceKind::Other,
+    ];
+
+    /// The lower-case name used in JSON, queries and the CLI.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            SpaceKind::Room => "room",
+            SpaceKind::Corridor => "corridor",
+            SpaceKind::Door => "door",
+            SpaceKind::Other => "other",
+        }
+    }
+}
+
+impl fmt::Display for SpaceKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+impl FromStr for SpaceKind {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        SpaceKind::ALL
+            .into_iter()
+            .find(|k| k.as_str().eq_ignore_ascii_case(s))
+            .ok_or_else(|| {
+                format!("unknown space kind '{s}' (expected room, corridor, door or other)")
+            })
+    }
+}
+
+/// One space of the NRG: a cell of the primal space and its node in the graph.
+///
+/// The polygon is the space's 2D footprint in metres in the map frame: an
+/// open ring (the first point is not repeated), counter-clockwise, with
+/// optional clockwise holes. The anchor is the node's position, a point
+/// inside the space that routes pass through.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Space {
+    /// Stable id, unique within the model.
+    pub id: SpaceId,
+    /// Room, corridor, door or other.
+    pub kind: SpaceKind,
+    /// Human-readable name ("Kitchen"), if one was given.
+    #[serde(default)]
+    pub name: Option<String>,
+    /// The node's position in metres.
+    pub anchor: Point,
+    /// Area of the polygon in square metres (derived from `polygon` and
+    /// `holes`; ignored when read).
+    #[serde(default, skip_deserializing)]
+    pub area_m2: f64,
+    /// Exterior ring in metres.
+    pub polygon: Ring,
+    /// Interior rings (obstacles inside the space), if any.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub holes: Vec<Ring>,
+    /// Free attributes (JSON values), kept through every format.
+    #[serde(default)]
+    pub attributes: Map<String, Value>,
+}
+
+impl Space {
+    /// A space with no name, no holes and no attributes; `area_m2` is computed.
+    pub fn new(id: SpaceId, kind: SpaceKind, anchor: Point, polygon: Ring) -> Space {
+        let mut space = Space {
+            id,
+            kind,
+            name: None,
+            anchor,
+            area_m2: 0.0,
+            polygon,
+            holes: Vec::new(),
+            attributes: Map::new(),
+        };
+        space.update_area();
+        space
+    }
+
+    /// Recomputes `area_m2` from the rings (exterior minus holes).
+    pub fn update_area(&mut self) {
+        let holes: f64 = self.holes.iter().map(|h| polygon_area(h).abs()).sum();
+        self.area_m2 = (polygon_area(&self.polygon).abs() - holes).max(0.0);
+    }
+
+    /// The name if set, else `"<kind> <id>"` (e.g. "room 12").
+    pub fn label(&self) -> String {
+        match &self.name {
+            Some(n) => n.clone(),
+            None => format!("{} {}", self.kind, self.id),
+        }
+    }
+
+    /// Whether routes may pass through this space.
+    pub fn is_navigable(&self) -> bool {
+        self.kind != SpaceKind::Other
+    }
+}
