@@ -11,4 +11,7 @@
 //! origin at the lower left, y up).
 
 pub mod atomic;
+pub mod format;
+pub mod geojson;
+pub mod indoorgml;
 pub mod model;

@@ -3,6 +3,9 @@
 //!
 //! Exit codes: 0 success, 1 "no result" or findings (e.g. `check`), 2 error.
 
+mod check;
+mod convert;
+
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -30,12 +33,19 @@ pub struct Cli {
 
 /// The subcommands.
 #[derive(Debug, Subcommand)]
-pub enum Command {}
+pub enum Command {
+    /// Check an IndoorGML file: references, duality, geometry, schema.
+    Check(check::Args),
+    /// Convert between IndoorGML (.gml/.xml), model JSON (.json) and GeoJSON (.geojson).
+    Convert(convert::Args),
+}
 
 /// Runs one subcommand, writing its report to `out`.
 pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
-    let _ = out;
-    match command {}
+    match command {
+        Command::Check(args) => check::run(args, out),
+        Command::Convert(args) => convert::run(args, out),
+    }
 }
 
 /// Sends `tracing` output to stderr at a level chosen by `-v` or `RUST_LOG`.

@@ -6,8 +6,9 @@ use petgraph::graph::{NodeIndex, UnGraph};
 
 use super::{Nrg, SpaceId};
 
-/// Undirected graph of navigable spaces, weighted by connection length in
-/// metres. `Adjacent` connections and `Other` spaces are left out.
+/// Undirected graph of the spaces, weighted by connection length in metres.
+/// Only navigable connections (`Door`, `Open`) are edges; `Adjacent` ones
+/// are left out.
 #[derive(Debug, Clone)]
 pub struct ConnectivityGraph {
     /// The petgraph graph: node weight = space id, edge weight = metres.
@@ -20,7 +21,7 @@ impl ConnectivityGraph {
     pub fn new(nrg: &Nrg) -> ConnectivityGraph {
         let mut graph = UnGraph::with_capacity(nrg.spaces().len(), nrg.connections().len());
         let mut index = HashMap::with_capacity(nrg.spaces().len());
-        for space in nrg.spaces().iter().filter(|s| s.is_navigable()) {
+        for space in nrg.spaces() {
             index.insert(space.id, graph.add_node(space.id));
         }
         for c in nrg.connections().iter().filter(|c| c.kind.is_navigable()) {
@@ -31,7 +32,7 @@ impl ConnectivityGraph {
         ConnectivityGraph { graph, index }
     }
 
-    /// The node of a space, if the space is navigable.
+    /// The node of a space.
     pub fn node(&self, id: SpaceId) -> Option<NodeIndex> {
         self.index.get(&id).copied()
     }

@@ -29,7 +29,8 @@ pub enum SpaceKind {
     Corridor,
     /// A door or doorway (IndoorGML `ConnectionSpace`, the thick-door model).
     Door,
-    /// Anything else (IndoorGML `CellSpace`).
+    /// Anything else (IndoorGML `CellSpace`); navigable where its
+    /// connections say so.
     Other,
 }
 
@@ -131,10 +132,5 @@ impl Space {
             Some(n) => n.clone(),
             None => format!("{} {}", self.kind, self.id),
         }
-    }
-
-    /// Whether routes may pass through this space.
-    pub fn is_navigable(&self) -> bool {
-        self.kind != SpaceKind::Other
     }
 }

@@ -1,1 +1,8 @@
 #![cfg(test)]
+//! nrgdb's integration tests: one binary, one module per concern.
+
+mod indoorgml_bad_input;
+mod indoorgml_check;
+mod indoorgml_roundtrip;
+mod indoorgml_samples;
+mod support;

@@ -1,0 +1,60 @@
+//! `nrgdb convert IN OUT`: between IndoorGML, model JSON and GeoJSON.
+
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use miette::{IntoDiagnostic, WrapErr};
+use nrgdb::format::{self, ModelFormat};
+use nrgdb::indoorgml;
+
+/// Arguments of `nrgdb convert`.
+#[derive(Debug, clap::Args)]
+#[command(
+    after_help = "Formats by extension: .gml/.xml IndoorGML 1.0.3, .json the model's JSON form, \
+.geojson a GeoJSON FeatureCollection (metres in the map frame).\n\
+IndoorGML to IndoorGML keeps the whole document (3D geometry, every layer, inter-layer connections); \
+any other conversion goes through the 2D model."
+)]
+pub struct Args {
+    /// The file to read.
+    pub input: PathBuf,
+    /// The file to write (replaced atomically).
+    pub output: PathBuf,
+    /// Refuse input files larger than this many bytes.
+    #[arg(long, default_value_t = indoorgml::DEFAULT_MAX_BYTES)]
+    pub max_bytes: u64,
+}
+
+/// Runs `nrgdb convert`.
+pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
+    let from = ModelFormat::of(&args.input).into_diagnostic()?;
+    let to = ModelFormat::of(&args.output).into_diagnostic()?;
+    if from == ModelFormat::IndoorGml && to == ModelFormat::IndoorGml {
+        let doc = indoorgml::read_file(&args.input, args.max_bytes)
+            .into_diagnostic()
+            .wrap_err_with(|| format!("cannot read {}", args.input.display()))?;
+        indoorgml::write_file(&doc, &args.output).into_diagnostic()?;
+        writeln!(
+            out,
+            "wrote {} ({} cells, {} boundaries, {} layers)",
+            args.output.display(),
+            doc.cells().len(),
+            doc.boundaries().len(),
+            doc.layers().len()
+        )
+        .into_diagnostic()?;
+        return Ok(ExitCode::SUCCESS);
+    }
+    let nrg = format::read_model(&args.input, args.max_bytes).into_diagnostic()?;
+    format::write_model(&nrg, &args.output).into_diagnostic()?;
+    writeln!(
+        out,
+        "wrote {} ({} spaces, {} connections)",
+        args.output.display(),
+        nrg.spaces().len(),
+        nrg.connections().len()
+    )
+    .into_diagnostic()?;
+    Ok(ExitCode::SUCCESS)
+}

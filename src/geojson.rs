@@ -1,0 +1,151 @@
+//! The model as GeoJSON: a FeatureCollection that QGIS and web maps open.
+//!
+//! Each space is a Polygon feature (`"feature": "space"`, properties `id`,
+//! `kind`, `name`, `area_m2`, `anchor`, `attributes`); each connection is a
+//! LineString feature between the two anchors (`"feature": "connection"`,
+//! properties `a`, `b`, `kind`, `length_m`). Coordinates are metres in the
+//! map frame, not WGS84 (GeoJSON's default CRS): load the file as a
+//! projected layer in QGIS. Reading accepts exactly this shape back.
+
+use serde_json::{Map, Value, json};
+
+use crate::model::{Connection, Nrg, Point, Ring, Space, SpaceId};
+
+/// Why a GeoJSON document is not an nrgdb model.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum GeoJsonError {
+    /// Not JSON at all.
+    #[error("not JSON: {0}")]
+    Json(#[from] serde_json::Error),
+    /// A feature lacks something or has the wrong shape.
+    #[error("feature {index}: {message}")]
+    Feature {
+        /// Position in `features`.
+        index: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// The features do not form a valid model.
+    #[error("{0}")]
+    Model(#[from] crate::model::ModelError),
+}
+
+/// The model as a GeoJSON FeatureCollection.
+pub fn to_geojson(nrg: &Nrg) -> Value {
+    let mut features = Vec::with_capacity(nrg.spaces().len() + nrg.connections().len());
+    for s in nrg.spaces() {
+        let rings: Vec<Value> = std::iter::once(&s.polygon)
+            .chain(&s.holes)
+            .map(|r| closed(r))
+            .collect();
+        features.push(json!({
+            "type": "Feature",
+            "id": format!("space-{}", s.id),
+            "geometry": {"type": "Polygon", "coordinates": rings},
+            "properties": {
+                "feature": "space",
+                "id": s.id,
+                "kind": s.kind,
+                "name": s.name,
+                "area_m2": s.area_m2,
+                "anchor": s.anchor,
+                "attributes": s.attributes,
+            }
+        }));
+    }
+    for c in nrg.connections() {
+        let (Some(a), Some(b)) = (nrg.space(c.a), nrg.space(c.b)) else {
+            continue;
+        };
+        features.push(json!({
+            "type": "Feature",
+            "id": format!("connection-{}-{}", c.a, c.b),
+            "geometry": {"type": "LineString", "coordinates": [a.anchor, b.anchor]},
+            "properties": {"feature": "connection", "a": c.a, "b": c.b, "kind": c.kind, "length_m": c.length_m}
+        }));
+    }
+    json!({"type": "FeatureCollection", "features": features})
+}
+
+fn closed(ring: &[Point]) -> Value {
+    let mut pts: Vec<Point> = ring.to_vec();
+    if let Some(&first) = pts.first() {
+        pts.push(first);
+    }
+    json!(pts)
+}
+
+/// Reads a FeatureCollection written by [`to_geojson`].
+pub fn from_geojson(text: &str) -> Result<Nrg, GeoJsonError> {
+    let value: Value = serde_json::from_str(text)?;
+    let features =
+        value
+            .get("features")
+            .and_then(Value::as_array)
+            .ok_or(GeoJsonError::Feature {
+                index: 0,
+                message: "not a FeatureCollection (no \"features\" array)".into(),
+            })?;
+    let mut spaces = Vec::new();
+    let mut connections = Vec::new();
+    for (index, f) in features.iter().enumerate() {
+        let err = |message: String| GeoJsonError::Feature { index, message };
+        let props = f
+            .get("properties")
+            .and_then(Value::as_object)
+            .ok_or_else(|| err("has no properties".into()))?;
+        match props.get("feature").and_then(Value::as_str) {
+            Some("space") => spaces.push(space(f, props).map_err(err)?),
+            Some("connection") => {
+                let c: Connection = serde_json::from_value(Value::Object(props.clone()))
+                    .map_err(|e| err(e.to_string()))?;
+                connections.push(c);
+            }
+            other => {
+                return Err(err(format!(
+                    "property \"feature\" is {other:?}, expected \"space\" or \"connection\""
+                )));
+            }
+        }
+    }
+    Ok(Nrg::new(spaces, connections)?)
+}
+
+fn space(f: &Value, props: &Map<String, Value>) -> Result<Space, String> {
+    let field = |k: &str| {
+        props
+            .get(k)
+            .cloned()
+            .ok_or_else(|| format!("has no property \"{k}\""))
+    };
+    let id: SpaceId = serde_json::from_value(field("id")?).map_err(|e| format!("id: {e}"))?;
+    let kind = serde_json::from_value(field("kind")?).map_err(|e| format!("kind: {e}"))?;
+    let anchor: Point =
+        serde_json::from_value(field("anchor")?).map_err(|e| format!("anchor: {e}"))?;
+    let geometry = f.get("geometry").ok_or("has no geometry")?;
+    if geometry.get("type").and_then(Value::as_str) != Some("Polygon") {
+        return Err("a space's geometry must be a Polygon".into());
+    }
+    let rings: Vec<Ring> =
+        serde_json::from_value(geometry.get("coordinates").cloned().unwrap_or(Value::Null))
+            .map_err(|e| format!("coordinates: {e}"))?;
+    let mut rings = rings.into_iter().map(|mut r| {
+        if r.len() > 1 && r.first() == r.last() {
+            r.pop();
+        }
+        r
+    });
+    let polygon = rings.next().ok_or("polygon has no rings")?;
+    let mut s = Space::new(id, kind, anchor, polygon);
+    s.holes = rings.collect();
+    s.name = props
+        .get("name")
+        .and_then(Value::as_str)
+        .map(str::to_string);
+    if let Some(Value::Object(a)) = props.get("attributes") {
+        s.attributes = a.clone();
+    }
+    s.update_area();
+    Ok(s)
+}

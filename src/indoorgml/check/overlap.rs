@@ -1,0 +1,105 @@
+//! Cells of one layer must not overlap (IndoorGML Req 2, which the OGC
+//! test suite computes but ignores). Each cell's 2D footprint (3D cells:
+//! floor face, with the solid's z range) is compared with the others of its
+//! layer; bounding boxes first, then the exact intersection area.
+
+use std::collections::HashMap;
+
+use geo::{
+    Area, BooleanOps, BoundingRect, Coord, LineString as GeoLine, Polygon as GeoPolygon, Rect,
+};
+
+use super::super::convert::footprint;
+use super::super::document::{CellGeometry, Document, Target};
+use super::{Finding, finding};
+
+/// Overlaps smaller than this (m²) are rounding, not modelling errors.
+const MIN_OVERLAP_M2: f64 = 1e-4;
+
+struct Footprint<'a> {
+    id: &'a str,
+    line: usize,
+    polygon: GeoPolygon,
+    rect: Rect,
+    z: (f64, f64),
+}
+
+pub fn check_overlaps(doc: &Document, out: &mut Vec<Finding>) {
+    let index = doc.index();
+    // Group cells by the layer of their dual State; cells without one form
+    // the primal group (usize::MAX).
+    let mut groups: HashMap<usize, Vec<Footprint>> = HashMap::new();
+    for c in doc.cells() {
+        let group = c
+            .duality
+            .as_deref()
+            .and_then(|d| index.get(d))
+            .and_then(|t| {
+                if let Target::State(l, _) = t {
+                    Some(*l)
+                } else {
+                    None
+                }
+            })
+            .unwrap_or(usize::MAX);
+        let Ok((ring, holes)) = footprint(c) else {
+            continue;
+        };
+        let line =
+            |r: &[[f64; 2]]| GeoLine::new(r.iter().map(|p| Coord { x: p[0], y: p[1] }).collect());
+        let polygon = GeoPolygon::new(line(&ring), holes.iter().map(|h| line(h)).collect());
+        let Some(rect) = polygon.bounding_rect() else {
+            continue;
+        };
+        let z = match &c.geometry {
+            Some(CellGeometry::Solid(s)) => s
+                .exterior
+                .iter()
+                .flat_map(|p| p.exterior.z())
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), z| {
+                    (lo.min(z), hi.max(z))
+                }),
+            _ => (0.0, 0.0),
+        };
+        groups.entry(group).or_default().push(Footprint {
+            id: &c.info.id,
+            line: c.info.line,
+            polygon,
+            rect,
+            z,
+        });
+    }
+    for cells in groups.values() {
+        for (i, a) in cells.iter().enumerate() {
+            for b in &cells[i + 1..] {
+                if !rects_overlap(&a.rect, &b.rect) || !z_overlap(a.z, b.z) {
+                    continue;
+                }
+                let area = a.polygon.intersection(&b.polygon).unsigned_area();
+                if area > MIN_OVERLAP_M2 {
+                    out.push(finding(
+                        "cells-overlap",
+                        b.id,
+                        b.line,
+                        format!(
+                            "overlaps cell {} (line {}) by {area:.4} m² in the same layer",
+                            a.id, a.line
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+}
+
+fn rects_overlap(a: &Rect, b: &Rect) -> bool {
+    a.min().x < b.max().x && b.min().x < a.max().x && a.min().y < b.max().y && b.min().y < a.max().y
+}
+
+fn z_overlap(a: (f64, f64), b: (f64, f64)) -> bool {
+    // 2D cells have a zero-height range and always overlap in z.
+    if a.0 == a.1 || b.0 == b.1 {
+        return true;
+    }
+    a.0.max(b.0) < a.1.min(b.1) - 1e-6
+}

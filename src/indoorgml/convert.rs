@@ -1,0 +1,492 @@
+//! [`Nrg`] ↔ [`Document`]: how nrgdb's model is written as IndoorGML and
+//! how any IndoorGML 1.0 document is read as a model.
+//!
+//! Writing: a space becomes a cell (room → `navi:GeneralSpace`, corridor →
+//! `navi:TransitionSpace`, door → `navi:ConnectionSpace` (thick doors only),
+//! other → `core:CellSpace`) with a 2D `gml:Polygon`, and a `State` at its
+//! anchor, dual both ways. A navigable connection becomes a `Transition`
+//! (weight = length in metres, a LineString between the anchors). A
+//! non-navigable `adjacent` connection becomes a `core:CellSpaceBoundary`
+//! without geometry or dual, referenced by both cells' `partialboundedBy`:
+//! in IndoorGML a shared boundary without a Transition is exactly "adjacent
+//! but not connected". Machine-readable extras (the connection kind and
+//! length, a space's attributes) go in `gml:description` as a JSON object.
+//!
+//! Reading: the layer whose States are dual to the most cells is the
+//! navigation layer; its Transitions become connections, and boundaries
+//! shared by two cells without a Transition become `adjacent` connections.
+//! A 3D cell's footprint is its largest floor face (the faces at the
+//! solid's lowest z), else the convex hull of its vertices.
+
+use std::collections::{HashMap, HashSet};
+
+use geo::{ConvexHull, Coord, MultiPoint};
+use serde_json::{Map, Value, json};
+
+use super::IndoorGmlError;
+use super::document::*;
+use crate::model::{
+    Connection, ConnectionKind, Nrg, Point, Ring, Space, SpaceId, SpaceKind, polygon_area,
+    polygon_centroid,
+};
+
+/// Describes `nrg` as an IndoorGML document (see the module docs).
+pub fn from_nrg(nrg: &Nrg) -> Document {
+    let mut cells = Vec::with_capacity(nrg.spaces().len());
+    let mut boundaries = Vec::new();
+    let mut states = Vec::with_capacity(nrg.spaces().len());
+    let mut transitions = Vec::new();
+    let mut bounded_by: HashMap<SpaceId, Vec<String>> = HashMap::new();
+    let mut state_connects: HashMap<SpaceId, Vec<String>> = HashMap::new();
+    for c in nrg.connections() {
+        let (Some(a), Some(b)) = (nrg.space(c.a), nrg.space(c.b)) else {
+            continue;
+        };
+        if c.kind.is_navigable() {
+            let id = format!("T{}-{}", c.a, c.b);
+            state_connects.entry(c.a).or_default().push(id.clone());
+            state_connects.entry(c.b).or_default().push(id.clone());
+            transitions.push(Transition {
+                info: FeatureInfo {
+                    description: Some(json!({"connection": c.kind.as_str()}).to_string()),
+                    ..FeatureInfo::new(id.clone())
+                },
+                weight: Some(c.length_m),
+                connects: vec![state_id(c.a), state_id(c.b)],
+                duality: None,
+                geometry: Some(LineString {
+                    id: Some(format!("{id}-g")),
+                    coords: Coords {
+                        dim: 2,
+                        values: vec![a.anchor[0], a.anchor[1], b.anchor[0], b.anchor[1]],
+                    },
+                }),
+            });
+        } else {
+            let id = format!("B{}-{}", c.a, c.b);
+            bounded_by.entry(c.a).or_default().push(id.clone());
+            bounded_by.entry(c.b).or_default().push(id.clone());
+            boundaries.push(Boundary {
+                info: FeatureInfo {
+                    description: Some(
+                        json!({"connection": c.kind.as_str(), "length_m": c.length_m}).to_string(),
+                    ),
+                    ..FeatureInfo::new(id)
+                },
+                class: BoundaryClass::CellSpaceBoundary,
+                duality: None,
+                geometry: None,
+                external: Vec::new(),
+            });
+        }
+    }
+    for s in nrg.spaces() {
+        let class = match s.kind {
+            SpaceKind::Room => CellClass::GeneralSpace,
+            SpaceKind::Corridor => CellClass::TransitionSpace,
+            SpaceKind::Door => CellClass::ConnectionSpace,
+            SpaceKind::Other => CellClass::CellSpace,
+        };
+        let kind = s.kind.as_str().to_string();
+        cells.push(Cell {
+            info: FeatureInfo {
+                names: s.name.iter().cloned().collect(),
+                description: attributes_to_description(&s.attributes),
+                ..FeatureInfo::new(cell_id(s.id))
+            },
+            class,
+            navi: NaviCodes {
+                class: kind.clone(),
+                function: kind.clone(),
+                usage: kind,
+            },
+            geometry: Some(CellGeometry::Surface(Polygon {
+                id: Some(format!("{}-g", cell_id(s.id))),
+                exterior: closed_ring(&s.polygon, true),
+                interiors: s.holes.iter().map(|h| closed_ring(h, false)).collect(),
+            })),
+            duality: Some(state_id(s.id)),
+            external: Vec::new(),
+            bounded_by: bounded_by.remove(&s.id).unwrap_or_default(),
+        });
+        states.push(State {
+            info: FeatureInfo::new(state_id(s.id)),
+            duality: Some(cell_id(s.id)),
+            connects: state_connects.remove(&s.id).unwrap_or_default(),
+            point: Some(GmlPoint {
+                id: Some(format!("{}-g", state_id(s.id))),
+                coords: Coords {
+                    dim: 2,
+                    values: s.anchor.to_vec(),
+                },
+            }),
+        });
+    }
+    Document {
+        info: FeatureInfo::new("IndoorFeatures"),
+        srs_name: None,
+        primal: Some(PrimalSpace {
+            info: FeatureInfo::new("PrimalSpaceFeatures"),
+            cells,
+            boundaries,
+        }),
+        graph: Some(LayeredGraph {
+            info: FeatureInfo::new("MultiLayeredGraph"),
+            layer_groups: vec![LayerGroup {
+                id: "SpaceLayers".into(),
+                layers: vec![Layer {
+                    info: FeatureInfo::new("NavigationLayer"),
+                    class: Some("TOPOGRAPHIC".into()),
+                    nodes_id: "NavigationNodes".into(),
+                    edges_id: "NavigationEdges".into(),
+                    states,
+                    transitions,
+                }],
+            }],
+            inter_edges: Vec::new(),
+        }),
+    }
+}
+
+fn cell_id(id: SpaceId) -> String {
+    format!("C{id}")
+}
+
+fn state_id(id: SpaceId) -> String {
+    format!("S{id}")
+}
+
+/// A closed GML ring from an open model ring, oriented counter-clockwise
+/// for exteriors and clockwise for holes.
+fn closed_ring(ring: &[Point], ccw: bool) -> Coords {
+    let mut pts: Vec<Point> = ring.to_vec();
+    if (polygon_area(&pts) > 0.0) != ccw {
+        pts.reverse();
+    }
+    if let Some(&first) = pts.first() {
+        pts.push(first);
+    }
+    Coords {
+        dim: 2,
+        values: pts.iter().flat_map(|p| *p).collect(),
+    }
+}
+
+fn attributes_to_description(attrs: &Map<String, Value>) -> Option<String> {
+    if attrs.is_empty() {
+        return None;
+    }
+    if let (1, Some(Value::String(text))) = (attrs.len(), attrs.get("description")) {
+        return Some(text.clone());
+    }
+    Some(Value::Object(attrs.clone()).to_string())
+}
+
+fn description_to_attributes(description: Option<&str>) -> Map<String, Value> {
+    match description {
+        None | Some("") => Map::new(),
+        Some(text) => match serde_json::from_str::<Value>(text) {
+            Ok(Value::Object(map)) => map,
+            _ => Map::from_iter([("description".to_string(), Value::String(text.to_string()))]),
+        },
+    }
+}
+
+/// The connection kind and length nrgdb wrote in a description, if any.
+fn described_connection(description: Option<&str>) -> (Option<ConnectionKind>, Option<f64>) {
+    let Some(Ok(Value::Object(map))) = description.map(serde_json::from_str::<Value>) else {
+        return (None, None);
+    };
+    let kind = map
+        .get("connection")
+        .and_then(Value::as_str)
+        .and_then(|k| k.parse().ok());
+    let length = map
+        .get("length_m")
+        .and_then(Value::as_f64)
+        .filter(|l| l.is_finite() && *l >= 0.0);
+    (kind, length)
+}
+
+/// Reads a document as a model (see the module docs).
+pub fn to_nrg(doc: &Document) -> Result<Nrg, IndoorGmlError> {
+    let cells = doc.cells();
+    let ids = space_ids(cells);
+    let cell_index: HashMap<&str, usize> = cells
+        .iter()
+        .enumerate()
+        .map(|(i, c)| (c.info.id.as_str(), i))
+        .collect();
+    let layer = navigation_layer(doc, &cell_index);
+    // State id → cell index, for the navigation layer.
+    let mut state_cell: HashMap<&str, usize> = HashMap::new();
+    let mut state_of_cell: HashMap<usize, &State> = HashMap::new();
+    if let Some(layer) = layer {
+        for s in &layer.states {
+            if let Some(&ci) = s.duality.as_deref().and_then(|d| cell_index.get(d)) {
+                state_cell.insert(s.info.id.as_str(), ci);
+                state_of_cell.entry(ci).or_insert(s);
+            }
+        }
+    }
+    let mut spaces = Vec::with_capacity(cells.len());
+    for (i, cell) in cells.iter().enumerate() {
+        let state = state_of_cell.get(&i).copied();
+        spaces.push(space(cell, ids[i], state)?);
+    }
+    let anchor = |ci: usize| spaces.get(ci).map_or([0.0, 0.0], |s: &Space| s.anchor);
+    let mut seen = HashSet::new();
+    let mut connections = Vec::new();
+    if let Some(layer) = layer {
+        for t in &layer.transitions {
+            let [a, b] = match t.connects.as_slice() {
+                [a, b] => [a.as_str(), b.as_str()],
+                _ => continue,
+            };
+            let (Some(&ca), Some(&cb)) = (state_cell.get(a), state_cell.get(b)) else {
+                continue;
+            };
+            if ca == cb || !seen.insert(ordered(ca, cb)) {
+                continue;
+            }
+            let (described, _) = described_connection(t.info.description.as_deref());
+            let is_door = |ci: usize| {
+                spaces
+                    .get(ci)
+                    .is_some_and(|s: &Space| s.kind == SpaceKind::Door)
+            };
+            let kind =
+                described
+                    .filter(|k| k.is_navigable())
+                    .unwrap_or(if is_door(ca) || is_door(cb) {
+                        ConnectionKind::Door
+                    } else {
+                        ConnectionKind::Open
+                    });
+            let length_m = t
+                .weight
+                .filter(|w| w.is_finite() && *w >= 0.0)
+                .or_else(|| t.geometry.as_ref().map(|g| polyline_length(&g.coords)))
+                .unwrap_or_else(|| distance(anchor(ca), anchor(cb)));
+            connections.push(Connection {
+                a: ids[ca],
+                b: ids[cb],
+                kind,
+                length_m,
+            });
+        }
+    }
+    // Boundaries shared by two cells and not crossed by a Transition.
+    let mut sharing: HashMap<&str, Vec<usize>> = HashMap::new();
+    for (i, cell) in cells.iter().enumerate() {
+        for b in &cell.bounded_by {
+            sharing.entry(b.as_str()).or_default().push(i);
+        }
+    }
+    for b in doc.boundaries() {
+        let Some(users) = sharing.get(b.info.id.as_str()) else {
+            continue;
+        };
+        let (described, length) = described_connection(b.info.description.as_deref());
+        if let ([ca, cb], None) = (users.as_slice(), &b.duality) {
+            let (ca, cb) = (*ca, *cb);
+            if ca == cb
+                || described.is_some_and(|k| k.is_navigable())
+                || !seen.insert(ordered(ca, cb))
+            {
+                continue;
+            }
+            let length_m = length.unwrap_or_else(|| distance(anchor(ca), anchor(cb)));
+            connections.push(Connection {
+                a: ids[ca],
+                b: ids[cb],
+                kind: ConnectionKind::Adjacent,
+                length_m,
+            });
+        }
+    }
+    Nrg::new(spaces, connections).map_err(|e| IndoorGmlError::Model(e.to_string()))
+}
+
+fn ordered(a: usize, b: usize) -> (usize, usize) {
+    if a <= b { (a, b) } else { (b, a) }
+}
+
+/// Space ids: `C<n>` cell ids give n; otherwise cells are numbered from 1
+/// in document order.
+fn space_ids(cells: &[Cell]) -> Vec<SpaceId> {
+    let parsed: Vec<Option<u32>> = cells
+        .iter()
+        .map(|c| {
+            c.info
+                .id
+                .strip_prefix('C')
+                .and_then(|n| n.parse::<u32>().ok())
+                .filter(|n| *n > 0)
+        })
+        .collect();
+    let unique: HashSet<u32> = parsed.iter().flatten().copied().collect();
+    if parsed.iter().all(Option::is_some) && unique.len() == cells.len() {
+        parsed
+            .into_iter()
+            .map(|n| SpaceId(n.unwrap_or(0)))
+            .collect()
+    } else {
+        (1..=cells.len() as u32).map(SpaceId).collect()
+    }
+}
+
+/// The layer whose States are dual to the most cells.
+fn navigation_layer<'a>(doc: &'a Document, cells: &HashMap<&str, usize>) -> Option<&'a Layer> {
+    let graph = doc.graph.as_ref()?;
+    graph
+        .layers()
+        .enumerate()
+        .max_by_key(|(i, l)| {
+            let dual = l
+                .states
+                .iter()
+                .filter(|s| s.duality.as_deref().is_some_and(|d| cells.contains_key(d)))
+                .count();
+            (dual, std::cmp::Reverse(*i))
+        })
+        .map(|(_, l)| l)
+}
+
+fn space(cell: &Cell, id: SpaceId, state: Option<&State>) -> Result<Space, IndoorGmlError> {
+    let kind = match cell.class {
+        CellClass::GeneralSpace => SpaceKind::Room,
+        CellClass::TransitionSpace => SpaceKind::Corridor,
+        CellClass::ConnectionSpace | CellClass::AnchorSpace => SpaceKind::Door,
+        _ => SpaceKind::Other,
+    };
+    let (polygon, holes) = footprint(cell)?;
+    let anchor = state
+        .and_then(|s| s.point.as_ref())
+        .and_then(|p| p.coords.xy().next())
+        .or_else(|| polygon_centroid(&polygon))
+        .unwrap_or([0.0, 0.0]);
+    let mut attributes = description_to_attributes(cell.info.description.as_deref());
+    if cell.info.id != cell_id(id) {
+        attributes.insert("gml_id".into(), Value::String(cell.info.id.clone()));
+    }
+    let name = cell
+        .info
+        .names
+        .first()
+        .or_else(|| state.and_then(|s| s.info.names.first()))
+        .filter(|n| !n.is_empty())
+        .cloned();
+    let mut space = Space::new(id, kind, anchor, polygon);
+    space.name = name;
+    space.holes = holes;
+    space.attributes = attributes;
+    space.update_area();
+    Ok(space)
+}
+
+/// The 2D footprint of a cell: exterior ring (CCW) and holes (CW).
+pub(super) fn footprint(cell: &Cell) -> Result<(Ring, Vec<Ring>), IndoorGmlError> {
+    let degenerate = || {
+        IndoorGmlError::Model(format!(
+            "line {}: cell {} has no usable 2D footprint (fewer than 3 distinct points)",
+            cell.info.line, cell.info.id
+        ))
+    };
+    let (exterior, holes) = match &cell.geometry {
+        None => {
+            return Err(IndoorGmlError::Model(format!(
+                "line {}: cell {} has no geometry",
+                cell.info.line, cell.info.id
+            )));
+        }
+        Some(CellGeometry::Surface(p)) => (
+            open_ring(&p.exterior),
+            p.interiors
+                .iter()
+                .map(open_ring)
+                .filter(|r| r.len() >= 3)
+                .collect(),
+        ),
+        Some(CellGeometry::Solid(s)) => (solid_footprint(s), Vec::new()),
+    };
+    let exterior = if exterior.len() >= 3 && polygon_area(&exterior).abs() > 1e-12 {
+        exterior
+    } else {
+        let all: Vec<Coord> = match &cell.geometry {
+            Some(CellGeometry::Surface(p)) => {
+                p.exterior.xy().map(|[x, y]| Coord { x, y }).collect()
+            }
+            Some(CellGeometry::Solid(s)) => s
+                .exterior
+                .iter()
+                .flat_map(|p| p.exterior.xy())
+                .map(|[x, y]| Coord { x, y })
+                .collect(),
+            None => Vec::new(),
+        };
+        hull(all)
+    };
+    if exterior.len() < 3 {
+        return Err(degenerate());
+    }
+    Ok((
+        orient(exterior, true),
+        holes.into_iter().map(|h| orient(h, false)).collect(),
+    ))
+}
+
+fn hull(points: Vec<Coord>) -> Ring {
+    let mp = MultiPoint::from(points);
+    let h = mp.convex_hull();
+    open_points(h.exterior().coords().map(|c| [c.x, c.y]))
+}
+
+/// The largest face at the solid's lowest z, projected to xy.
+fn solid_footprint(s: &Solid) -> Ring {
+    let min_z = s
+        .exterior
+        .iter()
+        .flat_map(|p| p.exterior.z())
+        .fold(f64::INFINITY, f64::min);
+    s.exterior
+        .iter()
+        .filter(|p| p.exterior.z().all(|z| (z - min_z).abs() < 1e-6))
+        .map(|p| open_ring(&p.exterior))
+        .max_by(|a, b| polygon_area(a).abs().total_cmp(&polygon_area(b).abs()))
+        .unwrap_or_default()
+}
+
+fn open_ring(coords: &Coords) -> Ring {
+    open_points(coords.xy())
+}
+
+/// Drops repeated consecutive points and the closing point.
+fn open_points(points: impl Iterator<Item = Point>) -> Ring {
+    let mut ring: Ring = Vec::new();
+    for p in points {
+        if ring.last() != Some(&p) {
+            ring.push(p);
+        }
+    }
+    while ring.len() > 1 && ring.first() == ring.last() {
+        ring.pop();
+    }
+    ring
+}
+
+fn orient(mut ring: Ring, ccw: bool) -> Ring {
+    if (polygon_area(&ring) > 0.0) != ccw {
+        ring.reverse();
+    }
+    ring
+}
+
+fn polyline_length(coords: &Coords) -> f64 {
+    let pts: Vec<Point> = coords.xy().collect();
+    pts.windows(2).map(|w| distance(w[0], w[1])).sum()
+}
+
+fn distance(a: Point, b: Point) -> f64 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}

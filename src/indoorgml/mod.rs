@@ -1,0 +1,95 @@
+//! IndoorGML 1.0.x: read any 1.0.1 / 1.0.2 / 1.0.3 document, write 1.0.3,
+//! convert to and from the [`Nrg`] model, and check a document's
+//! conformance.
+//!
+//! Owns the XML side of the model: [`Document`] (a faithful picture of the
+//! file, so 3D geometry, several layers and inter-layer connections
+//! survive a round trip), the reader ([`read_str`], [`read_file`]), the
+//! writer ([`write_string`], [`write_file`]), the mapping to and from the
+//! model ([`from_nrg`], [`to_nrg`]) and the checker ([`check`]). Uses
+//! quick-xml and the model; knows nothing of SQL, HTTP or the terminal.
+
+pub mod check;
+mod convert;
+pub mod document;
+mod dom;
+mod error;
+mod gml_read;
+mod read;
+mod write;
+mod xml_out;
+
+use std::path::Path;
+
+pub use check::{Finding, check};
+pub use convert::{from_nrg, to_nrg};
+pub use document::Document;
+pub use dom::{NS_CORE, NS_GML, NS_NAVI};
+pub use error::IndoorGmlError;
+
+use crate::model::Nrg;
+
+/// Files above this size are refused unless the caller raises the limit.
+pub const DEFAULT_MAX_BYTES: u64 = 1 << 30;
+
+/// Reads a document from XML text.
+pub fn read_str(text: &str) -> Result<Document, IndoorGmlError> {
+    read::read_document(text)
+}
+
+/// Reads a document from a file of at most `max_bytes` bytes.
+pub fn read_file(path: &Path, max_bytes: u64) -> Result<Document, IndoorGmlError> {
+    let text = read_text(path, max_bytes)?;
+    read_str(&text)
+}
+
+/// Reads a file as UTF-8 text, refusing files above `max_bytes`.
+pub fn read_text(path: &Path, max_bytes: u64) -> Result<String, IndoorGmlError> {
+    let io = |source| IndoorGmlError::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    let size = std::fs::metadata(path).map_err(io)?.len();
+    if size > max_bytes {
+        return Err(IndoorGmlError::TooLarge {
+            path: path.to_path_buf(),
+            size,
+            limit: max_bytes,
+        });
+    }
+    let bytes = std::fs::read(path).map_err(io)?;
+    String::from_utf8(bytes).map_err(|e| {
+        let valid = e.utf8_error().valid_up_to();
+        let line = 1 + e
+            .as_bytes()
+            .get(..valid)
+            .map_or(0, |b| b.iter().filter(|&&c| c == b'\n').count());
+        IndoorGmlError::NotUtf8 { line }
+    })
+}
+
+/// The document as IndoorGML 1.0.3 text.
+pub fn write_string(doc: &Document) -> String {
+    let bytes = write::write_document(doc, Vec::new()).unwrap_or_default();
+    String::from_utf8(bytes).unwrap_or_default()
+}
+
+/// Writes the document to `path` atomically (temp file + rename).
+pub fn write_file(doc: &Document, path: &Path) -> Result<(), IndoorGmlError> {
+    crate::atomic::write_with(path, |w| write::write_document(doc, w).map(|_| ())).map_err(
+        |source| IndoorGmlError::Io {
+            path: path.to_path_buf(),
+            source,
+        },
+    )
+}
+
+/// Reads an IndoorGML file straight into a model.
+pub fn read_nrg_file(path: &Path, max_bytes: u64) -> Result<Nrg, IndoorGmlError> {
+    to_nrg(&read_file(path, max_bytes)?)
+}
+
+/// Writes a model as an IndoorGML file, atomically.
+pub fn write_nrg_file(nrg: &Nrg, path: &Path) -> Result<(), IndoorGmlError> {
+    write_file(&from_nrg(nrg), path)
+}
