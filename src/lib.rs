@@ -11,6 +11,7 @@
 //! origin at the lower left, y up).
 
 pub mod atomic;
+pub mod fixtures;
 pub mod format;
 pub mod geojson;
 pub mod indoorgml;

@@ -2,6 +2,10 @@
 //! every element knows its namespace, local name, attributes, direct text
 //! and source line. The IndoorGML reader walks this tree.
 
+use std::borrow::Cow;
+use std::collections::HashMap;
+use std::rc::Rc;
+
 use quick_xml::NsReader;
 use quick_xml::events::{BytesStart, Event};
 use quick_xml::name::ResolveResult;
@@ -36,7 +40,7 @@ pub enum Ns {
     /// XML Schema instance.
     Xsi,
     /// Any other namespace URI.
-    Other(String),
+    Other(Rc<str>),
     /// No namespace.
     None,
 }
@@ -49,7 +53,7 @@ impl Ns {
             NS_GML => Ns::Gml,
             NS_XLINK => Ns::Xlink,
             NS_XSI => Ns::Xsi,
-            other => Ns::Other(other.to_string()),
+            other => Ns::Other(Rc::from(other)),
         }
     }
 
@@ -78,27 +82,28 @@ pub struct Attr {
     pub value: String,
 }
 
-/// An element with its children.
+/// An element with its children, borrowing text from the source where it
+/// can.
 #[derive(Debug, Clone)]
-pub struct Element {
+pub struct Element<'a> {
     /// Its namespace.
     pub ns: Ns,
-    /// Local name.
-    pub name: String,
+    /// Local name (interned: elements share one allocation per name).
+    pub name: Rc<str>,
     /// Attributes.
     pub attrs: Vec<Attr>,
     /// Child elements in order.
-    pub children: Vec<Element>,
-    /// Concatenated direct text (not trimmed).
-    pub text: String,
+    pub children: Vec<Element<'a>>,
+    /// Concatenated direct text (not trimmed; leading indentation dropped).
+    pub text: Cow<'a, str>,
     /// 1-based line of the start tag.
     pub line: usize,
 }
 
-impl Element {
+impl<'a> Element<'a> {
     /// Whether this element is `ns:name`.
     pub fn is(&self, ns: &Ns, name: &str) -> bool {
-        &self.ns == ns && self.name == name
+        &self.ns == ns && &*self.name == name
     }
 
     /// The value of attribute `ns:name`.
@@ -121,16 +126,16 @@ impl Element {
     }
 
     /// Child elements named `ns:name`.
-    pub fn children_named<'a>(
-        &'a self,
-        ns: &'a Ns,
-        name: &'a str,
-    ) -> impl Iterator<Item = &'a Element> + 'a {
+    pub fn children_named<'s>(
+        &'s self,
+        ns: &'s Ns,
+        name: &'s str,
+    ) -> impl Iterator<Item = &'s Element<'a>> + 's {
         self.children.iter().filter(move |c| c.is(ns, name))
     }
 
     /// The first child named `ns:name`.
-    pub fn child(&self, ns: &Ns, name: &str) -> Option<&Element> {
+    pub fn child(&self, ns: &Ns, name: &str) -> Option<&Element<'a>> {
         self.children.iter().find(|c| c.is(ns, name))
     }
 
@@ -145,43 +150,36 @@ impl Element {
             Ns::Core => format!("core:{}", self.name),
             Ns::Navi => format!("navi:{}", self.name),
             Ns::Gml => format!("gml:{}", self.name),
-            Ns::None => self.name.clone(),
+            Ns::None => self.name.to_string(),
             other => format!("{{{}}}{}", other.uri(), self.name),
         }
     }
 }
 
-/// Counts lines incrementally as the reader moves forward.
-struct LineCounter<'a> {
-    text: &'a [u8],
-    pos: usize,
-    line: usize,
+/// Maps byte offsets to 1-based line numbers.
+struct LineIndex {
+    newlines: Vec<usize>,
 }
 
-impl LineCounter<'_> {
-    fn line_at(&mut self, pos: usize) -> usize {
-        let pos = pos.min(self.text.len());
-        if pos > self.pos {
-            self.line += self.text[self.pos..pos]
-                .iter()
-                .filter(|&&b| b == b'\n')
-                .count();
-            self.pos = pos;
+impl LineIndex {
+    fn new(text: &str) -> LineIndex {
+        LineIndex {
+            newlines: memchr::memchr_iter(b'\n', text.as_bytes()).collect(),
         }
-        self.line
+    }
+
+    fn line_at(&self, pos: usize) -> usize {
+        1 + self.newlines.partition_point(|&nl| nl < pos)
     }
 }
 
 /// Parses a whole document into its root element.
-pub fn parse(text: &str) -> Result<Element, IndoorGmlError> {
+pub fn parse(text: &str) -> Result<Element<'_>, IndoorGmlError> {
     let mut reader = NsReader::from_str(text);
-    let mut lines = LineCounter {
-        text: text.as_bytes(),
-        pos: 0,
-        line: 1,
-    };
-    let mut stack: Vec<Element> = Vec::new();
-    let mut root: Option<Element> = None;
+    let mut names: HashMap<String, Rc<str>> = HashMap::new();
+    let lines = LineIndex::new(text);
+    let mut stack: Vec<Element<'_>> = Vec::new();
+    let mut root: Option<Element<'_>> = None;
     loop {
         let start_pos = reader.buffer_position() as usize;
         let event = reader.read_event();
@@ -202,7 +200,7 @@ pub fn parse(text: &str) -> Result<Element, IndoorGmlError> {
         match event {
             Event::Start(e) => {
                 let line = lines.line_at(tag_pos);
-                let el = element(&reader, &e, line)?;
+                let el = element(&reader, &e, line, &mut names)?;
                 if stack.len() >= MAX_DEPTH {
                     return Err(IndoorGmlError::Xml {
                         line,
@@ -213,7 +211,7 @@ pub fn parse(text: &str) -> Result<Element, IndoorGmlError> {
             }
             Event::Empty(e) => {
                 let line = lines.line_at(tag_pos);
-                let el = element(&reader, &e, line)?;
+                let el = element(&reader, &e, line, &mut names)?;
                 attach(&mut stack, &mut root, el, line)?;
             }
             Event::End(_) => {
@@ -224,12 +222,20 @@ pub fn parse(text: &str) -> Result<Element, IndoorGmlError> {
             }
             Event::Text(t) => {
                 if let Some(top) = stack.last_mut() {
-                    top.text.push_str(&t.xml10_content());
+                    let content = t.xml10_content();
+                    // Indentation between child elements is not content.
+                    if top.text.is_empty() {
+                        if !content.trim_ascii().is_empty() {
+                            top.text = content;
+                        }
+                    } else {
+                        top.text.to_mut().push_str(&content);
+                    }
                 }
             }
             Event::CData(t) => {
                 if let Some(top) = stack.last_mut() {
-                    top.text.push_str(&t.xml10_content());
+                    top.text.to_mut().push_str(&t.xml10_content());
                 }
             }
             Event::GeneralRef(r) => {
@@ -239,7 +245,7 @@ pub fn parse(text: &str) -> Result<Element, IndoorGmlError> {
                     message: format!("unknown entity &{};", r.xml10_content()),
                 })?;
                 if let Some(top) = stack.last_mut() {
-                    top.text.push(resolved);
+                    top.text.to_mut().push(resolved);
                 }
             }
             Event::Eof => break,
@@ -275,10 +281,10 @@ fn resolve_entity(r: &quick_xml::events::BytesRef<'_>) -> Option<char> {
     }
 }
 
-fn attach(
-    stack: &mut [Element],
-    root: &mut Option<Element>,
-    el: Element,
+fn attach<'a>(
+    stack: &mut [Element<'a>],
+    root: &mut Option<Element<'a>>,
+    el: Element<'a>,
     line: usize,
 ) -> Result<(), IndoorGmlError> {
     match stack.last_mut() {
@@ -294,14 +300,34 @@ fn attach(
     Ok(())
 }
 
-fn element(
+fn element<'a>(
     reader: &NsReader<&[u8]>,
     e: &BytesStart<'_>,
     line: usize,
-) -> Result<Element, IndoorGmlError> {
+    names: &mut HashMap<String, Rc<str>>,
+) -> Result<Element<'a>, IndoorGmlError> {
     let (ns, local) = reader.resolver().resolve_element(e.name());
     let ns = namespace(ns, line, e.name().as_ref())?;
+    let local = local.into_inner();
+    let name = match names.get(local) {
+        Some(n) => n.clone(),
+        None => {
+            let n: Rc<str> = Rc::from(local);
+            names.insert(local.to_string(), n.clone());
+            n
+        }
+    };
     let mut attrs = Vec::new();
+    if e.attributes_raw().trim_ascii().is_empty() {
+        return Ok(Element {
+            ns,
+            name,
+            attrs,
+            children: Vec::new(),
+            text: Cow::Borrowed(""),
+            line,
+        });
+    }
     for attr in e.attributes() {
         let attr = attr.map_err(|err| IndoorGmlError::Xml {
             line,
@@ -329,10 +355,10 @@ fn element(
     }
     Ok(Element {
         ns,
-        name: local.into_inner().to_string(),
+        name,
         attrs,
         children: Vec::new(),
-        text: String::new(),
+        text: Cow::Borrowed(""),
         line,
     })
 }

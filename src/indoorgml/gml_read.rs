@@ -203,7 +203,7 @@ pub fn parse_number(el: &Element) -> Result<f64, IndoorGmlError> {
 }
 
 /// The first child in the GML namespace.
-pub fn first_gml_child(el: &Element) -> Option<&Element> {
+pub fn first_gml_child<'e, 'a>(el: &'e Element<'a>) -> Option<&'e Element<'a>> {
     el.children.iter().find(|c| c.ns == Ns::Gml)
 }
 

@@ -24,7 +24,7 @@ pub fn document(root: &Element) -> Result<Document, IndoorGmlError> {
         ..Document::default()
     };
     for child in &root.children {
-        match (&child.ns, child.name.as_str()) {
+        match (&child.ns, &*child.name) {
             (Ns::Core, "primalSpaceFeatures") => {
                 if let Some(p) = only_child(child, "PrimalSpaceFeatures")? {
                     doc.primal = Some(primal(p, &geo)?);
@@ -59,7 +59,7 @@ fn check_root(root: &Element) -> Result<(), IndoorGmlError> {
         Ns::Other(uri) if uri.contains("indoorgml/2.0") => {
             "; this is the IndoorGML 2.0 draft encoding, which nrgdb does not read (only 1.0.x)".to_string()
         }
-        Ns::None if root.name == "IndoorFeatures" => {
+        Ns::None if &*root.name == "IndoorFeatures" => {
             "; the element has no namespace: declare xmlns=\"http://www.opengis.net/indoorgml/1.0/core\"".to_string()
         }
         Ns::Navi => "; a navigation-module fragment (e.g. a Route) is not a complete IndoorGML document".to_string(),
@@ -73,7 +73,10 @@ fn check_root(root: &Element) -> Result<(), IndoorGmlError> {
 }
 
 /// The single IndoorGML child of a property element (`None` if empty).
-fn only_child<'a>(prop: &'a Element, name: &str) -> Result<Option<&'a Element>, IndoorGmlError> {
+fn only_child<'e, 'a>(
+    prop: &'e Element<'a>,
+    name: &str,
+) -> Result<Option<&'e Element<'a>>, IndoorGmlError> {
     for child in &prop.children {
         if child.is(&Ns::Core, name) {
             return Ok(Some(child));
@@ -107,7 +110,7 @@ fn primal(el: &Element, geo: &GeometryReader) -> Result<PrimalSpace, IndoorGmlEr
         ..PrimalSpace::default()
     };
     for member in &el.children {
-        match (&member.ns, member.name.as_str()) {
+        match (&member.ns, &*member.name) {
             (Ns::Core, "cellSpaceMember") => {
                 for c in member.children.iter().filter(|c| c.ns != Ns::Gml) {
                     out.cells.push(cell(c, geo)?);
@@ -133,7 +136,7 @@ fn primal(el: &Element, geo: &GeometryReader) -> Result<PrimalSpace, IndoorGmlEr
 
 fn cell(el: &Element, geo: &GeometryReader) -> Result<Cell, IndoorGmlError> {
     let class = match &el.ns {
-        Ns::Core if el.name == "CellSpace" => CellClass::CellSpace,
+        Ns::Core if &*el.name == "CellSpace" => CellClass::CellSpace,
         Ns::Navi => CellClass::from_navi_name(&el.name).ok_or_else(|| {
             unexpected_in(el, "core:cellSpaceMember", "core:CellSpace or a navi space")
         })?,
@@ -156,7 +159,7 @@ fn cell(el: &Element, geo: &GeometryReader) -> Result<Cell, IndoorGmlError> {
         bounded_by: Vec::new(),
     };
     for child in &el.children {
-        match (&child.ns, child.name.as_str()) {
+        match (&child.ns, &*child.name) {
             (Ns::Core, "cellSpaceGeometry") => {
                 for g in child.children.iter() {
                     cell.geometry = Some(cell_geometry(g, geo)?);
@@ -179,17 +182,17 @@ fn cell(el: &Element, geo: &GeometryReader) -> Result<Cell, IndoorGmlError> {
 
 fn cell_geometry(el: &Element, geo: &GeometryReader) -> Result<CellGeometry, IndoorGmlError> {
     let shape = first_gml_child(el);
-    match (&el.ns, el.name.as_str(), shape) {
-        (Ns::Core, "Geometry3D", Some(s)) if s.name == "Solid" => {
+    match (&el.ns, &*el.name, shape) {
+        (Ns::Core, "Geometry3D", Some(s)) if &*s.name == "Solid" => {
             Ok(CellGeometry::Solid(geo.solid(s)?))
         }
-        (Ns::Core, "Geometry2D", Some(s)) if s.name == "Polygon" => {
+        (Ns::Core, "Geometry2D", Some(s)) if &*s.name == "Polygon" => {
             Ok(CellGeometry::Surface(geo.polygon(s, None)?))
         }
         (Ns::Core, "Geometry3D" | "Geometry2D", Some(s)) => Err(unexpected(
             s,
             el,
-            if el.name == "Geometry3D" {
+            if &*el.name == "Geometry3D" {
                 "gml:Solid"
             } else {
                 "gml:Polygon"
@@ -210,7 +213,7 @@ fn cell_geometry(el: &Element, geo: &GeometryReader) -> Result<CellGeometry, Ind
 
 fn boundary(el: &Element, geo: &GeometryReader) -> Result<Boundary, IndoorGmlError> {
     let class = match &el.ns {
-        Ns::Core if el.name == "CellSpaceBoundary" => BoundaryClass::CellSpaceBoundary,
+        Ns::Core if &*el.name == "CellSpaceBoundary" => BoundaryClass::CellSpaceBoundary,
         Ns::Navi => BoundaryClass::from_navi_name(&el.name).ok_or_else(|| {
             unexpected_in(
                 el,
@@ -235,7 +238,7 @@ fn boundary(el: &Element, geo: &GeometryReader) -> Result<Boundary, IndoorGmlErr
         external: Vec::new(),
     };
     for child in &el.children {
-        match (&child.ns, child.name.as_str()) {
+        match (&child.ns, &*child.name) {
             (Ns::Core, "duality") => b.duality = href(child)?,
             (Ns::Core, "cellSpaceBoundaryGeometry") => {
                 for g in &child.children {
@@ -261,7 +264,7 @@ fn boundary_geometry(
         element: el.qualified_name(),
         missing: "a geometry".into(),
     })?;
-    match (el.name.as_str(), shape.name.as_str()) {
+    match (&*el.name, &*shape.name) {
         ("geometry2D", "LineString") => Ok(BoundaryGeometry::Curve(geo.line_string(shape)?)),
         ("geometry3D", "Polygon") => Ok(BoundaryGeometry::Surface(geo.polygon(shape, None)?)),
         ("geometry2D", _) => Err(unexpected(shape, el, "gml:LineString")),
@@ -294,7 +297,7 @@ fn graph(el: &Element, geo: &GeometryReader) -> Result<LayeredGraph, IndoorGmlEr
         ..LayeredGraph::default()
     };
     for child in &el.children {
-        match (&child.ns, child.name.as_str()) {
+        match (&child.ns, &*child.name) {
             (Ns::Core, "spaceLayers") => {
                 let mut group = LayerGroup {
                     id: child.gml_id().unwrap_or_default().to_string(),
@@ -340,7 +343,7 @@ fn layer(el: &Element, geo: &GeometryReader) -> Result<Layer, IndoorGmlError> {
         ..Layer::default()
     };
     for child in &el.children {
-        match (&child.ns, child.name.as_str()) {
+        match (&child.ns, &*child.name) {
             (Ns::Core, "class") => out.class = Some(child.trimmed_text().to_string()),
             (Ns::Core, "nodes") => {
                 if out.nodes_id.is_empty() {
@@ -380,7 +383,7 @@ fn state(el: &Element, geo: &GeometryReader) -> Result<State, IndoorGmlError> {
         ..State::default()
     };
     for child in &el.children {
-        match (&child.ns, child.name.as_str()) {
+        match (&child.ns, &*child.name) {
             (Ns::Core, "duality") => s.duality = href(child)?,
             (Ns::Core, "connects") => s.connects.extend(href(child)?),
             (Ns::Core, "geometry") => {
@@ -400,7 +403,7 @@ fn transition(el: &Element, geo: &GeometryReader) -> Result<Transition, IndoorGm
         ..Transition::default()
     };
     for child in &el.children {
-        match (&child.ns, child.name.as_str()) {
+        match (&child.ns, &*child.name) {
             (Ns::Core, "weight") => t.weight = Some(parse_number(child)?),
             (Ns::Core, "connects") => t.connects.extend(href(child)?),
             (Ns::Core, "duality") => t.duality = href(child)?,
@@ -421,7 +424,7 @@ fn inter_layer_connection(el: &Element) -> Result<InterLayerConnection, IndoorGm
         ..InterLayerConnection::default()
     };
     for child in &el.children {
-        match (&child.ns, child.name.as_str()) {
+        match (&child.ns, &*child.name) {
             (Ns::Core, "typeOfTopoExpression") => c.topo = Some(child.trimmed_text().to_string()),
             (Ns::Core, "comment") => c.comment = Some(child.trimmed_text().to_string()),
             (Ns::Core, "interConnects") => c.inter_connects.extend(href(child)?),

@@ -3,6 +3,7 @@
 
 mod indoorgml_bad_input;
 mod indoorgml_check;
+mod indoorgml_fuzz;
 mod indoorgml_roundtrip;
 mod indoorgml_samples;
 mod support;
