@@ -485,3 +485,42 @@ fn unexpected_in(el: &Element, parent: &str, expected: &str) -> IndoorGmlError {
         expected: expected.to_string(),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn doc(prefix: &str, href: &str) -> String {
+        format!(
+            r#"<{prefix}:IndoorFeatures xmlns:{prefix}="http://www.opengis.net/indoorgml/1.0/core" xmlns:g="http://www.opengis.net/gml/3.2" xmlns:x="http://www.w3.org/1999/xlink">
+<{prefix}:multiLayeredGraph><{prefix}:MultiLayeredGraph g:id="G"><{prefix}:spaceLayers><{prefix}:spaceLayerMember>
+<{prefix}:SpaceLayer g:id="L"><{prefix}:nodes><{prefix}:stateMember><{prefix}:State g:id="S1"><{prefix}:connects x:href="{href}"/></{prefix}:State>
+</{prefix}:stateMember></{prefix}:nodes></{prefix}:SpaceLayer></{prefix}:spaceLayerMember></{prefix}:spaceLayers></{prefix}:MultiLayeredGraph></{prefix}:multiLayeredGraph>
+</{prefix}:IndoorFeatures>"#
+        )
+    }
+
+    #[test]
+    fn any_prefix_and_hrefs_with_or_without_hash() {
+        let a = read_document(&doc("core", "#T1")).unwrap();
+        let b = read_document(&doc("ig", "T1")).unwrap();
+        assert_eq!(a.layers()[0].states[0].connects, vec!["T1".to_string()]);
+        assert_eq!(
+            a.layers()[0].states[0].connects,
+            b.layers()[0].states[0].connects
+        );
+    }
+
+    #[test]
+    fn inline_features_in_references_are_refused_with_their_line() {
+        let text = doc("core", "#T1").replace(
+            r##"<core:connects x:href="#T1"/>"##,
+            "<core:connects>\n<core:Transition g:id=\"T9\"/></core:connects>",
+        );
+        let err = read_document(&text).unwrap_err().to_string();
+        assert!(
+            err.starts_with("line 4") && err.contains("inline core:Transition"),
+            "{err}"
+        );
+    }
+}
