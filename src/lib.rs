@@ -12,3 +12,4 @@
 
 pub mod atomic;
 pub mod model;
+pub mod sim;

@@ -8,6 +8,9 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+mod map_log;
+mod simulate;
+
 /// The command line.
 #[derive(Debug, Parser)]
 #[command(
@@ -30,12 +33,19 @@ pub struct Cli {
 
 /// The subcommands.
 #[derive(Debug, Subcommand)]
-pub enum Command {}
+pub enum Command {
+    /// Simulate a building, a LiDAR robot mapping it, and its ground truth.
+    Simulate(simulate::Args),
+    /// Build an occupancy map from a CARMEN laser log with corrected poses.
+    MapLog(map_log::Args),
+}
 
 /// Runs one subcommand, writing its report to `out`.
 pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
-    let _ = out;
-    match command {}
+    match command {
+        Command::Simulate(args) => simulate::run(args, out),
+        Command::MapLog(args) => map_log::run(args, out),
+    }
 }
 
 /// Sends `tracing` output to stderr at a level chosen by `-v` or `RUST_LOG`.
