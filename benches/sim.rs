@@ -23,14 +23,24 @@ fn mapping(c: &mut Criterion) {
     let plan = FloorPlan::generate(&p.plan).unwrap();
     let walls = WallIndex::new(plan.walls(), 1.0);
     let poses = sample_poses(&plan.route, p.pose_step_m);
-    let scans = simulate_scans(&walls, &poses, &LidarParams { seed: 7, ..LidarParams::default() });
+    let scans = simulate_scans(
+        &walls,
+        &poses,
+        &LidarParams {
+            seed: 7,
+            ..LidarParams::default()
+        },
+    );
     let beams: usize = scans.iter().map(|s| s.ranges_m.len()).sum();
     let mut g = c.benchmark_group("sim");
     g.sample_size(10);
     g.throughput(Throughput::Elements(beams as u64));
     g.bench_function("log_odds_mapping/beams", |b| {
         b.iter(|| {
-            let params = LogOddsParams { usable_range_m: 10.0, ..LogOddsParams::default() };
+            let params = LogOddsParams {
+                usable_range_m: 10.0,
+                ..LogOddsParams::default()
+            };
             let mut m = LogOddsMap::covering(plan.bounds(), 1.0, 0.05, params).unwrap();
             for s in &scans {
                 black_box(m.integrate(s));
@@ -48,7 +58,9 @@ fn simulate_50m(c: &mut Criterion) {
     let p = big_building();
     let mut g = c.benchmark_group("sim");
     g.sample_size(10);
-    g.bench_function("simulate_and_map/50x50m/0.05", |b| b.iter(|| simulate(black_box(&p)).unwrap()));
+    g.bench_function("simulate_and_map/50x50m/0.05", |b| {
+        b.iter(|| simulate(black_box(&p)).unwrap())
+    });
     g.finish();
 }
 

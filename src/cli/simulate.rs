@@ -37,7 +37,9 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     params.resolution_m = args.resolution;
     params.plan.furniture = args.furniture;
     params.plan.non_manhattan = args.non_manhattan;
-    let sim = simulate(&params).into_diagnostic().wrap_err("cannot simulate")?;
+    let sim = simulate(&params)
+        .into_diagnostic()
+        .wrap_err("cannot simulate")?;
     let files = write_simulation(&args.out, &sim)
         .into_diagnostic()
         .wrap_err_with(|| format!("cannot write the simulation to {}", args.out.display()))?;

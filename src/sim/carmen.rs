@@ -57,7 +57,9 @@ pub fn parse_carmen(text: &str, path: &Path) -> Result<Vec<Scan>, SimError> {
         match fields.first().copied() {
             Some("PARAM") => match (fields.get(1).copied(), fields.get(2)) {
                 (Some("robot_frontlaser_offset"), Some(v)) => {
-                    offset_m = v.parse().map_err(|_| bad(format!("bad laser offset {v:?}")))?;
+                    offset_m = v
+                        .parse()
+                        .map_err(|_| bad(format!("bad laser offset {v:?}")))?;
                 }
                 (Some("robot_front_laser_max"), Some(v)) => {
                     max_m = v.parse().map_err(|_| bad(format!("bad laser max {v:?}")))?;
@@ -162,7 +164,11 @@ mod tests {
             line.push_str(" 2.5");
         }
         line.push_str(" 1 2 0.5 1 2 0.5 12.3 pippo 12.3");
-        let scans = parse_carmen(&format!("ODOM 0 0 0 0 0 0 1 h 1\n{line}\n"), "a.log".as_ref()).unwrap();
+        let scans = parse_carmen(
+            &format!("ODOM 0 0 0 0 0 0 1 h 1\n{line}\n"),
+            "a.log".as_ref(),
+        )
+        .unwrap();
         assert_eq!(scans.len(), 1);
         assert!((scans[0].angle_step_rad - 1f64.to_radians()).abs() < 1e-12);
         assert_eq!(scans[0].pose.theta, 0.5);
@@ -180,7 +186,9 @@ mod tests {
         ];
         for c in cases {
             let text = format!("# comment\nPARAM x 1 h 0\n{c}");
-            let e = parse_carmen(&text, "b.log".as_ref()).unwrap_err().to_string();
+            let e = parse_carmen(&text, "b.log".as_ref())
+                .unwrap_err()
+                .to_string();
             assert!(e.starts_with("b.log:3: "), "{e}");
         }
     }
@@ -189,7 +197,14 @@ mod tests {
     fn robotlaser1_uses_the_laser_pose() {
         let line = "ROBOTLASER1 0 -1.57 3.14 0.0174 81.9 0.01 0 3 1 2 3 0 4 5 0.1 4 5 0.1 0 0 0 0 0 12 h 12";
         let s = parse_carmen(line, "c.log".as_ref()).unwrap();
-        assert_eq!(s[0].pose, Pose { x: 4.0, y: 5.0, theta: 0.1 });
+        assert_eq!(
+            s[0].pose,
+            Pose {
+                x: 4.0,
+                y: 5.0,
+                theta: 0.1
+            }
+        );
         assert_eq!(s[0].ranges_m, vec![1.0, 2.0, 3.0]);
         assert_eq!(s[0].angle_min_rad, -1.57);
     }

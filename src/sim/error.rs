@@ -30,7 +30,9 @@ pub enum SimError {
         source: std::io::Error,
     },
     /// A line of a CARMEN log is malformed.
-    #[error("{path}:{line}: {message} (expected `FLASER n r1 .. rn x y theta odom_x odom_y odom_theta timestamp host logger_timestamp`)")]
+    #[error(
+        "{path}:{line}: {message} (expected `FLASER n r1 .. rn x y theta odom_x odom_y odom_theta timestamp host logger_timestamp`)"
+    )]
     BadLogLine {
         /// The log file.
         path: PathBuf,
@@ -46,7 +48,9 @@ pub enum SimError {
         path: PathBuf,
     },
     /// The map would be too large to hold in memory.
-    #[error("a map of {width_m:.1} m x {height_m:.1} m at {resolution} m/px is too large (more than {max_cells} cells); use a coarser --resolution")]
+    #[error(
+        "a map of {width_m:.1} m x {height_m:.1} m at {resolution} m/px is too large (more than {max_cells} cells); use a coarser --resolution"
+    )]
     TooLarge {
         /// Extent in x, metres.
         width_m: f64,

@@ -202,10 +202,20 @@ impl FloorPlan {
 
     /// `[min_x, min_y, max_x, max_y]` of every space, in metres.
     pub fn bounds(&self) -> [f64; 4] {
-        let mut b = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+        let mut b = [
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ];
         let rings = self.corridors.iter().chain(&self.rooms);
         for p in rings.flatten() {
-            b = [b[0].min(p[0]), b[1].min(p[1]), b[2].max(p[0]), b[3].max(p[1])];
+            b = [
+                b[0].min(p[0]),
+                b[1].min(p[1]),
+                b[2].max(p[0]),
+                b[3].max(p[1]),
+            ];
         }
         b
     }
@@ -323,14 +333,25 @@ mod tests {
     #[test]
     fn cut_in_the_middle_leaves_two_pieces() {
         let mut out = Vec::new();
-        subtract_cuts([[0.0, 0.0], [4.0, 0.0]], &[[[2.5, 0.0], [1.5, 0.0]]], &mut out);
-        assert_eq!(out, vec![[[0.0, 0.0], [1.5, 0.0]], [[2.5, 0.0], [4.0, 0.0]]]);
+        subtract_cuts(
+            [[0.0, 0.0], [4.0, 0.0]],
+            &[[[2.5, 0.0], [1.5, 0.0]]],
+            &mut out,
+        );
+        assert_eq!(
+            out,
+            vec![[[0.0, 0.0], [1.5, 0.0]], [[2.5, 0.0], [4.0, 0.0]]]
+        );
     }
 
     #[test]
     fn parallel_offset_cut_is_ignored() {
         let mut out = Vec::new();
-        subtract_cuts([[0.0, 0.0], [4.0, 0.0]], &[[[1.0, 0.2], [2.0, 0.2]]], &mut out);
+        subtract_cuts(
+            [[0.0, 0.0], [4.0, 0.0]],
+            &[[[1.0, 0.2], [2.0, 0.2]]],
+            &mut out,
+        );
         assert_eq!(out.len(), 1);
     }
 

@@ -70,8 +70,20 @@ fn paint(map: &GreyMap, img: &mut [u8], bbox: [f64; 4], value: u8, inside: impl 
 
 fn bbox(points: &[Point]) -> [f64; 4] {
     points.iter().fold(
-        [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY],
-        |b, p| [b[0].min(p[0]), b[1].min(p[1]), b[2].max(p[0]), b[3].max(p[1])],
+        [
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ],
+        |b, p| {
+            [
+                b[0].min(p[0]),
+                b[1].min(p[1]),
+                b[2].max(p[0]),
+                b[3].max(p[1]),
+            ]
+        },
     )
 }
 
@@ -82,7 +94,10 @@ fn extend(s: Segment, by: f64) -> Option<Segment> {
         return None;
     }
     let u = [d[0] / len * by, d[1] / len * by];
-    Some([[s[0][0] - u[0], s[0][1] - u[1]], [s[1][0] + u[0], s[1][1] + u[1]]])
+    Some([
+        [s[0][0] - u[0], s[0][1] - u[1]],
+        [s[1][0] + u[0], s[1][1] + u[1]],
+    ])
 }
 
 fn segment_distance(p: Point, s: Segment) -> f64 {

@@ -83,7 +83,8 @@ pub(super) fn layout(p: &FloorPlanParams) -> FloorPlan {
         frame: Frame::new([0.0, 0.0], 0.0),
         len: len0,
     }];
-    plan.corridors.push(Frame::new([0.0, 0.0], 0.0).rect(0.0, -w, len0, 0.0));
+    plan.corridors
+        .push(Frame::new([0.0, 0.0], 0.0).rect(0.0, -w, len0, 0.0));
     for k in 1..n_wings {
         let prev = &wings[k - 1];
         let turn = if p.non_manhattan && (k == 1 || rng.chance(0.5)) {
@@ -178,7 +179,10 @@ pub(super) fn layout(p: &FloorPlanParams) -> FloorPlan {
                         width_m: dw,
                         faces: [
                             [wing.frame.at(a, room_face), wing.frame.at(b, room_face)],
-                            [wing.frame.at(a, corridor_face), wing.frame.at(b, corridor_face)],
+                            [
+                                wing.frame.at(a, corridor_face),
+                                wing.frame.at(b, corridor_face),
+                            ],
                         ],
                     });
                 }
@@ -259,7 +263,12 @@ fn furnish(plan: &mut FloorPlan, wings: &[Wing], slots: &[Slot], rng: &mut Split
 
 /// The route: along each corridor's centre line, with a detour through
 /// every corridor door to its room's centre and back.
-fn route(plan: &FloorPlan, wings: &[Wing], wing_doors: &mut [Vec<(f64, usize)>], w: f64) -> Vec<Point> {
+fn route(
+    plan: &FloorPlan,
+    wings: &[Wing],
+    wing_doors: &mut [Vec<(f64, usize)>],
+    w: f64,
+) -> Vec<Point> {
     let mut pts = Vec::new();
     let last = wings.len().saturating_sub(1);
     for (k, wing) in wings.iter().enumerate() {
@@ -267,9 +276,13 @@ fn route(plan: &FloorPlan, wings: &[Wing], wing_doors: &mut [Vec<(f64, usize)>],
         pts.push(wing.frame.at(start, -w / 2.0));
         wing_doors[k].sort_by(|a, b| a.0.total_cmp(&b.0));
         for &(dx, di) in &wing_doors[k] {
-            let Some(door) = plan.doors.get(di) else { continue };
+            let Some(door) = plan.doors.get(di) else {
+                continue;
+            };
             let SpaceRef::Room(r) = door.a else { continue };
-            let Some(room) = plan.rooms.get(r) else { continue };
+            let Some(room) = plan.rooms.get(r) else {
+                continue;
+            };
             let centre = crate::model::polygon_centroid(room).unwrap_or(room[0]);
             let c = wing.frame.at(dx.clamp(start, wing.len), -w / 2.0);
             pts.extend([c, door.centre(), centre, door.centre(), c]);
@@ -326,7 +339,11 @@ mod tests {
         for p in all_params() {
             let plan = layout(&p);
             for d in &plan.doors {
-                assert!((0.8 - 1e-9..=1.6 + 1e-9).contains(&d.width_m), "{}", d.width_m);
+                assert!(
+                    (0.8 - 1e-9..=1.6 + 1e-9).contains(&d.width_m),
+                    "{}",
+                    d.width_m
+                );
             }
             for b in &plan.furniture {
                 let c = crate::model::polygon_centroid(b).unwrap();

@@ -65,16 +65,36 @@ impl LidarParams {
             })
         };
         if self.beams == 0 || self.beams > 100_000 {
-            return bad("beams", self.beams.to_string(), "in 1..=100000", "360 is typical");
+            return bad(
+                "beams",
+                self.beams.to_string(),
+                "in 1..=100000",
+                "360 is typical",
+            );
         }
         if !(self.fov_rad > 0.0 && self.fov_rad <= std::f64::consts::TAU) {
-            return bad("fov_rad", self.fov_rad.to_string(), "in (0, 2 pi]", "use TAU for all round");
+            return bad(
+                "fov_rad",
+                self.fov_rad.to_string(),
+                "in (0, 2 pi]",
+                "use TAU for all round",
+            );
         }
         if !(self.max_range_m > 0.0 && self.max_range_m < 1000.0) {
-            return bad("max_range_m", self.max_range_m.to_string(), "in (0, 1000) m", "10 m is typical");
+            return bad(
+                "max_range_m",
+                self.max_range_m.to_string(),
+                "in (0, 1000) m",
+                "10 m is typical",
+            );
         }
         if !(self.range_noise_m >= 0.0 && self.angle_noise_rad >= 0.0) {
-            return bad("noise", format!("{} m, {} rad", self.range_noise_m, self.angle_noise_rad), ">= 0", "use 0 for no noise");
+            return bad(
+                "noise",
+                format!("{} m, {} rad", self.range_noise_m, self.angle_noise_rad),
+                ">= 0",
+                "use 0 for no noise",
+            );
         }
         Ok(())
     }
@@ -138,7 +158,11 @@ mod tests {
             angle_noise_rad: 0.0,
             ..LidarParams::default()
         };
-        let pose = Pose { x: 1.0, y: 2.0, theta: 0.0 };
+        let pose = Pose {
+            x: 1.0,
+            y: 2.0,
+            theta: 0.0,
+        };
         let scans = simulate_scans(&square_room(), &[pose], &p);
         // beams at -180, -90, 0, 90 degrees
         let r = &scans[0].ranges_m;
@@ -152,7 +176,11 @@ mod tests {
             max_range_m: 1.5,
             ..LidarParams::default()
         };
-        let pose = Pose { x: 2.0, y: 2.0, theta: 0.3 };
+        let pose = Pose {
+            x: 2.0,
+            y: 2.0,
+            theta: 0.3,
+        };
         let a = simulate_scans(&square_room(), &[pose], &p);
         assert!(a[0].ranges_m.iter().all(|&r| r == 1.5));
         let p = LidarParams::default();
@@ -163,7 +191,10 @@ mod tests {
 
     #[test]
     fn bad_beam_count_is_named() {
-        let p = LidarParams { beams: 0, ..LidarParams::default() };
+        let p = LidarParams {
+            beams: 0,
+            ..LidarParams::default()
+        };
         assert!(p.validate().unwrap_err().to_string().contains("beams"));
     }
 }

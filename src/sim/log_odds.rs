@@ -91,7 +91,10 @@ impl LogOddsMap {
                 hint: "0.05 is usual for indoor maps",
             });
         }
-        let (w_m, h_m) = (bounds[2] - bounds[0] + 2.0 * margin_m, bounds[3] - bounds[1] + 2.0 * margin_m);
+        let (w_m, h_m) = (
+            bounds[2] - bounds[0] + 2.0 * margin_m,
+            bounds[3] - bounds[1] + 2.0 * margin_m,
+        );
         let too_large = || SimError::TooLarge {
             width_m: w_m,
             height_m: h_m,
@@ -148,7 +151,11 @@ impl LogOddsMap {
                 (r, true)
             };
             let a = scan.pose.theta + scan.angle_min_rad + i as f64 * scan.angle_step_rad;
-            self.update_beam(origin, [origin[0] + d * a.cos(), origin[1] + d * a.sin()], hit);
+            self.update_beam(
+                origin,
+                [origin[0] + d * a.cos(), origin[1] + d * a.sin()],
+                hit,
+            );
             used += 1;
         }
         used
@@ -160,7 +167,10 @@ impl LogOddsMap {
     pub fn update_beam(&mut self, from: Point, to: Point, hit: bool) {
         let inv = 1.0 / self.resolution_m;
         let cell = |p: Point, o: Point| {
-            (((p[0] - o[0]) * inv).floor() as i64, ((p[1] - o[1]) * inv).floor() as i64)
+            (
+                ((p[0] - o[0]) * inv).floor() as i64,
+                ((p[1] - o[1]) * inv).floor() as i64,
+            )
         };
         let (x0, y0) = cell(from, self.origin_m);
         let (x1, y1) = cell(to, self.origin_m);

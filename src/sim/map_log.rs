@@ -26,13 +26,20 @@ pub fn map_scans(
     margin_m: f64,
     params: LogOddsParams,
 ) -> Result<LogMap, SimError> {
-    let mut b = [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY];
+    let mut b = [
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    ];
     let mut grow = |x: f64, y: f64| b = [b[0].min(x), b[1].min(y), b[2].max(x), b[3].max(y)];
     for s in scans {
         grow(s.pose.x, s.pose.y);
         for (i, &r) in s.ranges_m.iter().enumerate() {
             let r = f64::from(r);
-            if !(r > 0.0 && r.is_finite()) || (r >= f64::from(s.max_range_m) && !params.clear_on_no_return) {
+            if !(r > 0.0 && r.is_finite())
+                || (r >= f64::from(s.max_range_m) && !params.clear_on_no_return)
+            {
                 continue;
             }
             let d = r.min(params.usable_range_m).min(f64::from(s.max_range_m));
@@ -54,7 +61,11 @@ pub fn map_scans(
 
 /// Reads a CARMEN log (plain or gzip) and maps it: "no return" readings are
 /// skipped, longer ranges are cut at `usable_range_m` (free only).
-pub fn map_carmen_log(path: &Path, resolution_m: f64, usable_range_m: f64) -> Result<LogMap, SimError> {
+pub fn map_carmen_log(
+    path: &Path,
+    resolution_m: f64,
+    usable_range_m: f64,
+) -> Result<LogMap, SimError> {
     if !(resolution_m > 0.0 && resolution_m.is_finite()) {
         return Err(SimError::BadParameter {
             name: "--resolution",

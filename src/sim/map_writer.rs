@@ -30,7 +30,12 @@ pub fn encode_pgm(map: &GreyMap) -> Vec<u8> {
 }
 
 /// A grey image as PNG bytes.
-pub fn encode_grey_png(width: u32, height: u32, grey: &[u8], path: &Path) -> Result<Vec<u8>, SimError> {
+pub fn encode_grey_png(
+    width: u32,
+    height: u32,
+    grey: &[u8],
+    path: &Path,
+) -> Result<Vec<u8>, SimError> {
     let mut buf = Vec::new();
     image::codecs::png::PngEncoder::new(&mut buf)
         .write_image(grey, width, height, image::ExtendedColorType::L8)
@@ -83,7 +88,11 @@ mod tests {
         };
         let dir = tempfile::tempdir().unwrap();
         let [yaml, pgm] = write_map(dir.path(), "map", &m).unwrap();
-        assert!(std::fs::read_to_string(yaml).unwrap().contains("mode: trinary"));
+        assert!(
+            std::fs::read_to_string(yaml)
+                .unwrap()
+                .contains("mode: trinary")
+        );
         let img = image::open(&pgm).unwrap().into_luma8();
         assert_eq!(img.as_raw(), &m.grey);
         let png = encode_grey_png(3, 2, &m.grey, &pgm).unwrap();

@@ -104,8 +104,16 @@ impl WallIndex {
         };
         let mut tx = next(gx, ix, dir[0]);
         let mut ty = next(gy, iy, dir[1]);
-        let dtx = if dir[0] == 0.0 { f64::INFINITY } else { self.cell_m / dir[0].abs() };
-        let dty = if dir[1] == 0.0 { f64::INFINITY } else { self.cell_m / dir[1].abs() };
+        let dtx = if dir[0] == 0.0 {
+            f64::INFINITY
+        } else {
+            self.cell_m / dir[0].abs()
+        };
+        let dty = if dir[1] == 0.0 {
+            f64::INFINITY
+        } else {
+            self.cell_m / dir[1].abs()
+        };
         let mut best = f64::INFINITY;
         loop {
             for &s in &self.buckets[iy * self.nx + ix] {

@@ -3,6 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
+use super::SimError;
 use super::floor_plan::{FloorPlan, FloorPlanParams};
 use super::ground_truth::ground_truth_image;
 use super::lidar::{LidarParams, simulate_scans};
@@ -10,7 +11,6 @@ use super::log_odds::{GreyMap, LogOddsMap, LogOddsParams};
 use super::map_writer::{create_dir, encode_grey_png, encode_pgm, map_yaml, write_file};
 use super::ray_cast::WallIndex;
 use super::robot_path::sample_poses;
-use super::SimError;
 
 /// Everything [`simulate`] needs.
 #[derive(Debug, Clone, PartialEq)]

@@ -60,7 +60,12 @@ fn white_components_8(grey: &[u8], w: usize, h: usize) -> usize {
 
 #[test]
 fn sim_map_has_free_space_in_every_true_room() {
-    for (seed, furn, diag) in [(1, false, false), (2, true, false), (3, false, true), (4, true, true)] {
+    for (seed, furn, diag) in [
+        (1, false, false),
+        (2, true, false),
+        (3, false, true),
+        (4, true, true),
+    ] {
         let sim = small(seed, furn, diag);
         let nrg = sim.plan.truth().unwrap();
         for s in nrg.spaces().iter().filter(|s| s.kind != SpaceKind::Door) {
@@ -72,7 +77,11 @@ fn sim_map_has_free_space_in_every_true_room() {
                 }
             }
             let share = free as f64 / inside as f64;
-            assert!(share > 0.6, "seed {seed}: {} only {share:.2} free", s.label());
+            assert!(
+                share > 0.6,
+                "seed {seed}: {} only {share:.2} free",
+                s.label()
+            );
         }
         // walls were seen: some occupied pixels, and nothing free far outside
         assert!(sim.map.grey.contains(&0));
@@ -127,22 +136,43 @@ fn nrgdb(args: &[&str], cwd: &Path) -> std::process::Output {
 #[test]
 fn sim_cli_writes_and_names_its_files() {
     let dir = tempfile::tempdir().unwrap();
-    let out = nrgdb(&["simulate", "--seed", "3", "--out", "o", "--resolution", "0.1"], dir.path());
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let out = nrgdb(
+        &[
+            "simulate",
+            "--seed",
+            "3",
+            "--out",
+            "o",
+            "--resolution",
+            "0.1",
+        ],
+        dir.path(),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let text = String::from_utf8_lossy(&out.stdout);
     for f in ["map.yaml", "map.pgm", "map_gt.png", "truth.json"] {
         assert!(dir.path().join("o").join(f).is_file(), "{f}");
         assert!(text.contains(f), "{text}");
     }
     let yaml = std::fs::read_to_string(dir.path().join("o/map.yaml")).unwrap();
-    assert!(yaml.contains("resolution: 0.1") && yaml.contains("mode: trinary"), "{yaml}");
+    assert!(
+        yaml.contains("resolution: 0.1") && yaml.contains("mode: trinary"),
+        "{yaml}"
+    );
 }
 
 #[test]
 fn sim_cli_rejects_bad_resolution_without_output() {
     let dir = tempfile::tempdir().unwrap();
     for r in ["0", "-0.05"] {
-        let out = nrgdb(&["simulate", "--out", "o", &format!("--resolution={r}")], dir.path());
+        let out = nrgdb(
+            &["simulate", "--out", "o", &format!("--resolution={r}")],
+            dir.path(),
+        );
         assert_eq!(out.status.code(), Some(2));
         assert!(String::from_utf8_lossy(&out.stderr).contains("--resolution"));
         assert!(!dir.path().join("o").exists());
@@ -167,8 +197,9 @@ fn sim_map_log_reports_bad_lines_and_missing_files() {
 fn sim_map_log_maps_a_generated_log() {
     // A square 6 m room scanned from its centre, written as FLASER lines.
     let mut log = String::new();
-    for k in 0..5 {
-        let (x, y, th) = (2.0 + 0.5 * k as f64, 3.0, 0.3 * k as f64);
+    for k in 0..12 {
+        let th = k as f64 * std::f64::consts::PI / 6.0;
+        let (x, y) = (3.0 + th.cos(), 3.0 + th.sin());
         let walls = nrgdb::sim::WallIndex::new(
             vec![
                 [[0.0, 0.0], [6.0, 0.0]],
@@ -190,11 +221,13 @@ fn sim_map_log_maps_a_generated_log() {
     let path: PathBuf = dir.path().join("room.log");
     std::fs::write(&path, log).unwrap();
     let built = nrgdb::sim::map_carmen_log(&path, 0.05, 20.0).unwrap();
-    assert_eq!(built.scans, 5);
+    assert_eq!(built.scans, 12);
     let m = &built.map;
     // the room is 6 m plus a 1 m margin each side, give or take a cell
     let w = f64::from(m.width) * m.resolution_m;
     assert!((w - 8.0).abs() < 0.2, "{w}");
     let free = m.grey.iter().filter(|&&g| g == 254).count() as f64 * 0.0025;
     assert!(free > 25.0 && free < 36.0, "free area {free}");
+    let occupied = m.grey.iter().filter(|&&g| g == 0).count() as f64 * 0.05;
+    assert!(occupied > 15.0 && occupied < 40.0, "wall length {occupied}");
 }
