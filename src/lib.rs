@@ -16,3 +16,4 @@ pub mod format;
 pub mod geojson;
 pub mod indoorgml;
 pub mod model;
+pub mod sim;

@@ -11,6 +11,9 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+mod map_log;
+mod simulate;
+
 /// The command line.
 #[derive(Debug, Parser)]
 #[command(
@@ -38,6 +41,10 @@ pub enum Command {
     Check(check::Args),
     /// Convert between IndoorGML (.gml/.xml), model JSON (.json) and GeoJSON (.geojson).
     Convert(convert::Args),
+    /// Simulate a building, a LiDAR robot mapping it, and its ground truth.
+    Simulate(simulate::Args),
+    /// Build an occupancy map from a CARMEN laser log with corrected poses.
+    MapLog(map_log::Args),
 }
 
 /// Runs one subcommand, writing its report to `out`.
@@ -45,6 +52,8 @@ pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
     match command {
         Command::Check(args) => check::run(args, out),
         Command::Convert(args) => convert::run(args, out),
+        Command::Simulate(args) => simulate::run(args, out),
+        Command::MapLog(args) => map_log::run(args, out),
     }
 }
 

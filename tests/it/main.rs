@@ -7,3 +7,4 @@ mod indoorgml_fuzz;
 mod indoorgml_roundtrip;
 mod indoorgml_samples;
 mod support;
+mod sim;

@@ -1,0 +1,54 @@
+//! `nrgdb map-log`: build an occupancy map from a CARMEN log with
+//! corrected poses.
+
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use miette::{IntoDiagnostic, WrapErr};
+use nrgdb::sim::{map_carmen_log, write_map};
+
+/// Build an occupancy map (log-odds, known poses) from a CARMEN laser log
+/// (FLASER or ROBOTLASER1 lines; plain or .gz) and write map.yaml + map.pgm.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The CARMEN log, e.g. intel-corrected.log.gz.
+    pub log: PathBuf,
+    /// Map resolution in metres per cell.
+    #[arg(long, default_value_t = 0.05)]
+    pub resolution: f64,
+    /// Output directory (created if missing).
+    #[arg(long, default_value = "map")]
+    pub out: PathBuf,
+    /// Longer readings are cut here and only clear free space (metres).
+    #[arg(long, default_value_t = 20.0)]
+    pub max_range: f64,
+}
+
+/// Runs the subcommand.
+pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
+    let built = map_carmen_log(&args.log, args.resolution, args.max_range)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("cannot map {}", args.log.display()))?;
+    let [yaml, pgm] = write_map(&args.out, "map", &built.map)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("cannot write the map to {}", args.out.display()))?;
+    let m = &built.map;
+    writeln!(
+        out,
+        "mapped {} scans, {} beams: {} x {} px at {} m/px ({:.1} m x {:.1} m, origin [{:.3}, {:.3}])",
+        built.scans,
+        built.beams,
+        m.width,
+        m.height,
+        m.resolution_m,
+        f64::from(m.width) * m.resolution_m,
+        f64::from(m.height) * m.resolution_m,
+        m.origin_m[0],
+        m.origin_m[1]
+    )
+    .into_diagnostic()?;
+    writeln!(out, "wrote map yaml: {}", yaml.display()).into_diagnostic()?;
+    writeln!(out, "wrote map image: {}", pgm.display()).into_diagnostic()?;
+    Ok(ExitCode::SUCCESS)
+}

@@ -1,0 +1,233 @@
+//! Integration tests of the simulator: maps, ground truth, determinism,
+//! the CLI and bad input.
+
+use std::collections::VecDeque;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use nrgdb::model::{Nrg, SpaceKind, point_in_ring};
+use nrgdb::sim::{GreyMap, SimParams, Simulation, simulate, write_simulation};
+
+fn small(seed: u64, furniture: bool, non_manhattan: bool) -> Simulation {
+    let mut p = SimParams::new(seed);
+    p.plan.furniture = furniture;
+    p.plan.non_manhattan = non_manhattan;
+    p.plan.corridor_length_m = (10.0, 18.0);
+    simulate(&p).unwrap()
+}
+
+/// The grey value of the pixel whose centre is nearest `(x, y)` metres.
+fn pixel_centres(map: &GreyMap) -> impl Iterator<Item = ([f64; 2], u8)> + '_ {
+    let (w, h, r) = (map.width as usize, map.height as usize, map.resolution_m);
+    (0..h).flat_map(move |row| {
+        (0..w).map(move |col| {
+            let x = map.origin_m[0] + (col as f64 + 0.5) * r;
+            let y = map.origin_m[1] + ((h - 1 - row) as f64 + 0.5) * r;
+            ([x, y], map.grey[row * w + col])
+        })
+    })
+}
+
+fn white_components_8(grey: &[u8], w: usize, h: usize) -> usize {
+    let mut seen = vec![false; w * h];
+    let mut n = 0;
+    for start in 0..w * h {
+        if seen[start] || grey[start] <= 250 {
+            continue;
+        }
+        n += 1;
+        seen[start] = true;
+        let mut q = VecDeque::from([start]);
+        while let Some(i) = q.pop_front() {
+            let (x, y) = ((i % w) as i64, (i / w) as i64);
+            for dy in -1..=1 {
+                for dx in -1..=1 {
+                    let (nx, ny) = (x + dx, y + dy);
+                    if nx < 0 || ny < 0 || nx >= w as i64 || ny >= h as i64 {
+                        continue;
+                    }
+                    let j = ny as usize * w + nx as usize;
+                    if !seen[j] && grey[j] > 250 {
+                        seen[j] = true;
+                        q.push_back(j);
+                    }
+                }
+            }
+        }
+    }
+    n
+}
+
+#[test]
+fn sim_map_has_free_space_in_every_true_room() {
+    for (seed, furn, diag) in [
+        (1, false, false),
+        (2, true, false),
+        (3, false, true),
+        (4, true, true),
+    ] {
+        let sim = small(seed, furn, diag);
+        let nrg = sim.plan.truth().unwrap();
+        for s in nrg.spaces().iter().filter(|s| s.kind != SpaceKind::Door) {
+            let (mut inside, mut free) = (0, 0);
+            for (p, g) in pixel_centres(&sim.map) {
+                if point_in_ring(p, &s.polygon) {
+                    inside += 1;
+                    free += usize::from(g == 254);
+                }
+            }
+            let share = free as f64 / inside as f64;
+            assert!(
+                share > 0.6,
+                "seed {seed}: {} only {share:.2} free",
+                s.label()
+            );
+        }
+        // walls were seen: some occupied pixels, and nothing free far outside
+        assert!(sim.map.grey.contains(&0));
+    }
+}
+
+#[test]
+fn sim_ground_truth_has_one_white_component_per_room_and_corridor() {
+    for (seed, furn, diag) in [(5, false, false), (6, true, true), (7, false, true)] {
+        let sim = small(seed, furn, diag);
+        let dir = tempfile::tempdir().unwrap();
+        let files = write_simulation(dir.path(), &sim).unwrap();
+        let gt = image::open(&files.gt_png).unwrap().into_luma8();
+        assert_eq!((gt.width(), gt.height()), (sim.map.width, sim.map.height));
+        let n = white_components_8(gt.as_raw(), gt.width() as usize, gt.height() as usize);
+        let nrg = Nrg::from_json(&std::fs::read_to_string(&files.truth_json).unwrap()).unwrap();
+        let spaces = nrg
+            .spaces()
+            .iter()
+            .filter(|s| matches!(s.kind, SpaceKind::Room | SpaceKind::Corridor))
+            .count();
+        assert_eq!(n, spaces, "seed {seed}");
+        assert_eq!(n, sim.plan.rooms.len() + sim.plan.corridors.len());
+    }
+}
+
+#[test]
+fn sim_same_seed_gives_the_same_bytes() {
+    let read = |d: &Path| -> Vec<Vec<u8>> {
+        ["map.yaml", "map.pgm", "map_gt.png", "truth.json"]
+            .iter()
+            .map(|f| std::fs::read(d.join(f)).unwrap())
+            .collect()
+    };
+    let (a, b) = (tempfile::tempdir().unwrap(), tempfile::tempdir().unwrap());
+    write_simulation(a.path(), &small(11, true, true)).unwrap();
+    write_simulation(b.path(), &small(11, true, true)).unwrap();
+    assert_eq!(read(a.path()), read(b.path()));
+    let c = tempfile::tempdir().unwrap();
+    write_simulation(c.path(), &small(12, true, true)).unwrap();
+    assert_ne!(read(a.path())[3], read(c.path())[3]);
+}
+
+fn nrgdb(args: &[&str], cwd: &Path) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_nrgdb"))
+        .args(args)
+        .current_dir(cwd)
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn sim_cli_writes_and_names_its_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = nrgdb(
+        &[
+            "simulate",
+            "--seed",
+            "3",
+            "--out",
+            "o",
+            "--resolution",
+            "0.1",
+        ],
+        dir.path(),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    for f in ["map.yaml", "map.pgm", "map_gt.png", "truth.json"] {
+        assert!(dir.path().join("o").join(f).is_file(), "{f}");
+        assert!(text.contains(f), "{text}");
+    }
+    let yaml = std::fs::read_to_string(dir.path().join("o/map.yaml")).unwrap();
+    assert!(
+        yaml.contains("resolution: 0.1") && yaml.contains("mode: trinary"),
+        "{yaml}"
+    );
+}
+
+#[test]
+fn sim_cli_rejects_bad_resolution_without_output() {
+    let dir = tempfile::tempdir().unwrap();
+    for r in ["0", "-0.05"] {
+        let out = nrgdb(
+            &["simulate", "--out", "o", &format!("--resolution={r}")],
+            dir.path(),
+        );
+        assert_eq!(out.status.code(), Some(2));
+        assert!(String::from_utf8_lossy(&out.stderr).contains("--resolution"));
+        assert!(!dir.path().join("o").exists());
+    }
+}
+
+#[test]
+fn sim_map_log_reports_bad_lines_and_missing_files() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("bad.log"), "PARAM a 1 h 0\nFLASER 3 1 2\n").unwrap();
+    let out = nrgdb(&["map-log", "bad.log", "--out", "o"], dir.path());
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("bad.log:2"), "{err}");
+    assert!(!dir.path().join("o").exists());
+    let out = nrgdb(&["map-log", "missing.log.gz", "--out", "o"], dir.path());
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("missing.log.gz"));
+}
+
+#[test]
+fn sim_map_log_maps_a_generated_log() {
+    // A square 6 m room scanned from its centre, written as FLASER lines.
+    let mut log = String::new();
+    for k in 0..12 {
+        let th = k as f64 * std::f64::consts::PI / 6.0;
+        let (x, y) = (3.0 + th.cos(), 3.0 + th.sin());
+        let walls = nrgdb::sim::WallIndex::new(
+            vec![
+                [[0.0, 0.0], [6.0, 0.0]],
+                [[6.0, 0.0], [6.0, 6.0]],
+                [[6.0, 6.0], [0.0, 6.0]],
+                [[0.0, 6.0], [0.0, 0.0]],
+            ],
+            1.0,
+        );
+        log.push_str("FLASER 180");
+        for i in 0..180 {
+            let a = th - std::f64::consts::FRAC_PI_2 + (i as f64).to_radians();
+            let r = walls.cast([x, y], a, 80.0).unwrap_or(81.9);
+            log.push_str(&format!(" {r:.3}"));
+        }
+        log.push_str(&format!(" {x} {y} {th} {x} {y} {th} {k} host {k}\n"));
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let path: PathBuf = dir.path().join("room.log");
+    std::fs::write(&path, log).unwrap();
+    let built = nrgdb::sim::map_carmen_log(&path, 0.05, 20.0).unwrap();
+    assert_eq!(built.scans, 12);
+    let m = &built.map;
+    // the room is 6 m plus a 1 m margin each side, give or take a cell
+    let w = f64::from(m.width) * m.resolution_m;
+    assert!((w - 8.0).abs() < 0.2, "{w}");
+    let free = m.grey.iter().filter(|&&g| g == 254).count() as f64 * 0.0025;
+    assert!(free > 25.0 && free < 36.0, "free area {free}");
+    let occupied = m.grey.iter().filter(|&&g| g == 0).count() as f64 * 0.05;
+    assert!(occupied > 15.0 && occupied < 40.0, "wall length {occupied}");
+}
