@@ -12,3 +12,5 @@
 
 pub mod atomic;
 pub mod model;
+pub mod query;
+pub mod route;

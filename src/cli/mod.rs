@@ -8,6 +8,9 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+pub mod query;
+pub mod repl;
+
 /// The command line.
 #[derive(Debug, Parser)]
 #[command(
@@ -30,12 +33,19 @@ pub struct Cli {
 
 /// The subcommands.
 #[derive(Debug, Subcommand)]
-pub enum Command {}
+pub enum Command {
+    /// Run query statements (ROUTE, FIND, NEIGHBOURS, …) against a model.
+    Query(query::Args),
+    /// Interactive query shell with history, completion and highlighting.
+    Repl(repl::Args),
+}
 
 /// Runs one subcommand, writing its report to `out`.
 pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
-    let _ = out;
-    match command {}
+    match command {
+        Command::Query(args) => query::run(args, out),
+        Command::Repl(args) => repl::run(args, out),
+    }
 }
 
 /// Sends `tracing` output to stderr at a level chosen by `-v` or `RUST_LOG`.

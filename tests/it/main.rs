@@ -1,1 +1,6 @@
 #![cfg(test)]
+
+mod query;
+mod query_golden;
+mod query_props;
+mod route_props;
