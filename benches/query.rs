@@ -29,11 +29,17 @@ fn route(c: &mut Criterion) {
     }
     let (mut s, spaces) = session(28);
     let query = "ROUTE FROM \"Kitchen\" TO \"Lounge\" ALTERNATIVES 3";
-    c.bench_function(&format!("query/route-alternatives-3/{spaces}-spaces"), |b| {
-        b.iter(|| s.execute(black_box(query)).unwrap())
-    });
+    c.bench_function(
+        &format!("query/route-alternatives-3/{spaces}-spaces"),
+        |b| b.iter(|| s.execute(black_box(query)).unwrap()),
+    );
     c.bench_function("query/parse/route", |b| {
-        b.iter(|| nrgdb::query::parse(black_box("ROUTE FROM room 3 TO \"Lounge\" VIA 8 AVOID door 12")).unwrap())
+        b.iter(|| {
+            nrgdb::query::parse(black_box(
+                "ROUTE FROM room 3 TO \"Lounge\" VIA 8 AVOID door 12",
+            ))
+            .unwrap()
+        })
     });
 }
 

@@ -74,9 +74,12 @@ pub fn open_source(args: &SourceArgs) -> miette::Result<Box<dyn Source>> {
         let text = std::fs::read_to_string(path)
             .into_diagnostic()
             .wrap_err_with(|| format!("cannot read model {}", path.display()))?;
-        let nrg = Nrg::from_json(&text)
-            .into_diagnostic()
-            .wrap_err_with(|| format!("{}: not an nrgdb model (JSON with spaces and connections)", path.display()))?;
+        let nrg = Nrg::from_json(&text).into_diagnostic().wrap_err_with(|| {
+            format!(
+                "{}: not an nrgdb model (JSON with spaces and connections)",
+                path.display()
+            )
+        })?;
         let name = args.map.clone().unwrap_or_else(|| "model".to_string());
         source.insert_with_note(&name, nrg, &format!("loaded from {}", path.display()));
     } else if let Some(segments) = args.demo {
@@ -92,7 +95,10 @@ pub fn open_session(args: &SourceArgs) -> miette::Result<Session<Box<dyn Source>
     if let Some(map) = &args.map {
         session.use_map(map, args.rev).into_diagnostic()?;
     }
-    session.set_limits(Limits { timeout: Duration::from_millis(args.timeout_ms), max_rows: args.max_rows });
+    session.set_limits(Limits {
+        timeout: Duration::from_millis(args.timeout_ms),
+        max_rows: args.max_rows,
+    });
     Ok(session)
 }
 
@@ -123,7 +129,13 @@ pub fn query_report(error: QueryError, name: &str, text: &str) -> miette::Report
 /// keeping line numbers.
 pub fn strip_hash_lines(text: &str) -> String {
     text.lines()
-        .map(|l| if l.trim_start().starts_with('#') { "" } else { l })
+        .map(|l| {
+            if l.trim_start().starts_with('#') {
+                ""
+            } else {
+                l
+            }
+        })
         .collect::<Vec<_>>()
         .join("\n")
 }
@@ -148,7 +160,9 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         Format::Table
     };
     let mut session = open_session(&args.source)?;
-    let results = session.execute(&text).map_err(|e| query_report(e, &name, &text))?;
+    let results = session
+        .execute(&text)
+        .map_err(|e| query_report(e, &name, &text))?;
     let mut any = false;
     for result in results {
         let result = result.map_err(|e| miette!("{e}"))?;
@@ -157,7 +171,12 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
             QueryResult::Routes(r) => !r.is_empty(),
             _ => true,
         };
-        out.write_all(result.render(format).as_bytes()).into_diagnostic()?;
+        out.write_all(result.render(format).as_bytes())
+            .into_diagnostic()?;
     }
-    Ok(if any { ExitCode::SUCCESS } else { ExitCode::from(1) })
+    Ok(if any {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
 }

@@ -9,13 +9,13 @@ use std::time::Instant;
 
 use miette::IntoDiagnostic;
 use nrgdb::query::{Format, KEYWORDS, Session, Source, TokenKind, lex};
+use nu_ansi_term::{Color, Style};
 use reedline::{
     ColumnarMenu, Completer, CompletionResult, DefaultHinter, DefaultPrompt, DefaultPromptSegment,
     Emacs, FileBackedHistory, Highlighter, KeyCode, KeyModifiers, MenuBuilder, Reedline,
     ReedlineEvent, ReedlineMenu, Signal, Span, StyledText, Suggestion, ValidationResult, Validator,
     default_emacs_keybindings,
 };
-use reedline::{Color, Style};
 
 use super::query::{SourceArgs, open_session, query_report};
 
@@ -49,7 +49,11 @@ fn history_path(arg: Option<PathBuf>) -> Option<PathBuf> {
     if arg.is_some() {
         return arg;
     }
-    let nonempty = |k: &str| std::env::var_os(k).filter(|v| !v.is_empty()).map(PathBuf::from);
+    let nonempty = |k: &str| {
+        std::env::var_os(k)
+            .filter(|v| !v.is_empty())
+            .map(PathBuf::from)
+    };
     if let Some(data) = nonempty("XDG_DATA_HOME") {
         let dir = data.join("nrgdb");
         if std::fs::create_dir_all(&dir).is_ok() {
@@ -103,7 +107,11 @@ impl Highlighter for QueryHighlighter {
             let (start, end) = (t.span.offset, t.span.offset + t.span.len);
             if start > at {
                 let gap = &line[at..start];
-                let style = if gap.contains("--") { Style::new().fg(Color::DarkGray) } else { Style::new() };
+                let style = if gap.contains("--") {
+                    Style::new().fg(Color::DarkGray)
+                } else {
+                    Style::new()
+                };
                 styled.push((style, gap.to_string()));
             }
             let style = match &t.kind {
@@ -167,13 +175,17 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         ]),
     );
     let mut editor = Reedline::create()
-        .with_completer(Box::new(QueryCompleter { words: Arc::clone(&words) }))
+        .with_completer(Box::new(QueryCompleter {
+            words: Arc::clone(&words),
+        }))
         .with_menu(ReedlineMenu::EngineCompleter(Box::new(
             ColumnarMenu::default().with_name("completion_menu"),
         )))
         .with_edit_mode(Box::new(Emacs::new(keybindings)))
         .with_highlighter(Box::new(QueryHighlighter))
-        .with_hinter(Box::new(DefaultHinter::default().with_style(Style::new().italic().fg(Color::DarkGray))))
+        .with_hinter(Box::new(
+            DefaultHinter::default().with_style(Style::new().italic().fg(Color::DarkGray)),
+        ))
         .with_validator(Box::new(StatementValidator));
     if let Some(path) = history_path(args.history) {
         match FileBackedHistory::with_file(1000, path.clone()) {

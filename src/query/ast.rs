@@ -203,7 +203,11 @@ pub fn is_identifier(s: &str) -> bool {
 }
 
 fn name_or_quoted(s: &str) -> String {
-    if is_identifier(s) { s.to_string() } else { quote(s) }
+    if is_identifier(s) {
+        s.to_string()
+    } else {
+        quote(s)
+    }
 }
 
 fn number(x: f64) -> String {
@@ -211,13 +215,22 @@ fn number(x: f64) -> String {
 }
 
 fn list(refs: &[SpaceRef]) -> String {
-    refs.iter().map(ToString::to_string).collect::<Vec<_>>().join(", ")
+    refs.iter()
+        .map(ToString::to_string)
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 impl fmt::Display for Statement {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Statement::Route { from, to, via, avoid, alternatives } => {
+            Statement::Route {
+                from,
+                to,
+                via,
+                avoid,
+                alternatives,
+            } => {
                 write!(f, "ROUTE FROM {from} TO {to}")?;
                 if !via.is_empty() {
                     write!(f, " VIA {}", list(via))?;
@@ -237,7 +250,12 @@ impl fmt::Display for Statement {
                 }
                 Ok(())
             }
-            Statement::Find { kind, filter, order, limit } => {
+            Statement::Find {
+                kind,
+                filter,
+                order,
+                limit,
+            } => {
                 let target = match kind {
                     None => "spaces".to_string(),
                     Some(k) => format!("{k}s"),

@@ -36,12 +36,21 @@ pub fn building(columns: usize) -> Nrg {
     let id = |i: usize, k: usize| SpaceId((5 * i + k) as u32);
     for i in 0..columns {
         let x = 4.0 * i as f64;
-        spaces.push(rect(id(i, 1), SpaceKind::Corridor, [x, 5.0], [x + 4.0, 7.0]));
+        spaces.push(rect(
+            id(i, 1),
+            SpaceKind::Corridor,
+            [x, 5.0],
+            [x + 4.0, 7.0],
+        ));
         let mut upper_door = rect(id(i, 2), SpaceKind::Door, [x + 1.5, 7.0], [x + 2.5, 7.3]);
         let mut lower_door = rect(id(i, 4), SpaceKind::Door, [x + 1.4, 4.7], [x + 2.6, 5.0]);
         if i % 2 == 0 {
-            upper_door.attributes.insert("width_m".into(), Value::from(0.9));
-            lower_door.attributes.insert("width_m".into(), Value::from(1.2));
+            upper_door
+                .attributes
+                .insert("width_m".into(), Value::from(0.9));
+            lower_door
+                .attributes
+                .insert("width_m".into(), Value::from(1.2));
         }
         spaces.push(upper_door);
         spaces.push(room(id(i, 3), [x + 0.15, 7.3], [x + 3.85, 11.0], i));
@@ -68,7 +77,12 @@ pub fn building(columns: usize) -> Nrg {
         let x = 4.0 * i as f64;
         let side = SpaceId(next);
         next += 1;
-        spaces.push(rect(side, SpaceKind::Door, [x + 3.85, 8.6], [x + 4.15, 9.6]));
+        spaces.push(rect(
+            side,
+            SpaceKind::Door,
+            [x + 3.85, 8.6],
+            [x + 4.15, 9.6],
+        ));
         connections.push((id(i, 3), side, ConnectionKind::Door));
         connections.push((side, id(i + 1, 3), ConnectionKind::Door));
     }
@@ -88,7 +102,10 @@ pub fn building(columns: usize) -> Nrg {
         }
     }
     let anchor_of = |spaces: &[Space], id: SpaceId| {
-        spaces.iter().find(|s| s.id == id).map_or([0.0, 0.0], |s| s.anchor)
+        spaces
+            .iter()
+            .find(|s| s.id == id)
+            .map_or([0.0, 0.0], |s| s.anchor)
     };
     let mut anchors = std::collections::HashMap::new();
     for s in &spaces {
@@ -98,10 +115,21 @@ pub fn building(columns: usize) -> Nrg {
         .into_iter()
         .map(|(a, b, kind)| {
             let (pa, pb) = (
-                anchors.get(&a).copied().unwrap_or_else(|| anchor_of(&spaces, a)),
-                anchors.get(&b).copied().unwrap_or_else(|| anchor_of(&spaces, b)),
+                anchors
+                    .get(&a)
+                    .copied()
+                    .unwrap_or_else(|| anchor_of(&spaces, a)),
+                anchors
+                    .get(&b)
+                    .copied()
+                    .unwrap_or_else(|| anchor_of(&spaces, b)),
             );
-            Connection { a, b, kind, length_m: distance(pa, pb) }
+            Connection {
+                a,
+                b,
+                kind,
+                length_m: distance(pa, pb),
+            }
         })
         .collect();
     // The generated model satisfies every invariant; fall back to an empty

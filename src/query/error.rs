@@ -52,7 +52,8 @@ pub enum SourceError {
 }
 
 fn did_you_mean(s: &Option<String>) -> String {
-    s.as_ref().map_or_else(String::new, |s| format!("; did you mean '{s}'?"))
+    s.as_ref()
+        .map_or_else(String::new, |s| format!("; did you mean '{s}'?"))
 }
 
 /// Anything that stops a query: bad syntax, unknown names, limits, routing.

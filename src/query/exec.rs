@@ -23,7 +23,10 @@ pub struct Limits {
 
 impl Default for Limits {
     fn default() -> Limits {
-        Limits { timeout: Duration::from_secs(5), max_rows: 10_000 }
+        Limits {
+            timeout: Duration::from_secs(5),
+            max_rows: 10_000,
+        }
     }
 }
 
@@ -53,20 +56,35 @@ fn bounded(result: QueryResult, limits: &Limits) -> Result<QueryResult, QueryErr
 /// Runs a plan that reads `rev`. Session-level plans (SHOW, USE, NAME,
 /// DIFF, EXPLAIN) are handled by [`super::Session`]; given here they yield
 /// a message saying so.
-pub fn execute(plan: &Plan, rev: &IndexedRevision, limits: &Limits) -> Result<QueryResult, QueryError> {
+pub fn execute(
+    plan: &Plan,
+    rev: &IndexedRevision,
+    limits: &Limits,
+) -> Result<QueryResult, QueryError> {
     let budget = Budget::new(limits.timeout);
     let result = match plan {
         Plan::Route(request) => {
-            let routes = shortest_route(&rev.graph, &rev.nrg, request, &budget).map_err(|e| match e {
-                RouteError::Timeout(ms) => QueryError::Timeout(ms),
-                other => QueryError::Route(other),
-            })?;
+            let routes =
+                shortest_route(&rev.graph, &rev.nrg, request, &budget).map_err(|e| match e {
+                    RouteError::Timeout(ms) => QueryError::Timeout(ms),
+                    other => QueryError::Route(other),
+                })?;
             QueryResult::Routes(routes)
         }
         Plan::Neighbours { of, depth } => neighbours(rev, *of, *depth, &budget)?,
-        Plan::Find { kind, filter, order, limit } => {
+        Plan::Find {
+            kind,
+            filter,
+            order,
+            limit,
+        } => {
             let mut found: Vec<&Space> = Vec::new();
-            for s in rev.nrg.spaces().iter().filter(|s| kind.is_none_or(|k| s.kind == k)) {
+            for s in rev
+                .nrg
+                .spaces()
+                .iter()
+                .filter(|s| kind.is_none_or(|k| s.kind == k))
+            {
                 if budget.check() {
                     return Err(timeout(&budget));
                 }
@@ -79,7 +97,10 @@ pub fn execute(plan: &Plan, rev: &IndexedRevision, limits: &Limits) -> Result<Qu
                     order
                         .iter()
                         .map(|k| {
-                            let o = order_values(&field_value(&k.field, a, rev), &field_value(&k.field, b, rev));
+                            let o = order_values(
+                                &field_value(&k.field, a, rev),
+                                &field_value(&k.field, b, rev),
+                            );
                             if k.descending { o.reverse() } else { o }
                         })
                         .find(|o| o.is_ne())
@@ -106,7 +127,10 @@ pub fn execute(plan: &Plan, rev: &IndexedRevision, limits: &Limits) -> Result<Qu
                     row
                 })
                 .collect();
-            QueryResult::Table(Table { columns: columns(&names), rows })
+            QueryResult::Table(Table {
+                columns: columns(&names),
+                rows,
+            })
         }
         Plan::Locate(p) => {
             let rows = rev
@@ -118,13 +142,17 @@ pub fn execute(plan: &Plan, rev: &IndexedRevision, limits: &Limits) -> Result<Qu
                 })
                 .into_iter()
                 .collect();
-            QueryResult::Table(Table { columns: columns(&["id", "kind", "name", "area_m2"]), rows })
+            QueryResult::Table(Table {
+                columns: columns(&["id", "kind", "name", "area_m2"]),
+                rows,
+            })
         }
         Plan::Reachable { from, within_m } => {
-            let reach = reachable_within(&rev.graph, *from, *within_m, &budget).map_err(|e| match e {
-                RouteError::Timeout(ms) => QueryError::Timeout(ms),
-                other => QueryError::Route(other),
-            })?;
+            let reach =
+                reachable_within(&rev.graph, *from, *within_m, &budget).map_err(|e| match e {
+                    RouteError::Timeout(ms) => QueryError::Timeout(ms),
+                    other => QueryError::Route(other),
+                })?;
             let rows = reach
                 .into_iter()
                 .filter_map(|(id, d)| rev.nrg.space(id).map(|s| (s, d)))
@@ -134,7 +162,10 @@ pub fn execute(plan: &Plan, rev: &IndexedRevision, limits: &Limits) -> Result<Qu
                     row
                 })
                 .collect();
-            QueryResult::Table(Table { columns: columns(&["id", "kind", "name", "distance_m"]), rows })
+            QueryResult::Table(Table {
+                columns: columns(&["id", "kind", "name", "distance_m"]),
+                rows,
+            })
         }
         other => QueryResult::Message(format!("{other} is run by the session")),
     };
@@ -142,7 +173,12 @@ pub fn execute(plan: &Plan, rev: &IndexedRevision, limits: &Limits) -> Result<Qu
 }
 
 /// Spaces within `depth` hops of `of` (breadth first), without `of` itself.
-fn neighbours(rev: &IndexedRevision, of: SpaceId, depth: u32, budget: &Budget) -> Result<QueryResult, QueryError> {
+fn neighbours(
+    rev: &IndexedRevision,
+    of: SpaceId,
+    depth: u32,
+    budget: &Budget,
+) -> Result<QueryResult, QueryError> {
     let start = rev.graph.node(of).ok_or(RouteError::NotNavigable(of))?;
     let mut seen = vec![u32::MAX; rev.graph.len()];
     seen[start as usize] = 0;
@@ -174,5 +210,8 @@ fn neighbours(rev: &IndexedRevision, of: SpaceId, depth: u32, budget: &Budget) -
             row
         })
         .collect();
-    Ok(QueryResult::Table(Table { columns: columns(&["id", "kind", "name", "depth"]), rows }))
+    Ok(QueryResult::Table(Table {
+        columns: columns(&["id", "kind", "name", "depth"]),
+        rows,
+    }))
 }

@@ -43,21 +43,36 @@ pub fn matches(cond: &Condition, space: &Space, rev: &IndexedRevision) -> Result
 }
 
 fn type_error(field: &Field, value: &Value, hint: &'static str) -> QueryError {
-    QueryError::Type { field: field.to_string(), value: value.to_string(), hint }
+    QueryError::Type {
+        field: field.to_string(),
+        value: value.to_string(),
+        hint,
+    }
 }
 
 fn compare(field: &Field, left: &Value, op: CompareOp, right: &Value) -> Result<bool, QueryError> {
     use CompareOp::*;
-    let fixed_numeric = matches!(field, Field::Id | Field::Area | Field::Degree | Field::Width);
+    let fixed_numeric = matches!(
+        field,
+        Field::Id | Field::Area | Field::Degree | Field::Width
+    );
     if fixed_numeric && matches!(right, Value::Text(_)) {
         return Err(type_error(field, right, "this field is a number"));
     }
     if matches!(field, Field::Kind | Field::Name) && matches!(right, Value::Number(_)) {
-        return Err(type_error(field, right, "this field is text; quote the value"));
+        return Err(type_error(
+            field,
+            right,
+            "this field is text; quote the value",
+        ));
     }
     if op == Like {
         let Value::Text(pattern) = right else {
-            return Err(type_error(field, right, "LIKE takes a \"pattern\" with % and _"));
+            return Err(type_error(
+                field,
+                right,
+                "LIKE takes a \"pattern\" with % and _",
+            ));
         };
         return Ok(match left {
             Value::Text(s) => like(s, pattern),

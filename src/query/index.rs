@@ -72,7 +72,9 @@ impl IndexedRevision {
         self.envelopes
             .locate_all_at_point(&p)
             .filter_map(|e| self.nrg.spaces().get(e.data))
-            .filter(|s| point_in_ring(p, &s.polygon) && !s.holes.iter().any(|h| point_in_ring(p, h)))
+            .filter(|s| {
+                point_in_ring(p, &s.polygon) && !s.holes.iter().any(|h| point_in_ring(p, h))
+            })
             .min_by(|a, b| a.area_m2.total_cmp(&b.area_m2).then(a.id.cmp(&b.id)))
     }
 
@@ -101,15 +103,18 @@ impl IndexedRevision {
                     .map(str::to_string),
                 }),
             },
-            SpaceRef::Point(p) => {
-                self.locate(*p).map(|s| s.id).ok_or(QueryError::NoSpaceAt { x: p[0], y: p[1] })
-            }
+            SpaceRef::Point(p) => self
+                .locate(*p)
+                .map(|s| s.id)
+                .ok_or(QueryError::NoSpaceAt { x: p[0], y: p[1] }),
         }
     }
 
     /// The label of a space ("Kitchen", "door 7"), or "space N" if missing.
     pub fn label(&self, id: SpaceId) -> String {
-        self.nrg.space(id).map_or_else(|| format!("space {id}"), Space::label)
+        self.nrg
+            .space(id)
+            .map_or_else(|| format!("space {id}"), Space::label)
     }
 }
 
@@ -120,11 +125,18 @@ pub fn width_m(space: &Space) -> Option<f64> {
     if let Some(w) = space.attributes.get("width_m").and_then(|v| v.as_f64()) {
         return Some(w);
     }
-    let coords: Vec<geo::Coord<f64>> =
-        space.polygon.iter().map(|p| geo::Coord { x: p[0], y: p[1] }).collect();
+    let coords: Vec<geo::Coord<f64>> = space
+        .polygon
+        .iter()
+        .map(|p| geo::Coord { x: p[0], y: p[1] })
+        .collect();
     let rect = geo::LineString::new(coords).minimum_rotated_rect()?;
     let c: Vec<_> = rect.exterior().coords().copied().collect();
-    let side = |a: usize, b: usize| c.get(a).zip(c.get(b)).map(|(p, q)| (p.x - q.x).hypot(p.y - q.y));
+    let side = |a: usize, b: usize| {
+        c.get(a)
+            .zip(c.get(b))
+            .map(|(p, q)| (p.x - q.x).hypot(p.y - q.y))
+    };
     Some(side(0, 1)?.min(side(1, 2)?))
 }
 
@@ -140,7 +152,10 @@ mod tests {
         assert_eq!(idx.locate([2.0, 9.0]).map(|s| s.id), Some(kitchen));
         assert!(idx.locate([-5.0, 9.0]).is_none());
         let e = idx.resolve(&SpaceRef::Name("Kitchn".into())).unwrap_err();
-        assert_eq!(e.to_string(), "no space named 'Kitchn'; did you mean 'Kitchen'?");
+        assert_eq!(
+            e.to_string(),
+            "no space named 'Kitchn'; did you mean 'Kitchen'?"
+        );
     }
 
     #[test]

@@ -52,8 +52,7 @@ fn span_of(start: &Input<'_>, len: usize) -> Span {
 fn skip(i: Input<'_>) -> IResult<Input<'_>, ()> {
     let (mut i, _) = opt(multispace1).parse(i)?;
     loop {
-        let (rest, comment) =
-            opt(recognize((tag("--"), take_while(|c| c != '\n')))).parse(i)?;
+        let (rest, comment) = opt(recognize((tag("--"), take_while(|c| c != '\n')))).parse(i)?;
         let (rest, _) = opt(multispace1).parse(rest)?;
         if comment.is_none() {
             return Ok((rest, ()));
@@ -131,7 +130,11 @@ pub fn lex(text: &str) -> Result<Vec<Token>, QueryError> {
         };
         input = rest;
         if input.fragment().is_empty() {
-            tokens.push(Token { kind: TokenKind::Eof, text: String::new(), span: span_of(&input, 0) });
+            tokens.push(Token {
+                kind: TokenKind::Eof,
+                text: String::new(),
+                span: span_of(&input, 0),
+            });
             return Ok(tokens);
         }
         let start = input;
@@ -148,11 +151,19 @@ pub fn lex(text: &str) -> Result<Vec<Token>, QueryError> {
                     message: "unterminated string (close it with the same quote)".into(),
                 });
             };
-            (rest, TokenKind::Str(value), start.fragment()[..len].to_string())
+            (
+                rest,
+                TokenKind::Str(value),
+                start.fragment()[..len].to_string(),
+            )
         } else {
             return Err(bad_char(&input));
         };
-        tokens.push(Token { kind, span: span_of(&start, text.len()), text });
+        tokens.push(Token {
+            kind,
+            span: span_of(&start, text.len()),
+            text,
+        });
         input = rest;
     }
 }
@@ -161,7 +172,9 @@ fn bad_char(input: &Input<'_>) -> QueryError {
     let c = input.fragment().chars().next().unwrap_or(' ');
     QueryError::Syntax {
         span: span_of(input, c.len_utf8()),
-        message: format!("unexpected character '{c}' (strings need quotes, statements end with ';')"),
+        message: format!(
+            "unexpected character '{c}' (strings need quotes, statements end with ';')"
+        ),
     }
 }
 

@@ -36,7 +36,9 @@ mod session;
 mod source;
 mod suggest;
 
-pub use ast::{CompareOp, Condition, Field, OrderKey, SpaceRef, Statement, Value, is_identifier, quote};
+pub use ast::{
+    CompareOp, Condition, Field, OrderKey, SpaceRef, Statement, Value, is_identifier, quote,
+};
 pub use error::{QueryError, SourceError, Span};
 pub use exec::{Limits, execute};
 pub use filter::like;

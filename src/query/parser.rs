@@ -10,16 +10,58 @@ use crate::model::{SpaceId, SpaceKind};
 
 /// Words that start a statement.
 pub const STATEMENT_KEYWORDS: [&str; 11] = [
-    "ROUTE", "NEIGHBOURS", "NEIGHBORS", "FIND", "LOCATE", "REACHABLE", "SHOW", "USE", "NAME",
-    "DIFF", "EXPLAIN",
+    "ROUTE",
+    "NEIGHBOURS",
+    "NEIGHBORS",
+    "FIND",
+    "LOCATE",
+    "REACHABLE",
+    "SHOW",
+    "USE",
+    "NAME",
+    "DIFF",
+    "EXPLAIN",
 ];
 
 /// Every keyword of the language (for completion and highlighting).
 pub const KEYWORDS: [&str; 37] = [
-    "ROUTE", "NEIGHBOURS", "NEIGHBORS", "FIND", "LOCATE", "REACHABLE", "SHOW", "USE", "NAME",
-    "DIFF", "EXPLAIN", "FROM", "TO", "VIA", "AVOID", "ALTERNATIVES", "OF", "DEPTH", "WHERE",
-    "ORDER", "BY", "ASC", "DESC", "LIMIT", "WITHIN", "MAPS", "REVISIONS", "AT", "REVISION", "AS",
-    "AND", "OR", "NOT", "LIKE", "TRUE", "FALSE", "NULL",
+    "ROUTE",
+    "NEIGHBOURS",
+    "NEIGHBORS",
+    "FIND",
+    "LOCATE",
+    "REACHABLE",
+    "SHOW",
+    "USE",
+    "NAME",
+    "DIFF",
+    "EXPLAIN",
+    "FROM",
+    "TO",
+    "VIA",
+    "AVOID",
+    "ALTERNATIVES",
+    "OF",
+    "DEPTH",
+    "WHERE",
+    "ORDER",
+    "BY",
+    "ASC",
+    "DESC",
+    "LIMIT",
+    "WITHIN",
+    "MAPS",
+    "REVISIONS",
+    "AT",
+    "REVISION",
+    "AS",
+    "AND",
+    "OR",
+    "NOT",
+    "LIKE",
+    "TRUE",
+    "FALSE",
+    "NULL",
 ];
 
 const FIELDS: [&str; 7] = ["id", "kind", "name", "area", "degree", "width", "attr"];
@@ -32,7 +74,12 @@ const TARGETS: [&str; 5] = ["rooms", "corridors", "doors", "others", "spaces"];
 /// assert_eq!(s[0].to_string(), "FIND rooms WHERE area > 10.0");
 /// ```
 pub fn parse(text: &str) -> Result<Vec<Statement>, QueryError> {
-    let mut p = Parser { tokens: lex(text)?, pos: 0, tried: Vec::new(), tried_at: 0 };
+    let mut p = Parser {
+        tokens: lex(text)?,
+        pos: 0,
+        tried: Vec::new(),
+        tried_at: 0,
+    };
     let mut out = Vec::new();
     loop {
         while p.eat_punct(";") {}
@@ -52,7 +99,12 @@ pub fn parse_statement(text: &str) -> Result<Statement, QueryError> {
     match all.len() {
         1 => Ok(all.remove(0)),
         n => {
-            let p = Parser { tokens: lex(text)?, pos: 0, tried: Vec::new(), tried_at: 0 };
+            let p = Parser {
+                tokens: lex(text)?,
+                pos: 0,
+                tried: Vec::new(),
+                tried_at: 0,
+            };
             let mut e = p.expected(&["one statement"]);
             if let QueryError::Syntax { message, .. } = &mut e {
                 *message = format!("expected one statement, found {n}");
@@ -115,11 +167,19 @@ impl Parser {
     }
 
     fn expect_word(&mut self, kw: &'static str) -> Result<(), QueryError> {
-        if self.eat_word(kw) { Ok(()) } else { Err(self.expected(&[kw])) }
+        if self.eat_word(kw) {
+            Ok(())
+        } else {
+            Err(self.expected(&[kw]))
+        }
     }
 
     fn expect_punct(&mut self, p: &'static str) -> Result<(), QueryError> {
-        if self.eat_punct(p) { Ok(()) } else { Err(self.expected(&[p])) }
+        if self.eat_punct(p) {
+            Ok(())
+        } else {
+            Err(self.expected(&[p]))
+        }
     }
 
     /// "expected A, B or C, found 'x' (did you mean A?)" at the next token.
@@ -129,7 +189,11 @@ impl Parser {
             // Optional keywords that could also have come here.
             all.extend(self.tried.iter());
         }
-        all.extend(what.iter().filter(|w| !all.contains(w)));
+        for w in what {
+            if !all.contains(w) {
+                all.push(w);
+            }
+        }
         let what = all.as_slice();
         let t = self.peek();
         let found = match t.kind {
@@ -149,12 +213,19 @@ impl Parser {
                 message.push_str(&format!(" (did you mean {s}?)"));
             }
         }
-        QueryError::Syntax { span: t.span, message }
+        QueryError::Syntax {
+            span: t.span,
+            message,
+        }
     }
 
     fn statement(&mut self) -> Result<Statement, QueryError> {
         let t = self.peek().clone();
-        let kw = if t.kind == TokenKind::Word { t.text.to_ascii_uppercase() } else { String::new() };
+        let kw = if t.kind == TokenKind::Word {
+            t.text.to_ascii_uppercase()
+        } else {
+            String::new()
+        };
         if !STATEMENT_KEYWORDS.contains(&kw.as_str()) {
             return Err(self.expected(&STATEMENT_KEYWORDS));
         }
@@ -164,11 +235,17 @@ impl Parser {
             "NEIGHBOURS" | "NEIGHBORS" => {
                 self.expect_word("OF")?;
                 let of = self.space_ref()?;
-                let depth = if self.eat_word("DEPTH") { Some(self.integer()?) } else { None };
+                let depth = if self.eat_word("DEPTH") {
+                    Some(self.integer()?)
+                } else {
+                    None
+                };
                 Ok(Statement::Neighbours { of, depth })
             }
             "FIND" => self.find(),
-            "LOCATE" => Ok(Statement::Locate { point: self.point()? }),
+            "LOCATE" => Ok(Statement::Locate {
+                point: self.point()?,
+            }),
             "REACHABLE" => {
                 self.expect_word("FROM")?;
                 let from = self.space_ref()?;
@@ -180,7 +257,11 @@ impl Parser {
                 if self.eat_word("MAPS") {
                     Ok(Statement::ShowMaps)
                 } else if self.eat_word("REVISIONS") {
-                    let map = if self.eat_word("OF") { Some(self.map_name()?) } else { None };
+                    let map = if self.eat_word("OF") {
+                        Some(self.map_name()?)
+                    } else {
+                        None
+                    };
                     Ok(Statement::ShowRevisions { map })
                 } else {
                     Err(self.expected(&["MAPS", "REVISIONS"]))
@@ -199,9 +280,15 @@ impl Parser {
             "NAME" => {
                 let space = self.space_ref()?;
                 self.expect_word("AS")?;
-                Ok(Statement::Name { space, name: self.string()? })
+                Ok(Statement::Name {
+                    space,
+                    name: self.string()?,
+                })
             }
-            "DIFF" => Ok(Statement::Diff { from: self.integer()?, to: self.integer()? }),
+            "DIFF" => Ok(Statement::Diff {
+                from: self.integer()?,
+                to: self.integer()?,
+            }),
             _ => Ok(Statement::Explain(Box::new(self.statement()?))),
         }
     }
@@ -211,10 +298,28 @@ impl Parser {
         let from = self.space_ref()?;
         self.expect_word("TO")?;
         let to = self.space_ref()?;
-        let via = if self.eat_word("VIA") { self.ref_list()? } else { Vec::new() };
-        let avoid = if self.eat_word("AVOID") { self.ref_list()? } else { Vec::new() };
-        let alternatives = if self.eat_word("ALTERNATIVES") { Some(self.integer()?) } else { None };
-        Ok(Statement::Route { from, to, via, avoid, alternatives })
+        let via = if self.eat_word("VIA") {
+            self.ref_list()?
+        } else {
+            Vec::new()
+        };
+        let avoid = if self.eat_word("AVOID") {
+            self.ref_list()?
+        } else {
+            Vec::new()
+        };
+        let alternatives = if self.eat_word("ALTERNATIVES") {
+            Some(self.integer()?)
+        } else {
+            None
+        };
+        Ok(Statement::Route {
+            from,
+            to,
+            via,
+            avoid,
+            alternatives,
+        })
     }
 
     fn ref_list(&mut self) -> Result<Vec<SpaceRef>, QueryError> {
@@ -234,7 +339,11 @@ impl Parser {
             _ => return Err(self.expected(&TARGETS)),
         };
         self.pos += 1;
-        let filter = if self.eat_word("WHERE") { Some(self.or()?) } else { None };
+        let filter = if self.eat_word("WHERE") {
+            Some(self.or()?)
+        } else {
+            None
+        };
         let mut order = Vec::new();
         if self.eat_word("ORDER") {
             self.expect_word("BY")?;
@@ -252,8 +361,17 @@ impl Parser {
                 }
             }
         }
-        let limit = if self.eat_word("LIMIT") { Some(self.integer()?) } else { None };
-        Ok(Statement::Find { kind, filter, order, limit })
+        let limit = if self.eat_word("LIMIT") {
+            Some(self.integer()?)
+        } else {
+            None
+        };
+        Ok(Statement::Find {
+            kind,
+            filter,
+            order,
+            limit,
+        })
     }
 
     fn or(&mut self) -> Result<Condition, QueryError> {
@@ -283,7 +401,10 @@ impl Parser {
         }
         let field = self.field()?;
         let t = self.bump();
-        let op = match (t.kind == TokenKind::Punct, t.text.to_ascii_uppercase().as_str()) {
+        let op = match (
+            t.kind == TokenKind::Punct,
+            t.text.to_ascii_uppercase().as_str(),
+        ) {
             (true, "=") => CompareOp::Eq,
             (true, "!=" | "<>") => CompareOp::Ne,
             (true, "<") => CompareOp::Lt,
@@ -296,12 +417,20 @@ impl Parser {
                 return Err(self.expected(&["=", "!=", "<", "<=", ">", ">=", "LIKE"]));
             }
         };
-        Ok(Condition::Compare { field, op, value: self.value()? })
+        Ok(Condition::Compare {
+            field,
+            op,
+            value: self.value()?,
+        })
     }
 
     fn field(&mut self) -> Result<Field, QueryError> {
         let t = self.peek().clone();
-        let word = if t.kind == TokenKind::Word { t.text.to_ascii_lowercase() } else { String::new() };
+        let word = if t.kind == TokenKind::Word {
+            t.text.to_ascii_lowercase()
+        } else {
+            String::new()
+        };
         let field = match word.as_str() {
             "id" => Field::Id,
             "kind" => Field::Kind,
@@ -353,7 +482,10 @@ impl Parser {
     fn space_ref(&mut self) -> Result<SpaceRef, QueryError> {
         let t = self.peek().clone();
         match &t.kind {
-            TokenKind::Number => Ok(SpaceRef::Id { kind: None, id: SpaceId(self.integer()?) }),
+            TokenKind::Number => Ok(SpaceRef::Id {
+                kind: None,
+                id: SpaceId(self.integer()?),
+            }),
             TokenKind::Str(s) => {
                 self.pos += 1;
                 Ok(SpaceRef::Name(s.clone()))
@@ -361,7 +493,11 @@ impl Parser {
             TokenKind::Punct if t.text == "(" => Ok(SpaceRef::Point(self.point()?)),
             TokenKind::Word => {
                 let w = t.text.to_ascii_lowercase();
-                let kind = if w == "space" { None } else { w.parse::<SpaceKind>().ok() };
+                let kind = if w == "space" {
+                    None
+                } else {
+                    w.parse::<SpaceKind>().ok()
+                };
                 if w != "space" && kind.is_none() {
                     let hint = suggest(&w, ["room", "space", "door", "corridor"]);
                     let mut e = self.expected(&["an id", "a \"name\"", "a point (x, y)"]);
@@ -373,7 +509,10 @@ impl Parser {
                     return Err(e);
                 }
                 self.pos += 1;
-                Ok(SpaceRef::Id { kind, id: SpaceId(self.integer()?) })
+                Ok(SpaceRef::Id {
+                    kind,
+                    id: SpaceId(self.integer()?),
+                })
             }
             _ => Err(self.expected(&["an id", "a \"name\"", "a point (x, y)"])),
         }
@@ -445,7 +584,10 @@ mod tests {
         let s = e.to_string();
         assert!(s.contains("found 'ROUET' (did you mean ROUTE?)"), "{s}");
         let span = e.span().unwrap();
-        assert_eq!((span.line, span.column, span.offset, span.len), (2, 3, 14, 5));
+        assert_eq!(
+            (span.line, span.column, span.offset, span.len),
+            (2, 3, 14, 5)
+        );
     }
 
     #[test]

@@ -64,7 +64,13 @@ pub fn plan(
 ) -> Result<Plan, QueryError> {
     let model = || current.ok_or(QueryError::NoMapSelected);
     Ok(match statement {
-        Statement::Route { from, to, via, avoid, alternatives } => {
+        Statement::Route {
+            from,
+            to,
+            via,
+            avoid,
+            alternatives,
+        } => {
             let m = model()?;
             let resolve = |refs: &[super::ast::SpaceRef]| -> Result<Vec<SpaceId>, QueryError> {
                 refs.iter().map(|r| m.resolve(r)).collect()
@@ -77,20 +83,32 @@ pub fn plan(
                 alternatives: alternatives.unwrap_or(1).max(1) as usize,
             })
         }
-        Statement::Neighbours { of, depth } => {
-            Plan::Neighbours { of: model()?.resolve(of)?, depth: depth.unwrap_or(1) }
-        }
-        Statement::Find { kind, filter, order, limit } => {
+        Statement::Neighbours { of, depth } => Plan::Neighbours {
+            of: model()?.resolve(of)?,
+            depth: depth.unwrap_or(1),
+        },
+        Statement::Find {
+            kind,
+            filter,
+            order,
+            limit,
+        } => {
             model()?;
-            Plan::Find { kind: *kind, filter: filter.clone(), order: order.clone(), limit: *limit }
+            Plan::Find {
+                kind: *kind,
+                filter: filter.clone(),
+                order: order.clone(),
+                limit: *limit,
+            }
         }
         Statement::Locate { point } => {
             model()?;
             Plan::Locate(*point)
         }
-        Statement::Reachable { from, within_m } => {
-            Plan::Reachable { from: model()?.resolve(from)?, within_m: *within_m }
-        }
+        Statement::Reachable { from, within_m } => Plan::Reachable {
+            from: model()?.resolve(from)?,
+            within_m: *within_m,
+        },
         Statement::ShowMaps => Plan::ShowMaps,
         Statement::ShowRevisions { map } => match map.as_deref().or(current_map) {
             Some(m) => Plan::ShowRevisions(m.to_string()),
@@ -113,9 +131,19 @@ impl fmt::Display for Plan {
         match self {
             Plan::Route(r) => {
                 if r.alternatives > 1 {
-                    writeln!(f, "Yen k={} loopless routes {} -> {}", r.alternatives, r.from, r.to)?;
+                    writeln!(
+                        f,
+                        "Yen k={} loopless routes {} -> {}",
+                        r.alternatives, r.from, r.to
+                    )?;
                 } else {
-                    writeln!(f, "Dijkstra {} leg(s) {} -> {}", r.via.len() + 1, r.from, r.to)?;
+                    writeln!(
+                        f,
+                        "Dijkstra {} leg(s) {} -> {}",
+                        r.via.len() + 1,
+                        r.from,
+                        r.to
+                    )?;
                 }
                 if !r.via.is_empty() {
                     writeln!(f, "  via [{}]", ids(&r.via))?;
@@ -126,9 +154,17 @@ impl fmt::Display for Plan {
                 write!(f, "  over navigable graph (lengths in metres)")
             }
             Plan::Neighbours { of, depth } => {
-                write!(f, "BreadthFirst from {of} depth {depth} over navigable connections")
+                write!(
+                    f,
+                    "BreadthFirst from {of} depth {depth} over navigable connections"
+                )
             }
-            Plan::Find { kind, filter, order, limit } => {
+            Plan::Find {
+                kind,
+                filter,
+                order,
+                limit,
+            } => {
                 let mut lines = Vec::new();
                 if let Some(n) = limit {
                     lines.push(format!("Limit {n}"));
@@ -155,7 +191,11 @@ impl fmt::Display for Plan {
                 }
                 Ok(())
             }
-            Plan::Locate(p) => write!(f, "RTreeEnvelopes at ({}, {})\n  PointInPolygon, smallest area wins", p[0], p[1]),
+            Plan::Locate(p) => write!(
+                f,
+                "RTreeEnvelopes at ({}, {})\n  PointInPolygon, smallest area wins",
+                p[0], p[1]
+            ),
             Plan::Reachable { from, within_m } => {
                 write!(f, "BoundedDijkstra from {from} within {within_m} m")
             }

@@ -94,7 +94,12 @@ impl QueryResult {
                 .zip(&route.waypoints)
                 .enumerate()
                 .map(|(i, (s, p))| {
-                    vec![Cell::Int(i as i64 + 1), Cell::Int(s.0.into()), Cell::Float(p[0]), Cell::Float(p[1])]
+                    vec![
+                        Cell::Int(i as i64 + 1),
+                        Cell::Int(s.0.into()),
+                        Cell::Float(p[0]),
+                        Cell::Float(p[1]),
+                    ]
                 })
                 .collect(),
         }
@@ -151,7 +156,9 @@ impl QueryResult {
             }
             QueryResult::Routes(routes) => {
                 let mut t = Table {
-                    columns: ["route", "length_m", "step", "space", "x_m", "y_m"].map(String::from).to_vec(),
+                    columns: ["route", "length_m", "step", "space", "x_m", "y_m"]
+                        .map(String::from)
+                        .to_vec(),
                     rows: Vec::new(),
                 };
                 for (i, r) in routes.iter().enumerate() {
@@ -169,7 +176,11 @@ impl QueryResult {
 
 /// An aligned table: text left, numbers right, `(N rows)` at the end.
 fn aligned(t: &Table) -> String {
-    let cells: Vec<Vec<String>> = t.rows.iter().map(|r| r.iter().map(Cell::text).collect()).collect();
+    let cells: Vec<Vec<String>> = t
+        .rows
+        .iter()
+        .map(|r| r.iter().map(Cell::text).collect())
+        .collect();
     let mut widths: Vec<usize> = t.columns.iter().map(|c| c.chars().count()).collect();
     for row in &cells {
         for (w, c) in widths.iter_mut().zip(row) {
@@ -181,12 +192,24 @@ fn aligned(t: &Table) -> String {
         let parts: Vec<String> = cols
             .into_iter()
             .zip(&widths)
-            .map(|((c, right), w)| if right { format!("{c:>w$}") } else { format!("{c:<w$}") })
+            .map(|((c, right), w)| {
+                if right {
+                    format!("{c:>w$}")
+                } else {
+                    format!("{c:<w$}")
+                }
+            })
             .collect();
         let _ = writeln!(out, "{}", parts.join("  ").trim_end());
     };
-    line(&mut out, t.columns.iter().map(|c| (c.clone(), false)).collect());
-    line(&mut out, widths.iter().map(|w| ("-".repeat(*w), false)).collect());
+    line(
+        &mut out,
+        t.columns.iter().map(|c| (c.clone(), false)).collect(),
+    );
+    line(
+        &mut out,
+        widths.iter().map(|w| ("-".repeat(*w), false)).collect(),
+    );
     for (row, texts) in t.rows.iter().zip(cells) {
         let cols = row
             .iter()
@@ -202,7 +225,11 @@ fn aligned(t: &Table) -> String {
 
 fn csv(t: &Table) -> String {
     let field = |s: &str| {
-        if s.contains([',', '"', '\n']) { format!("\"{}\"", s.replace('"', "\"\"")) } else { s.to_string() }
+        if s.contains([',', '"', '\n']) {
+            format!("\"{}\"", s.replace('"', "\"\""))
+        } else {
+            s.to_string()
+        }
     };
     let mut out = String::new();
     let header: Vec<String> = t.columns.iter().map(|c| field(c)).collect();
@@ -224,8 +251,14 @@ mod tests {
             columns: vec!["id".into(), "name".into()],
             rows: vec![vec![Cell::Int(3), Cell::Text("a, \"b\"".into())]],
         });
-        assert_eq!(t.render(Format::Table), "id  name\n--  --------\n 3  a, \"b\"\n(1 row)\n");
+        assert_eq!(
+            t.render(Format::Table),
+            "id  name\n--  ------\n 3  a, \"b\"\n(1 row)\n"
+        );
         assert_eq!(t.render(Format::Csv), "id,name\n3,\"a, \"\"b\"\"\"\n");
-        assert_eq!(QueryResult::Routes(vec![]).render(Format::Table), "no route\n");
+        assert_eq!(
+            QueryResult::Routes(vec![]).render(Format::Table),
+            "no route\n"
+        );
     }
 }

@@ -30,7 +30,11 @@ pub struct Session<S: Source> {
 impl<S: Source> Session<S> {
     /// A session with no map selected and default limits.
     pub fn new(source: S) -> Session<S> {
-        Session { source, current: None, limits: Limits::default() }
+        Session {
+            source,
+            current: None,
+            limits: Limits::default(),
+        }
     }
 
     /// A session on the latest revision of the first map (by name), if any.
@@ -81,7 +85,11 @@ impl<S: Source> Session<S> {
 
     /// Plans a statement against the selected revision.
     pub fn plan(&self, statement: &Statement) -> Result<Plan, QueryError> {
-        plan(statement, self.current.as_ref(), self.current.as_ref().map(|c| c.map.as_str()))
+        plan(
+            statement,
+            self.current.as_ref(),
+            self.current.as_ref().map(|c| c.map.as_str()),
+        )
     }
 
     /// Plans and runs one statement.
@@ -99,7 +107,11 @@ impl<S: Source> Session<S> {
                     .maps()?
                     .into_iter()
                     .map(|m| {
-                        vec![Cell::Text(m.name), Cell::Int(m.revisions as i64), Cell::Int(m.latest as i64)]
+                        vec![
+                            Cell::Text(m.name),
+                            Cell::Int(m.revisions as i64),
+                            Cell::Int(m.latest as i64),
+                        ]
                     })
                     .collect();
                 Ok(table(&["map", "revisions", "latest"], rows))
@@ -141,9 +153,15 @@ impl<S: Source> Session<S> {
     /// Parses `text` and runs each statement in order. A syntax error fails
     /// the whole text (nothing runs); a statement's own error is kept in
     /// its slot and the following statements still run.
-    pub fn execute(&mut self, text: &str) -> Result<Vec<Result<QueryResult, QueryError>>, QueryError> {
+    pub fn execute(
+        &mut self,
+        text: &str,
+    ) -> Result<Vec<Result<QueryResult, QueryError>>, QueryError> {
         let statements = parse(text)?;
-        Ok(statements.iter().map(|s| self.execute_statement(s)).collect())
+        Ok(statements
+            .iter()
+            .map(|s| self.execute_statement(s))
+            .collect())
     }
 
     /// Line in, text out: runs `text` and renders every result in
@@ -162,5 +180,8 @@ impl<S: Source> Session<S> {
 }
 
 fn table(names: &[&str], rows: Vec<Vec<Cell>>) -> QueryResult {
-    QueryResult::Table(Table { columns: names.iter().map(|s| (*s).to_string()).collect(), rows })
+    QueryResult::Table(Table {
+        columns: names.iter().map(|s| (*s).to_string()).collect(),
+        rows,
+    })
 }

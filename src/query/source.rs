@@ -102,7 +102,10 @@ impl MemorySource {
             .checked_sub(1)
             .and_then(|i| revisions.get(usize::try_from(i).ok()?))
             .map(|(nrg, _)| nrg)
-            .ok_or_else(|| SourceError::NoRevision { map: map.to_string(), revision })
+            .ok_or_else(|| SourceError::NoRevision {
+                map: map.to_string(),
+                revision,
+            })
     }
 }
 

@@ -40,7 +40,9 @@ pub fn alternatives(
     }
     Ok(found
         .into_iter()
-        .map(|(nodes, _)| Route::from_path(nrg, nodes.into_iter().map(|n| graph.space(n)).collect()))
+        .map(|(nodes, _)| {
+            Route::from_path(nrg, nodes.into_iter().map(|n| graph.space(n)).collect())
+        })
         .collect())
 }
 

@@ -40,7 +40,7 @@ impl Budget {
         }
         let calls = self.calls.get().wrapping_add(1);
         self.calls.set(calls);
-        if calls % 256 == 0
+        if calls.is_multiple_of(256)
             && let Some(deadline) = self.deadline
             && Instant::now() >= deadline
         {

@@ -16,6 +16,8 @@ pub enum RouteError {
     #[error("alternatives are not computed for routes with waypoints (drop VIA or ALTERNATIVES)")]
     AlternativesWithVia,
     /// The time bound ran out.
-    #[error("route search exceeded its time bound of {0} ms (raise the timeout or narrow the query)")]
+    #[error(
+        "route search exceeded its time bound of {0} ms (raise the timeout or narrow the query)"
+    )]
     Timeout(u128),
 }

@@ -57,7 +57,9 @@ impl RouteGraph {
 
     /// Neighbours of a node with the cost in micrometres.
     pub fn edges(&self, node: u32) -> &[(u32, u64)] {
-        self.adjacency.get(node as usize).map_or(&[], |v| v.as_slice())
+        self.adjacency
+            .get(node as usize)
+            .map_or(&[], |v| v.as_slice())
     }
 
     /// Number of navigable connections of a space (0 when not navigable).

@@ -103,8 +103,13 @@ mod tests {
         let nrg = demo::building(4);
         let g = RouteGraph::new(&nrg);
         let s = ids(&nrg, &["Kitchen", "Library"]);
-        let r = shortest_route(&g, &nrg, &RouteRequest::new(s[0], s[1]), &Budget::unlimited())
-            .unwrap();
+        let r = shortest_route(
+            &g,
+            &nrg,
+            &RouteRequest::new(s[0], s[1]),
+            &Budget::unlimited(),
+        )
+        .unwrap();
         assert_eq!(r.len(), 1);
         assert_eq!(r[0].spaces.first(), Some(&s[0]));
         assert_eq!(r[0].spaces.last(), Some(&s[1]));
@@ -130,6 +135,9 @@ mod tests {
             .filter(|s| s.kind == crate::model::SpaceKind::Corridor)
             .map(|s| s.id)
             .collect();
-        assert_eq!(shortest_route(&g, &nrg, &req, &Budget::unlimited()), Ok(vec![]));
+        assert_eq!(
+            shortest_route(&g, &nrg, &req, &Budget::unlimited()),
+            Ok(vec![])
+        );
     }
 }

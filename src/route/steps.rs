@@ -14,7 +14,10 @@ use crate::model::{Nrg, SpaceId, SpaceKind};
 /// assert_eq!(describe_steps(&nrg, &path), vec![format!("you are at {}", nrg.spaces()[0].label())]);
 /// ```
 pub fn describe_steps(nrg: &Nrg, path: &[SpaceId]) -> Vec<String> {
-    let label = |id: &SpaceId| nrg.space(*id).map_or_else(|| format!("space {id}"), |s| s.label());
+    let label = |id: &SpaceId| {
+        nrg.space(*id)
+            .map_or_else(|| format!("space {id}"), |s| s.label())
+    };
     let is_door = |id: &SpaceId| nrg.space(*id).is_some_and(|s| s.kind == SpaceKind::Door);
     let mut steps = Vec::new();
     if path.len() == 1 {
@@ -35,7 +38,12 @@ pub fn describe_steps(nrg: &Nrg, path: &[SpaceId]) -> Vec<String> {
         let step = if doors.is_empty() {
             format!("{verb} {} into {}", label(from), label(into))
         } else {
-            format!("{verb} {} through {} into {}", label(from), doors.join(" and "), label(into))
+            format!(
+                "{verb} {} through {} into {}",
+                label(from),
+                doors.join(" and "),
+                label(into)
+            )
         };
         steps.push(step);
         i = j;

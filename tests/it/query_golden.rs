@@ -18,7 +18,12 @@ fn session_for(text: &str, path: &Path) -> Session<MemorySource> {
         .find_map(|l| l.strip_prefix("# @model:"))
         .unwrap_or_else(|| panic!("{}: missing '# @model: demo N'", path.display()));
     let mut words = directive.split_whitespace();
-    assert_eq!(words.next(), Some("demo"), "{}: only 'demo N' models exist", path.display());
+    assert_eq!(
+        words.next(),
+        Some("demo"),
+        "{}: only 'demo N' models exist",
+        path.display()
+    );
     let n: usize = words.next().and_then(|w| w.parse().ok()).expect("demo N");
     let mut source = MemorySource::new();
     source.insert_with_note("demo", demo::building(n), "built-in demo building");
@@ -91,7 +96,12 @@ fn golden_queries() {
         if std::env::var_os("NRGDB_BLESS").is_some() {
             std::fs::write(&path, &got).unwrap();
         } else {
-            assert_eq!(text, got, "{}: run with NRGDB_BLESS=1 to update", path.display());
+            assert_eq!(
+                text,
+                got,
+                "{}: run with NRGDB_BLESS=1 to update",
+                path.display()
+            );
         }
     }
 }

@@ -2,11 +2,19 @@
 //! then parsing it gives the same AST.
 
 use nrgdb::model::{SpaceId, SpaceKind};
-use nrgdb::query::{CompareOp, Condition, Field, KEYWORDS, OrderKey, SpaceRef, Statement, Value, parse, parse_statement};
+use nrgdb::query::{
+    CompareOp, Condition, Field, KEYWORDS, OrderKey, SpaceRef, Statement, Value, parse,
+    parse_statement,
+};
 use proptest::prelude::*;
 
 fn number() -> impl Strategy<Value = f64> {
-    prop_oneof![-1e6..1e6f64, (-1000i32..1000).prop_map(f64::from), Just(1e-7), Just(2.5e20)]
+    prop_oneof![
+        -1e6..1e6f64,
+        (-1000i32..1000).prop_map(f64::from),
+        Just(1e-7),
+        Just(2.5e20)
+    ]
 }
 
 fn text() -> impl Strategy<Value = String> {
@@ -14,9 +22,15 @@ fn text() -> impl Strategy<Value = String> {
 }
 
 fn space_ref() -> impl Strategy<Value = SpaceRef> {
-    let kind = prop_oneof![Just(None), proptest::sample::select(SpaceKind::ALL.to_vec()).prop_map(Some)];
+    let kind = prop_oneof![
+        Just(None),
+        proptest::sample::select(SpaceKind::ALL.to_vec()).prop_map(Some)
+    ];
     prop_oneof![
-        (kind, any::<u32>()).prop_map(|(kind, id)| SpaceRef::Id { kind, id: SpaceId(id) }),
+        (kind, any::<u32>()).prop_map(|(kind, id)| SpaceRef::Id {
+            kind,
+            id: SpaceId(id)
+        }),
         text().prop_map(SpaceRef::Name),
         (number(), number()).prop_map(|(x, y)| SpaceRef::Point([x, y])),
     ]
@@ -36,7 +50,13 @@ fn field() -> impl Strategy<Value = Field> {
 
 fn condition() -> impl Strategy<Value = Condition> {
     let op = proptest::sample::select(vec![
-        CompareOp::Eq, CompareOp::Ne, CompareOp::Lt, CompareOp::Le, CompareOp::Gt, CompareOp::Ge, CompareOp::Like,
+        CompareOp::Eq,
+        CompareOp::Ne,
+        CompareOp::Lt,
+        CompareOp::Le,
+        CompareOp::Gt,
+        CompareOp::Ge,
+        CompareOp::Like,
     ]);
     let value = prop_oneof![
         number().prop_map(Value::Number),
@@ -44,11 +64,14 @@ fn condition() -> impl Strategy<Value = Condition> {
         any::<bool>().prop_map(Value::Bool),
         Just(Value::Null),
     ];
-    let leaf = (field(), op, value).prop_map(|(field, op, value)| Condition::Compare { field, op, value });
+    let leaf =
+        (field(), op, value).prop_map(|(field, op, value)| Condition::Compare { field, op, value });
     leaf.prop_recursive(4, 16, 2, |inner| {
         prop_oneof![
-            (inner.clone(), inner.clone()).prop_map(|(a, b)| Condition::And(Box::new(a), Box::new(b))),
-            (inner.clone(), inner.clone()).prop_map(|(a, b)| Condition::Or(Box::new(a), Box::new(b))),
+            (inner.clone(), inner.clone())
+                .prop_map(|(a, b)| Condition::And(Box::new(a), Box::new(b))),
+            (inner.clone(), inner.clone())
+                .prop_map(|(a, b)| Condition::Or(Box::new(a), Box::new(b))),
             inner.prop_map(|a| Condition::Not(Box::new(a))),
         ]
     })
@@ -56,19 +79,50 @@ fn condition() -> impl Strategy<Value = Condition> {
 
 fn statement() -> impl Strategy<Value = Statement> {
     let refs = || proptest::collection::vec(space_ref(), 0..3);
-    let kind = prop_oneof![Just(None), proptest::sample::select(SpaceKind::ALL.to_vec()).prop_map(Some)];
-    let order = proptest::collection::vec((field(), any::<bool>()).prop_map(|(field, descending)| OrderKey { field, descending }), 0..3);
+    let kind = prop_oneof![
+        Just(None),
+        proptest::sample::select(SpaceKind::ALL.to_vec()).prop_map(Some)
+    ];
+    let order = proptest::collection::vec(
+        (field(), any::<bool>()).prop_map(|(field, descending)| OrderKey { field, descending }),
+        0..3,
+    );
     prop_oneof![
-        (space_ref(), space_ref(), refs(), refs(), proptest::option::of(any::<u32>()))
-            .prop_map(|(from, to, via, avoid, alternatives)| Statement::Route { from, to, via, avoid, alternatives }),
-        (space_ref(), proptest::option::of(any::<u32>())).prop_map(|(of, depth)| Statement::Neighbours { of, depth }),
-        (kind, proptest::option::of(condition()), order, proptest::option::of(any::<u64>()))
-            .prop_map(|(kind, filter, order, limit)| Statement::Find { kind, filter, order, limit }),
+        (
+            space_ref(),
+            space_ref(),
+            refs(),
+            refs(),
+            proptest::option::of(any::<u32>())
+        )
+            .prop_map(|(from, to, via, avoid, alternatives)| Statement::Route {
+                from,
+                to,
+                via,
+                avoid,
+                alternatives
+            }),
+        (space_ref(), proptest::option::of(any::<u32>()))
+            .prop_map(|(of, depth)| Statement::Neighbours { of, depth }),
+        (
+            kind,
+            proptest::option::of(condition()),
+            order,
+            proptest::option::of(any::<u64>())
+        )
+            .prop_map(|(kind, filter, order, limit)| Statement::Find {
+                kind,
+                filter,
+                order,
+                limit
+            }),
         (number(), number()).prop_map(|(x, y)| Statement::Locate { point: [x, y] }),
-        (space_ref(), number()).prop_map(|(from, within_m)| Statement::Reachable { from, within_m }),
+        (space_ref(), number())
+            .prop_map(|(from, within_m)| Statement::Reachable { from, within_m }),
         Just(Statement::ShowMaps),
         proptest::option::of(text()).prop_map(|map| Statement::ShowRevisions { map }),
-        (text(), proptest::option::of(any::<u64>())).prop_map(|(map, revision)| Statement::Use { map, revision }),
+        (text(), proptest::option::of(any::<u64>()))
+            .prop_map(|(map, revision)| Statement::Use { map, revision }),
         (space_ref(), text()).prop_map(|(space, name)| Statement::Name { space, name }),
         (any::<u64>(), any::<u64>()).prop_map(|(from, to)| Statement::Diff { from, to }),
     ]
@@ -78,9 +132,17 @@ fn statement() -> impl Strategy<Value = Statement> {
 fn soup() -> impl Strategy<Value = String> {
     let piece = prop_oneof![
         proptest::sample::select(KEYWORDS.to_vec()).prop_map(String::from),
-        Just("(".to_string()), Just(")".to_string()), Just(",".to_string()), Just(";".to_string()),
-        Just("\"".to_string()), Just("--".to_string()), Just(".".to_string()), Just("\n".to_string()),
-        "[a-z]{1,6}", "-?[0-9]{1,4}(\\.[0-9]{1,3})?", "[=<>!]{1,2}",
+        Just("(".to_string()),
+        Just(")".to_string()),
+        Just(",".to_string()),
+        Just(";".to_string()),
+        Just("\"".to_string()),
+        Just("--".to_string()),
+        Just(".".to_string()),
+        Just("\n".to_string()),
+        "[a-z]{1,6}",
+        "-?[0-9]{1,4}(\\.[0-9]{1,3})?",
+        "[=<>!]{1,2}",
     ];
     proptest::collection::vec(piece, 0..25).prop_map(|v| v.join(" "))
 }

@@ -17,7 +17,12 @@ fn graph() -> impl Strategy<Value = Nrg> {
                 .map(|i| {
                     let (x, y) = (f64::from(i) * 3.0, 0.0);
                     let square = vec![[x, y], [x + 1.0, y], [x + 1.0, y + 1.0], [x, y + 1.0]];
-                    Space::new(SpaceId(i), kinds[i as usize % 3], [x + 0.5, y + 0.5], square)
+                    Space::new(
+                        SpaceId(i),
+                        kinds[i as usize % 3],
+                        [x + 0.5, y + 0.5],
+                        square,
+                    )
                 })
                 .collect();
             let mut seen = BTreeSet::new();
@@ -44,7 +49,9 @@ fn reference(nrg: &Nrg, from: SpaceId, to: SpaceId, avoid: &[SpaceId]) -> Option
     let at = |id: SpaceId| ids.iter().position(|x| *x == id).unwrap();
     dist[at(from)] = 0.0;
     loop {
-        let next = (0..ids.len()).filter(|i| !done[*i] && dist[*i].is_finite()).min_by(|a, b| dist[*a].total_cmp(&dist[*b]));
+        let next = (0..ids.len())
+            .filter(|i| !done[*i] && dist[*i].is_finite())
+            .min_by(|a, b| dist[*a].total_cmp(&dist[*b]));
         let Some(u) = next else { break };
         done[u] = true;
         for c in nrg.connections_of(ids[u]) {
@@ -63,7 +70,11 @@ fn reference(nrg: &Nrg, from: SpaceId, to: SpaceId, avoid: &[SpaceId]) -> Option
 }
 
 fn valid(nrg: &Nrg, r: &Route) -> bool {
-    let sum: Option<f64> = r.spaces.windows(2).map(|w| nrg.connection(w[0], w[1]).map(|c| c.length_m)).sum();
+    let sum: Option<f64> = r
+        .spaces
+        .windows(2)
+        .map(|w| nrg.connection(w[0], w[1]).map(|c| c.length_m))
+        .sum();
     sum.is_some_and(|s| (s - r.length_m).abs() < 1e-9)
 }
 
