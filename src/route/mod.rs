@@ -8,12 +8,14 @@
 //! or the terminal. "No route" is an answer (an empty list), not an error.
 //!
 //! ```
+//! use nrgdb::model::SpaceId;
 //! use nrgdb::query::demo;
 //! use nrgdb::route::{Budget, RouteGraph, RouteRequest, shortest_route};
 //! let nrg = demo::building(4);
 //! let graph = RouteGraph::new(&nrg);
-//! let (from, to) = (nrg.spaces()[1].id, nrg.spaces()[nrg.spaces().len() - 1].id);
-//! let routes = shortest_route(&graph, &nrg, &RouteRequest::new(from, to), &Budget::unlimited()).unwrap();
+//! // From the Kitchen (3) to the lower room of the last segment (20).
+//! let request = RouteRequest::new(SpaceId(3), SpaceId(20));
+//! let routes = shortest_route(&graph, &nrg, &request, &Budget::unlimited()).unwrap();
 //! assert_eq!(routes.len(), 1);
 //! assert!(routes[0].length_m > 0.0);
 //! ```
