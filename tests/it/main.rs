@@ -4,3 +4,4 @@ mod query;
 mod query_golden;
 mod query_props;
 mod route_props;
+mod query_cli;
