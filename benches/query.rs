@@ -6,7 +6,9 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use nrgdb::model::SpaceId;
 use nrgdb::query::{MemorySource, Session, demo};
+use nrgdb::route::{Budget, Route, RouteGraph, RouteRequest, reachable_within, shortest_route};
 
 fn session(columns: usize) -> (Session<MemorySource>, usize) {
     let nrg = demo::building(columns);
@@ -27,6 +29,26 @@ fn route(c: &mut Criterion) {
             b.iter(|| s.execute(black_box(&query)).unwrap())
         });
     }
+    // The same search without the query layer, to see where the time goes.
+    let nrg = demo::building(1875);
+    let graph = RouteGraph::new(&nrg);
+    let far = nrg.spaces().len();
+    c.bench_function(&format!("route/reachable-all/{far}-spaces"), |b| {
+        b.iter(|| reachable_within(&graph, SpaceId(3), 1e9, &Budget::unlimited()).unwrap())
+    });
+    let path: Vec<SpaceId> = shortest_route(
+        &graph,
+        &nrg,
+        &RouteRequest::new(SpaceId(3), SpaceId(9375)),
+        &Budget::unlimited(),
+    )
+    .unwrap()
+    .remove(0)
+    .spaces;
+    c.bench_function(
+        &format!("route/answer-from-path/{}-steps", path.len()),
+        |b| b.iter(|| Route::from_path(&nrg, black_box(path.clone()))),
+    );
     let (mut s, spaces) = session(28);
     let query = "ROUTE FROM \"Kitchen\" TO \"Lounge\" ALTERNATIVES 3";
     c.bench_function(

@@ -6,8 +6,14 @@ use std::path::PathBuf;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
-    let columns: usize = args.next().ok_or("usage: demo_building SEGMENTS OUT.json")?.parse()?;
-    let out = PathBuf::from(args.next().ok_or("usage: demo_building SEGMENTS OUT.json")?);
+    let columns: usize = args
+        .next()
+        .ok_or("usage: demo_building SEGMENTS OUT.json")?
+        .parse()?;
+    let out = PathBuf::from(
+        args.next()
+            .ok_or("usage: demo_building SEGMENTS OUT.json")?,
+    );
     let nrg = nrgdb::query::demo::building(columns);
     nrgdb::atomic::write(&out, nrg.to_json().as_bytes())?;
     eprintln!("{} spaces -> {}", nrg.spaces().len(), out.display());

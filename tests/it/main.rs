@@ -1,7 +1,7 @@
 #![cfg(test)]
 
 mod query;
+mod query_cli;
 mod query_golden;
 mod query_props;
 mod route_props;
-mod query_cli;
