@@ -16,4 +16,6 @@ pub mod format;
 pub mod geojson;
 pub mod indoorgml;
 pub mod model;
+pub mod query;
+pub mod route;
 pub mod sim;

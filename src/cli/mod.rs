@@ -12,6 +12,8 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 mod map_log;
+pub mod query;
+pub mod repl;
 mod simulate;
 
 /// The command line.
@@ -45,6 +47,10 @@ pub enum Command {
     Simulate(simulate::Args),
     /// Build an occupancy map from a CARMEN laser log with corrected poses.
     MapLog(map_log::Args),
+    /// Run query statements (ROUTE, FIND, NEIGHBOURS, …) against a model.
+    Query(query::Args),
+    /// Interactive query shell with history, completion and highlighting.
+    Repl(repl::Args),
 }
 
 /// Runs one subcommand, writing its report to `out`.
@@ -54,6 +60,8 @@ pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
         Command::Convert(args) => convert::run(args, out),
         Command::Simulate(args) => simulate::run(args, out),
         Command::MapLog(args) => map_log::run(args, out),
+        Command::Query(args) => query::run(args, out),
+        Command::Repl(args) => repl::run(args, out),
     }
 }
 

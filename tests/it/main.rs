@@ -6,5 +6,11 @@ mod indoorgml_check;
 mod indoorgml_fuzz;
 mod indoorgml_roundtrip;
 mod indoorgml_samples;
-mod support;
 mod sim;
+mod support;
+
+mod query;
+mod query_cli;
+mod query_golden;
+mod query_props;
+mod route_props;

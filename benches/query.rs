@@ -1,0 +1,69 @@
+//! Parse + plan + execute a ROUTE end to end through `query::Session`, on
+//! the generated demo building: willow-sized (~150 spaces) and 10 000 spaces.
+//! Targets (issue 5): ≤ 50 µs and ≤ 2 ms.
+#![allow(clippy::unwrap_used)]
+
+use std::hint::black_box;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use nrgdb::model::SpaceId;
+use nrgdb::query::{MemorySource, Session, demo};
+use nrgdb::route::{Budget, Route, RouteGraph, RouteRequest, reachable_within, shortest_route};
+
+fn session(columns: usize) -> (Session<MemorySource>, usize) {
+    let nrg = demo::building(columns);
+    let spaces = nrg.spaces().len();
+    let mut source = MemorySource::new();
+    source.insert("demo", nrg);
+    (Session::with_default_map(source).unwrap(), spaces)
+}
+
+fn route(c: &mut Criterion) {
+    for columns in [28, 1875] {
+        let (mut s, spaces) = session(columns);
+        // Corner to corner: the upper room of the first segment to the
+        // lower room of the last one, so Dijkstra settles every node.
+        let query = format!("ROUTE FROM room 3 TO room {}", 5 * (columns - 1) + 5);
+        assert!(!s.execute(&query).unwrap().is_empty());
+        c.bench_function(&format!("query/route/{spaces}-spaces"), |b| {
+            b.iter(|| s.execute(black_box(&query)).unwrap())
+        });
+    }
+    // The same search without the query layer, to see where the time goes.
+    let nrg = demo::building(1875);
+    let graph = RouteGraph::new(&nrg);
+    let far = nrg.spaces().len();
+    c.bench_function(&format!("route/reachable-all/{far}-spaces"), |b| {
+        b.iter(|| reachable_within(&graph, SpaceId(3), 1e9, &Budget::unlimited()).unwrap())
+    });
+    let path: Vec<SpaceId> = shortest_route(
+        &graph,
+        &nrg,
+        &RouteRequest::new(SpaceId(3), SpaceId(9375)),
+        &Budget::unlimited(),
+    )
+    .unwrap()
+    .remove(0)
+    .spaces;
+    c.bench_function(
+        &format!("route/answer-from-path/{}-steps", path.len()),
+        |b| b.iter(|| Route::from_path(&nrg, black_box(path.clone()))),
+    );
+    let (mut s, spaces) = session(28);
+    let query = "ROUTE FROM \"Kitchen\" TO \"Lounge\" ALTERNATIVES 3";
+    c.bench_function(
+        &format!("query/route-alternatives-3/{spaces}-spaces"),
+        |b| b.iter(|| s.execute(black_box(query)).unwrap()),
+    );
+    c.bench_function("query/parse/route", |b| {
+        b.iter(|| {
+            nrgdb::query::parse(black_box(
+                "ROUTE FROM room 3 TO \"Lounge\" VIA 8 AVOID door 12",
+            ))
+            .unwrap()
+        })
+    });
+}
+
+criterion_group!(benches, route);
+criterion_main!(benches);

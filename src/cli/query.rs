@@ -1,0 +1,182 @@
+//! `nrgdb query`: run query statements against a model and print the answers.
+
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Duration;
+
+use miette::{IntoDiagnostic, LabeledSpan, NamedSource, WrapErr, miette};
+use nrgdb::model::Nrg;
+use nrgdb::query::{Format, Limits, MemorySource, QueryError, QueryResult, Session, Source, demo};
+
+/// Where the model comes from, shared by `query` and `repl`.
+#[derive(Debug, Clone, clap::Args)]
+pub struct SourceArgs {
+    /// SQLite database of map revisions (not wired to queries yet).
+    #[arg(long, value_name = "DB")]
+    pub db: Option<PathBuf>,
+    /// A model file in nrgdb's JSON form, queried in memory as map `model`
+    /// (or the name given with --map).
+    #[arg(long, value_name = "FILE.json", conflicts_with = "db")]
+    pub model: Option<PathBuf>,
+    /// Use the built-in demo building (rooms along a corridor, named
+    /// Kitchen, Library, Lounge, Office, Printer Room) with this many
+    /// corridor segments, as map `demo`.
+    #[arg(long, value_name = "SEGMENTS", conflicts_with_all = ["db", "model"])]
+    pub demo: Option<usize>,
+    /// The map to query (default: the first map).
+    #[arg(long, value_name = "M")]
+    pub map: Option<String>,
+    /// The revision to query (default: the latest).
+    #[arg(long, value_name = "N", requires = "map")]
+    pub rev: Option<u64>,
+    /// Time bound per statement, in milliseconds.
+    #[arg(long, value_name = "MS", default_value_t = 5000)]
+    pub timeout_ms: u64,
+    /// Most rows a statement may return.
+    #[arg(long, value_name = "N", default_value_t = 10_000)]
+    pub max_rows: usize,
+}
+
+/// Run query statements (ROUTE, FIND, NEIGHBOURS, LOCATE, REACHABLE, SHOW,
+/// USE, NAME, EXPLAIN) and print the answers. Exit code 1 when every answer
+/// is empty (no rows, no route).
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The statements, separated by ';' (e.g. 'ROUTE FROM "Kitchen" TO room 13').
+    #[arg(required_unless_present = "file", conflicts_with = "file")]
+    pub query: Option<String>,
+    /// Read the statements from a file (e.g. queries/*.nrgq; lines starting
+    /// with '#' are ignored).
+    #[arg(short = 'f', long = "file", value_name = "FILE.nrgq")]
+    pub file: Option<PathBuf>,
+    #[command(flatten)]
+    pub source: SourceArgs,
+    /// Print JSON (one document per statement).
+    #[arg(long, conflicts_with = "csv")]
+    pub json: bool,
+    /// Print CSV with a header row.
+    #[arg(long)]
+    pub csv: bool,
+}
+
+/// Builds the source the arguments name. The one place that knows which
+/// storage backs a session.
+pub fn open_source(args: &SourceArgs) -> miette::Result<Box<dyn Source>> {
+    if let Some(db) = &args.db {
+        return Err(miette!(
+            "querying a database ({}) is not wired yet; export the map to JSON and use --model FILE.json",
+            db.display()
+        ));
+    }
+    let mut source = MemorySource::new();
+    if let Some(path) = &args.model {
+        let text = std::fs::read_to_string(path)
+            .into_diagnostic()
+            .wrap_err_with(|| format!("cannot read model {}", path.display()))?;
+        let nrg = Nrg::from_json(&text).into_diagnostic().wrap_err_with(|| {
+            format!(
+                "{}: not an nrgdb model (JSON with spaces and connections)",
+                path.display()
+            )
+        })?;
+        let name = args.map.clone().unwrap_or_else(|| "model".to_string());
+        source.insert_with_note(&name, nrg, &format!("loaded from {}", path.display()));
+    } else if let Some(segments) = args.demo {
+        source.insert_with_note("demo", demo::building(segments), "built-in demo building");
+    }
+    Ok(Box::new(source))
+}
+
+/// Opens a session on the map and revision the arguments select.
+pub fn open_session(args: &SourceArgs) -> miette::Result<Session<Box<dyn Source>>> {
+    let source = open_source(args)?;
+    let mut session = Session::with_default_map(source).into_diagnostic()?;
+    if let Some(map) = &args.map {
+        session.use_map(map, args.rev).into_diagnostic()?;
+    }
+    session.set_limits(Limits {
+        timeout: Duration::from_millis(args.timeout_ms),
+        max_rows: args.max_rows,
+    });
+    Ok(session)
+}
+
+/// A query error as a miette report; syntax errors get the source text and
+/// a caret under the offending token.
+pub fn query_report(error: QueryError, name: &str, text: &str) -> miette::Report {
+    match error.span() {
+        Some(span) => {
+            let message = match &error {
+                QueryError::Syntax { message, .. } => message.clone(),
+                other => other.to_string(),
+            };
+            let end = (span.offset + span.len.max(1)).min(text.len());
+            let start = span.offset.min(end);
+            miette!(
+                labels = vec![LabeledSpan::at(start..end.max(start), "here")],
+                "syntax error at line {}, column {}: {message}",
+                span.line,
+                span.column
+            )
+            .with_source_code(NamedSource::new(name, text.to_string()))
+        }
+        None => miette!("{error}"),
+    }
+}
+
+/// Drops the golden-file lines (starting with '#') from an .nrgq text,
+/// keeping line numbers.
+pub fn strip_hash_lines(text: &str) -> String {
+    text.lines()
+        .map(|l| {
+            if l.trim_start().starts_with('#') {
+                ""
+            } else {
+                l
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// Runs `nrgdb query`.
+pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
+    let (name, text) = match (&args.query, &args.file) {
+        (Some(q), _) => ("query".to_string(), q.clone()),
+        (None, Some(path)) => {
+            let text = std::fs::read_to_string(path)
+                .into_diagnostic()
+                .wrap_err_with(|| format!("cannot read {}", path.display()))?;
+            (path.display().to_string(), strip_hash_lines(&text))
+        }
+        (None, None) => return Err(miette!("give a query or -f FILE.nrgq")),
+    };
+    let format = if args.json {
+        Format::Json
+    } else if args.csv {
+        Format::Csv
+    } else {
+        Format::Table
+    };
+    let mut session = open_session(&args.source)?;
+    let results = session
+        .execute(&text)
+        .map_err(|e| query_report(e, &name, &text))?;
+    let mut any = false;
+    for result in results {
+        let result = result.map_err(|e| miette!("{e}"))?;
+        any |= match &result {
+            QueryResult::Table(t) => !t.rows.is_empty(),
+            QueryResult::Routes(r) => !r.is_empty(),
+            _ => true,
+        };
+        out.write_all(result.render(format).as_bytes())
+            .into_diagnostic()?;
+    }
+    Ok(if any {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(1)
+    })
+}

@@ -1,0 +1,364 @@
+//! The abstract syntax of the query language. `Display` prints canonical
+//! text: upper-case keywords, `;`-free, and `parse(ast.to_string()) == ast`.
+
+use std::fmt;
+
+use crate::model::{SpaceId, SpaceKind};
+
+/// One statement.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Statement {
+    /// `ROUTE FROM a TO b [VIA c, …] [AVOID d, …] [ALTERNATIVES k]`.
+    Route {
+        /// Start.
+        from: SpaceRef,
+        /// Goal.
+        to: SpaceRef,
+        /// Ordered waypoints.
+        via: Vec<SpaceRef>,
+        /// Excluded spaces.
+        avoid: Vec<SpaceRef>,
+        /// Number of routes, if given.
+        alternatives: Option<u32>,
+    },
+    /// `NEIGHBOURS OF a [DEPTH n]`.
+    Neighbours {
+        /// The centre.
+        of: SpaceRef,
+        /// Hops (default 1).
+        depth: Option<u32>,
+    },
+    /// `FIND rooms|corridors|doors|spaces [WHERE …] [ORDER BY …] [LIMIT n]`.
+    Find {
+        /// `None` means every kind (`spaces`).
+        kind: Option<SpaceKind>,
+        /// Filter.
+        filter: Option<Condition>,
+        /// Sort keys.
+        order: Vec<OrderKey>,
+        /// Row limit.
+        limit: Option<u64>,
+    },
+    /// `LOCATE (x, y)`.
+    Locate {
+        /// The point in metres.
+        point: [f64; 2],
+    },
+    /// `REACHABLE FROM a WITHIN d` (metres).
+    Reachable {
+        /// Start.
+        from: SpaceRef,
+        /// Distance bound in metres.
+        within_m: f64,
+    },
+    /// `SHOW MAPS`.
+    ShowMaps,
+    /// `SHOW REVISIONS [OF m]`.
+    ShowRevisions {
+        /// The map, or the current one.
+        map: Option<String>,
+    },
+    /// `USE m [AT REVISION n]`.
+    Use {
+        /// The map.
+        map: String,
+        /// The revision, or the latest.
+        revision: Option<u64>,
+    },
+    /// `NAME a AS "Kitchen"`.
+    Name {
+        /// The space to name.
+        space: SpaceRef,
+        /// The new name.
+        name: String,
+    },
+    /// `DIFF r1 r2` (answered "not available yet").
+    Diff {
+        /// Old revision.
+        from: u64,
+        /// New revision.
+        to: u64,
+    },
+    /// `EXPLAIN <statement>`.
+    Explain(Box<Statement>),
+}
+
+/// A reference to a space.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SpaceRef {
+    /// `12`, `space 12`, or `room 12` (kind checked when given).
+    Id {
+        /// The kind named before the id, if any (`space` means none).
+        kind: Option<SpaceKind>,
+        /// The id.
+        id: SpaceId,
+    },
+    /// `"Kitchen"`: the space with this name (case-insensitive).
+    Name(String),
+    /// `(3.5, 7.25)`: the space containing the point.
+    Point([f64; 2]),
+}
+
+/// A WHERE condition.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Condition {
+    /// `a AND b`.
+    And(Box<Condition>, Box<Condition>),
+    /// `a OR b`.
+    Or(Box<Condition>, Box<Condition>),
+    /// `NOT a`.
+    Not(Box<Condition>),
+    /// `field op value`.
+    Compare {
+        /// Left side.
+        field: Field,
+        /// Operator.
+        op: CompareOp,
+        /// Right side.
+        value: Value,
+    },
+}
+
+/// A property of a space usable in WHERE and ORDER BY.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum Field {
+    /// `id`.
+    Id,
+    /// `kind`.
+    Kind,
+    /// `name` (the label when unnamed).
+    Name,
+    /// `area` in m².
+    Area,
+    /// `degree`: navigable connections.
+    Degree,
+    /// `width` in metres (door width, see `exec`).
+    Width,
+    /// `attr.key`.
+    Attr(String),
+}
+
+/// A comparison operator.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CompareOp {
+    /// `=`
+    Eq,
+    /// `!=`
+    Ne,
+    /// `<`
+    Lt,
+    /// `<=`
+    Le,
+    /// `>`
+    Gt,
+    /// `>=`
+    Ge,
+    /// `LIKE` (`%` any run, `_` one character, case-insensitive).
+    Like,
+}
+
+/// A literal.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Value {
+    /// A number.
+    Number(f64),
+    /// A string (also a bare word such as `room`).
+    Text(String),
+    /// `TRUE` / `FALSE`.
+    Bool(bool),
+    /// `NULL` (matches a missing attribute).
+    Null,
+}
+
+/// One ORDER BY key.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OrderKey {
+    /// What to sort by.
+    pub field: Field,
+    /// Descending?
+    pub descending: bool,
+}
+
+/// Quotes a string literal, escaping `"` and `\`.
+pub fn quote(s: &str) -> String {
+    let mut out = String::with_capacity(s.len() + 2);
+    out.push('"');
+    for c in s.chars() {
+        if c == '"' || c == '\\' {
+            out.push('\\');
+        }
+        out.push(c);
+    }
+    out.push('"');
+    out
+}
+
+/// Whether `s` can be written as a bare identifier.
+pub fn is_identifier(s: &str) -> bool {
+    let mut chars = s.chars();
+    chars
+        .next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && chars.all(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
+fn name_or_quoted(s: &str) -> String {
+    if is_identifier(s) {
+        s.to_string()
+    } else {
+        quote(s)
+    }
+}
+
+fn number(x: f64) -> String {
+    format!("{x:?}")
+}
+
+fn list(refs: &[SpaceRef]) -> String {
+    refs.iter()
+        .map(ToString::to_string)
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+impl fmt::Display for Statement {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Statement::Route {
+                from,
+                to,
+                via,
+                avoid,
+                alternatives,
+            } => {
+                write!(f, "ROUTE FROM {from} TO {to}")?;
+                if !via.is_empty() {
+                    write!(f, " VIA {}", list(via))?;
+                }
+                if !avoid.is_empty() {
+                    write!(f, " AVOID {}", list(avoid))?;
+                }
+                if let Some(k) = alternatives {
+                    write!(f, " ALTERNATIVES {k}")?;
+                }
+                Ok(())
+            }
+            Statement::Neighbours { of, depth } => {
+                write!(f, "NEIGHBOURS OF {of}")?;
+                if let Some(d) = depth {
+                    write!(f, " DEPTH {d}")?;
+                }
+                Ok(())
+            }
+            Statement::Find {
+                kind,
+                filter,
+                order,
+                limit,
+            } => {
+                let target = match kind {
+                    None => "spaces".to_string(),
+                    Some(k) => format!("{k}s"),
+                };
+                write!(f, "FIND {target}")?;
+                if let Some(c) = filter {
+                    write!(f, " WHERE {c}")?;
+                }
+                if !order.is_empty() {
+                    let keys: Vec<String> = order
+                        .iter()
+                        .map(|k| format!("{}{}", k.field, if k.descending { " DESC" } else { "" }))
+                        .collect();
+                    write!(f, " ORDER BY {}", keys.join(", "))?;
+                }
+                if let Some(n) = limit {
+                    write!(f, " LIMIT {n}")?;
+                }
+                Ok(())
+            }
+            Statement::Locate { point } => {
+                write!(f, "LOCATE ({}, {})", number(point[0]), number(point[1]))
+            }
+            Statement::Reachable { from, within_m } => {
+                write!(f, "REACHABLE FROM {from} WITHIN {}", number(*within_m))
+            }
+            Statement::ShowMaps => f.write_str("SHOW MAPS"),
+            Statement::ShowRevisions { map: None } => f.write_str("SHOW REVISIONS"),
+            Statement::ShowRevisions { map: Some(m) } => {
+                write!(f, "SHOW REVISIONS OF {}", name_or_quoted(m))
+            }
+            Statement::Use { map, revision } => {
+                write!(f, "USE {}", name_or_quoted(map))?;
+                if let Some(r) = revision {
+                    write!(f, " AT REVISION {r}")?;
+                }
+                Ok(())
+            }
+            Statement::Name { space, name } => write!(f, "NAME {space} AS {}", quote(name)),
+            Statement::Diff { from, to } => write!(f, "DIFF {from} {to}"),
+            Statement::Explain(inner) => write!(f, "EXPLAIN {inner}"),
+        }
+    }
+}
+
+impl fmt::Display for SpaceRef {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            SpaceRef::Id { kind: None, id } => write!(f, "space {id}"),
+            SpaceRef::Id { kind: Some(k), id } => write!(f, "{k} {id}"),
+            SpaceRef::Name(n) => f.write_str(&quote(n)),
+            SpaceRef::Point(p) => write!(f, "({}, {})", number(p[0]), number(p[1])),
+        }
+    }
+}
+
+impl fmt::Display for Condition {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // Fully parenthesised binary nodes keep the printed text unambiguous.
+        match self {
+            Condition::And(a, b) => write!(f, "({a} AND {b})"),
+            Condition::Or(a, b) => write!(f, "({a} OR {b})"),
+            Condition::Not(a) => write!(f, "NOT {a}"),
+            Condition::Compare { field, op, value } => write!(f, "{field} {op} {value}"),
+        }
+    }
+}
+
+impl fmt::Display for Field {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Field::Id => f.write_str("id"),
+            Field::Kind => f.write_str("kind"),
+            Field::Name => f.write_str("name"),
+            Field::Area => f.write_str("area"),
+            Field::Degree => f.write_str("degree"),
+            Field::Width => f.write_str("width"),
+            Field::Attr(k) => write!(f, "attr.{}", name_or_quoted(k)),
+        }
+    }
+}
+
+impl fmt::Display for CompareOp {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            CompareOp::Eq => "=",
+            CompareOp::Ne => "!=",
+            CompareOp::Lt => "<",
+            CompareOp::Le => "<=",
+            CompareOp::Gt => ">",
+            CompareOp::Ge => ">=",
+            CompareOp::Like => "LIKE",
+        })
+    }
+}
+
+impl fmt::Display for Value {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Value::Number(x) => f.write_str(&number(*x)),
+            Value::Text(s) => f.write_str(&quote(s)),
+            Value::Bool(b) => f.write_str(if *b { "TRUE" } else { "FALSE" }),
+            Value::Null => f.write_str("NULL"),
+        }
+    }
+}

@@ -1,0 +1,138 @@
+//! Errors of parsing and executing queries.
+
+use std::fmt;
+
+use crate::model::SpaceId;
+use crate::route::RouteError;
+
+/// Where in the query text something went wrong: a byte range and the
+/// 1-based line and column (in characters) of its start.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Span {
+    /// Byte offset of the first byte.
+    pub offset: usize,
+    /// Length in bytes (at least 1 except at the end of input).
+    pub len: usize,
+    /// 1-based line.
+    pub line: u32,
+    /// 1-based column, in characters.
+    pub column: usize,
+}
+
+impl fmt::Display for Span {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}", self.line, self.column)
+    }
+}
+
+/// An error from a [`super::Source`]: missing map or revision, or the
+/// backend failing.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum SourceError {
+    /// No map of that name.
+    #[error("no map named '{name}'{} (see SHOW MAPS)", did_you_mean(suggestion))]
+    NoMap {
+        /// The name asked for.
+        name: String,
+        /// A close known name.
+        suggestion: Option<String>,
+    },
+    /// The map has no such revision.
+    #[error("map '{map}' has no revision {revision} (see SHOW REVISIONS OF {map})")]
+    NoRevision {
+        /// The map.
+        map: String,
+        /// The revision asked for.
+        revision: u64,
+    },
+    /// The storage backend failed.
+    #[error("storage error: {0}")]
+    Backend(Box<dyn std::error::Error + Send + Sync>),
+}
+
+fn did_you_mean(s: &Option<String>) -> String {
+    s.as_ref()
+        .map_or_else(String::new, |s| format!("; did you mean '{s}'?"))
+}
+
+/// Anything that stops a query: bad syntax, unknown names, limits, routing.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum QueryError {
+    /// The text does not parse; `span` points at the offending token.
+    #[error("{span}: {message}")]
+    Syntax {
+        /// The offending token.
+        span: Span,
+        /// What was expected and found, with a hint.
+        message: String,
+    },
+    /// No space has this name.
+    #[error("no space named '{name}'{}", did_you_mean(suggestion))]
+    UnknownName {
+        /// The name.
+        name: String,
+        /// A close existing name.
+        suggestion: Option<String>,
+    },
+    /// No space has this id.
+    #[error("no space {0} in this revision (FIND spaces lists them)")]
+    UnknownId(SpaceId),
+    /// `room 12` names a space of another kind.
+    #[error("space {id} is a {actual}, not a {expected}")]
+    WrongKind {
+        /// The id.
+        id: SpaceId,
+        /// Kind written in the query.
+        expected: String,
+        /// Kind of the space.
+        actual: String,
+    },
+    /// A point reference outside every space.
+    #[error("no space contains the point ({x}, {y}) (coordinates are metres in the map frame)")]
+    NoSpaceAt {
+        /// x in metres.
+        x: f64,
+        /// y in metres.
+        y: f64,
+    },
+    /// A statement needs a map and none is selected.
+    #[error("no map selected (run USE <map>, or SHOW MAPS to list them)")]
+    NoMapSelected,
+    /// A statement that is not implemented yet.
+    #[error("{0} is not available yet (it arrives with the diff issue)")]
+    NotAvailable(&'static str),
+    /// A comparison that cannot be evaluated.
+    #[error("cannot compare {field} with {value} (hint: {hint})")]
+    Type {
+        /// The field.
+        field: String,
+        /// The literal.
+        value: String,
+        /// What would work.
+        hint: &'static str,
+    },
+    /// The time bound ran out.
+    #[error("query exceeded its time bound of {0} ms (raise the timeout or narrow the query)")]
+    Timeout(u128),
+    /// The result is larger than the size bound.
+    #[error("result has more than {0} rows (add LIMIT or raise the row bound)")]
+    TooManyRows(usize),
+    /// Storage failed or lacks the map/revision.
+    #[error(transparent)]
+    Source(#[from] SourceError),
+    /// Routing failed (a missing route is not an error).
+    #[error(transparent)]
+    Route(#[from] RouteError),
+}
+
+impl QueryError {
+    /// The span of a syntax error.
+    pub fn span(&self) -> Option<Span> {
+        match self {
+            QueryError::Syntax { span, .. } => Some(*span),
+            _ => None,
+        }
+    }
+}

@@ -1,0 +1,217 @@
+//! Execution of the plans that read one revision: ROUTE, NEIGHBOURS, FIND,
+//! LOCATE and REACHABLE, within the time and size bounds of [`Limits`].
+
+use std::collections::VecDeque;
+use std::time::Duration;
+
+use super::error::QueryError;
+use super::filter::{field_value, matches, order_values};
+use super::index::{IndexedRevision, width_m};
+use super::plan::Plan;
+use super::result::{Cell, QueryResult, Table};
+use crate::model::{Space, SpaceId, SpaceKind};
+use crate::route::{Budget, RouteError, reachable_within, shortest_route};
+
+/// Bounds on one statement: wall-clock time and rows returned.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Limits {
+    /// Time bound per statement (default 5 s).
+    pub timeout: Duration,
+    /// Most rows (or routes) a statement may return (default 10 000).
+    pub max_rows: usize,
+}
+
+impl Default for Limits {
+    fn default() -> Limits {
+        Limits {
+            timeout: Duration::from_secs(5),
+            max_rows: 10_000,
+        }
+    }
+}
+
+fn space_cells(s: &Space) -> Vec<Cell> {
+    vec![
+        Cell::Int(s.id.0.into()),
+        Cell::Text(s.kind.to_string()),
+        s.name.clone().map_or(Cell::Null, Cell::Text),
+    ]
+}
+
+fn columns(names: &[&str]) -> Vec<String> {
+    names.iter().map(|s| (*s).to_string()).collect()
+}
+
+fn timeout(budget: &Budget) -> QueryError {
+    QueryError::Timeout(budget.limit_ms())
+}
+
+fn bounded(result: QueryResult, limits: &Limits) -> Result<QueryResult, QueryError> {
+    if result.row_count() > limits.max_rows {
+        return Err(QueryError::TooManyRows(limits.max_rows));
+    }
+    Ok(result)
+}
+
+/// Runs a plan that reads `rev`. Session-level plans (SHOW, USE, NAME,
+/// DIFF, EXPLAIN) are handled by [`super::Session`]; given here they yield
+/// a message saying so.
+pub fn execute(
+    plan: &Plan,
+    rev: &IndexedRevision,
+    limits: &Limits,
+) -> Result<QueryResult, QueryError> {
+    let budget = Budget::new(limits.timeout);
+    let result = match plan {
+        Plan::Route(request) => {
+            let routes =
+                shortest_route(&rev.graph, &rev.nrg, request, &budget).map_err(|e| match e {
+                    RouteError::Timeout(ms) => QueryError::Timeout(ms),
+                    other => QueryError::Route(other),
+                })?;
+            QueryResult::Routes(routes)
+        }
+        Plan::Neighbours { of, depth } => neighbours(rev, *of, *depth, &budget)?,
+        Plan::Find {
+            kind,
+            filter,
+            order,
+            limit,
+        } => {
+            let mut found: Vec<&Space> = Vec::new();
+            for s in rev
+                .nrg
+                .spaces()
+                .iter()
+                .filter(|s| kind.is_none_or(|k| s.kind == k))
+            {
+                if budget.check() {
+                    return Err(timeout(&budget));
+                }
+                if filter.as_ref().map_or(Ok(true), |c| matches(c, s, rev))? {
+                    found.push(s);
+                }
+            }
+            if !order.is_empty() {
+                found.sort_by(|a, b| {
+                    order
+                        .iter()
+                        .map(|k| {
+                            let o = order_values(
+                                &field_value(&k.field, a, rev),
+                                &field_value(&k.field, b, rev),
+                            );
+                            if k.descending { o.reverse() } else { o }
+                        })
+                        .find(|o| o.is_ne())
+                        .unwrap_or(std::cmp::Ordering::Equal)
+                });
+            }
+            if let Some(n) = limit {
+                found.truncate(usize::try_from(*n).unwrap_or(usize::MAX));
+            }
+            let doors = *kind == Some(SpaceKind::Door);
+            let mut names = vec!["id", "kind", "name", "area_m2", "degree"];
+            if doors {
+                names.push("width_m");
+            }
+            let rows = found
+                .into_iter()
+                .map(|s| {
+                    let mut row = space_cells(s);
+                    row.push(Cell::Float(s.area_m2));
+                    row.push(Cell::Int(rev.graph.degree(s.id) as i64));
+                    if doors {
+                        row.push(width_m(s).map_or(Cell::Null, Cell::Float));
+                    }
+                    row
+                })
+                .collect();
+            QueryResult::Table(Table {
+                columns: columns(&names),
+                rows,
+            })
+        }
+        Plan::Locate(p) => {
+            let rows = rev
+                .locate(*p)
+                .map(|s| {
+                    let mut row = space_cells(s);
+                    row.push(Cell::Float(s.area_m2));
+                    row
+                })
+                .into_iter()
+                .collect();
+            QueryResult::Table(Table {
+                columns: columns(&["id", "kind", "name", "area_m2"]),
+                rows,
+            })
+        }
+        Plan::Reachable { from, within_m } => {
+            let reach =
+                reachable_within(&rev.graph, *from, *within_m, &budget).map_err(|e| match e {
+                    RouteError::Timeout(ms) => QueryError::Timeout(ms),
+                    other => QueryError::Route(other),
+                })?;
+            let rows = reach
+                .into_iter()
+                .filter_map(|(id, d)| rev.nrg.space(id).map(|s| (s, d)))
+                .map(|(s, d)| {
+                    let mut row = space_cells(s);
+                    row.push(Cell::Float(d));
+                    row
+                })
+                .collect();
+            QueryResult::Table(Table {
+                columns: columns(&["id", "kind", "name", "distance_m"]),
+                rows,
+            })
+        }
+        other => QueryResult::Message(format!("{other} is run by the session")),
+    };
+    bounded(result, limits)
+}
+
+/// Spaces within `depth` hops of `of` (breadth first), without `of` itself.
+fn neighbours(
+    rev: &IndexedRevision,
+    of: SpaceId,
+    depth: u32,
+    budget: &Budget,
+) -> Result<QueryResult, QueryError> {
+    let start = rev.graph.node(of).ok_or(RouteError::NotNavigable(of))?;
+    let mut seen = vec![u32::MAX; rev.graph.len()];
+    seen[start as usize] = 0;
+    let mut queue = VecDeque::from([start]);
+    let mut found = Vec::new();
+    while let Some(n) = queue.pop_front() {
+        if budget.check() {
+            return Err(timeout(budget));
+        }
+        let d = seen[n as usize];
+        if d >= depth {
+            continue;
+        }
+        for &(m, _) in rev.graph.edges(n) {
+            if seen[m as usize] == u32::MAX {
+                seen[m as usize] = d + 1;
+                found.push((d + 1, rev.graph.space(m)));
+                queue.push_back(m);
+            }
+        }
+    }
+    found.sort();
+    let rows = found
+        .into_iter()
+        .filter_map(|(d, id)| rev.nrg.space(id).map(|s| (d, s)))
+        .map(|(d, s)| {
+            let mut row = space_cells(s);
+            row.push(Cell::Int(d.into()));
+            row
+        })
+        .collect();
+    Ok(QueryResult::Table(Table {
+        columns: columns(&["id", "kind", "name", "depth"]),
+        rows,
+    }))
+}

@@ -1,0 +1,169 @@
+//! A loaded revision with the indexes queries need: the route graph, an
+//! R*-tree of polygon envelopes (for LOCATE and point references) and names.
+
+use std::collections::HashMap;
+
+use geo::MinimumRotatedRect;
+use rstar::RTree;
+use rstar::primitives::{GeomWithData, Rectangle};
+
+use super::ast::SpaceRef;
+use super::error::QueryError;
+use super::suggest::suggest;
+use crate::model::{Nrg, Point, Space, SpaceId, point_in_ring};
+use crate::route::RouteGraph;
+
+type Envelope = GeomWithData<Rectangle<[f64; 2]>, usize>;
+
+/// One revision of one map, indexed. Built once when a revision is selected.
+#[derive(Debug)]
+pub struct IndexedRevision {
+    /// The map's name.
+    pub map: String,
+    /// The revision number.
+    pub revision: u64,
+    /// The model.
+    pub nrg: Nrg,
+    /// Navigable adjacency for routing.
+    pub graph: RouteGraph,
+    envelopes: RTree<Envelope>,
+    names: HashMap<String, Vec<SpaceId>>,
+}
+
+impl IndexedRevision {
+    /// Indexes `nrg` as `map` at `revision`.
+    pub fn new(map: &str, revision: u64, nrg: Nrg) -> IndexedRevision {
+        let graph = RouteGraph::new(&nrg);
+        let envelopes = nrg
+            .spaces()
+            .iter()
+            .enumerate()
+            .filter(|(_, s)| !s.polygon.is_empty())
+            .map(|(i, s)| {
+                let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
+                for p in &s.polygon {
+                    for k in 0..2 {
+                        lo[k] = lo[k].min(p[k]);
+                        hi[k] = hi[k].max(p[k]);
+                    }
+                }
+                GeomWithData::new(Rectangle::from_corners(lo, hi), i)
+            })
+            .collect();
+        let mut names: HashMap<String, Vec<SpaceId>> = HashMap::new();
+        for s in nrg.spaces() {
+            if let Some(n) = &s.name {
+                names.entry(n.to_lowercase()).or_default().push(s.id);
+            }
+        }
+        IndexedRevision {
+            map: map.to_string(),
+            revision,
+            nrg,
+            graph,
+            envelopes: RTree::bulk_load(envelopes),
+            names,
+        }
+    }
+
+    /// The space containing `p` (R*-tree on envelopes, then point-in-polygon
+    /// with holes); the smallest by area when several overlap.
+    pub fn locate(&self, p: Point) -> Option<&Space> {
+        self.envelopes
+            .locate_all_at_point(&p)
+            .filter_map(|e| self.nrg.spaces().get(e.data))
+            .filter(|s| {
+                point_in_ring(p, &s.polygon) && !s.holes.iter().any(|h| point_in_ring(p, h))
+            })
+            .min_by(|a, b| a.area_m2.total_cmp(&b.area_m2).then(a.id.cmp(&b.id)))
+    }
+
+    /// Resolves a reference to a space id, with helpful errors.
+    pub fn resolve(&self, r: &SpaceRef) -> Result<SpaceId, QueryError> {
+        match r {
+            SpaceRef::Id { kind, id } => {
+                let s = self.nrg.space(*id).ok_or(QueryError::UnknownId(*id))?;
+                match kind {
+                    Some(k) if *k != s.kind => Err(QueryError::WrongKind {
+                        id: *id,
+                        expected: k.to_string(),
+                        actual: s.kind.to_string(),
+                    }),
+                    _ => Ok(*id),
+                }
+            }
+            SpaceRef::Name(name) => match self.names.get(&name.to_lowercase()) {
+                Some(ids) if !ids.is_empty() => Ok(ids[0]),
+                _ => Err(QueryError::UnknownName {
+                    name: name.clone(),
+                    suggestion: suggest(
+                        name,
+                        self.nrg.spaces().iter().filter_map(|s| s.name.as_deref()),
+                    )
+                    .map(str::to_string),
+                }),
+            },
+            SpaceRef::Point(p) => self
+                .locate(*p)
+                .map(|s| s.id)
+                .ok_or(QueryError::NoSpaceAt { x: p[0], y: p[1] }),
+        }
+    }
+
+    /// The label of a space ("Kitchen", "door 7"), or "space N" if missing.
+    pub fn label(&self, id: SpaceId) -> String {
+        self.nrg
+            .space(id)
+            .map_or_else(|| format!("space {id}"), Space::label)
+    }
+}
+
+/// A door's width in metres: the `width_m` attribute when it is a number,
+/// else the shorter side of the polygon's minimum rotated bounding
+/// rectangle. Defined for every space; FIND shows it for doors.
+pub fn width_m(space: &Space) -> Option<f64> {
+    if let Some(w) = space.attributes.get("width_m").and_then(|v| v.as_f64()) {
+        return Some(w);
+    }
+    let coords: Vec<geo::Coord<f64>> = space
+        .polygon
+        .iter()
+        .map(|p| geo::Coord { x: p[0], y: p[1] })
+        .collect();
+    let rect = geo::LineString::new(coords).minimum_rotated_rect()?;
+    let c: Vec<_> = rect.exterior().coords().copied().collect();
+    let side = |a: usize, b: usize| {
+        c.get(a)
+            .zip(c.get(b))
+            .map(|(p, q)| (p.x - q.x).hypot(p.y - q.y))
+    };
+    Some(side(0, 1)?.min(side(1, 2)?))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::query::demo;
+
+    #[test]
+    fn locate_and_resolve() {
+        let idx = IndexedRevision::new("demo", 1, demo::building(3));
+        let kitchen = idx.resolve(&SpaceRef::Name("kitchen".into())).unwrap();
+        assert_eq!(idx.locate([2.0, 9.0]).map(|s| s.id), Some(kitchen));
+        assert!(idx.locate([-5.0, 9.0]).is_none());
+        let e = idx.resolve(&SpaceRef::Name("Kitchn".into())).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "no space named 'Kitchn'; did you mean 'Kitchen'?"
+        );
+    }
+
+    #[test]
+    fn width_prefers_the_attribute() {
+        let nrg = demo::building(2);
+        let d0 = nrg.space(SpaceId(2)).unwrap();
+        assert_eq!(width_m(d0), Some(0.9));
+        let d1 = nrg.space(SpaceId(7)).unwrap();
+        assert!((width_m(d1).unwrap() - 0.3).abs() < 1e-9);
+    }
+}

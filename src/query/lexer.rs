@@ -1,0 +1,201 @@
+//! Lexing with nom 8 over a `nom_locate` span: words, numbers, strings and
+//! punctuation, each with its byte span, line and column. `--` starts a
+//! comment to the end of the line. Keywords are plain words here; the
+//! parser compares them case-insensitively.
+
+use nom::branch::alt;
+use nom::bytes::complete::{tag, take_while, take_while1};
+use nom::character::complete::{char, digit1, multispace1, one_of};
+use nom::combinator::{opt, recognize};
+use nom::{IResult, Parser};
+use nom_locate::LocatedSpan;
+
+use super::error::{QueryError, Span};
+
+type Input<'a> = LocatedSpan<&'a str>;
+
+/// What a token is.
+#[derive(Debug, Clone, PartialEq)]
+pub enum TokenKind {
+    /// An identifier or keyword (letters, digits, `_`, inner `-`).
+    Word,
+    /// A number (`12`, `-3.5`, `1e3`).
+    Number,
+    /// A quoted string, unescaped.
+    Str(String),
+    /// Punctuation: `( ) , ; . = != <> < <= > >=`.
+    Punct,
+    /// End of input.
+    Eof,
+}
+
+/// One token with its text (as written) and position.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Token {
+    /// What it is.
+    pub kind: TokenKind,
+    /// The text as written.
+    pub text: String,
+    /// Where it is.
+    pub span: Span,
+}
+
+fn span_of(start: &Input<'_>, len: usize) -> Span {
+    Span {
+        offset: start.location_offset(),
+        len,
+        line: start.location_line(),
+        column: start.get_utf8_column(),
+    }
+}
+
+fn skip(i: Input<'_>) -> IResult<Input<'_>, ()> {
+    let (mut i, _) = opt(multispace1).parse(i)?;
+    loop {
+        let (rest, comment) = opt(recognize((tag("--"), take_while(|c| c != '\n')))).parse(i)?;
+        let (rest, _) = opt(multispace1).parse(rest)?;
+        if comment.is_none() {
+            return Ok((rest, ()));
+        }
+        i = rest;
+    }
+}
+
+fn word(i: Input<'_>) -> IResult<Input<'_>, Input<'_>> {
+    recognize((
+        take_while1(|c: char| c.is_alphabetic() || c == '_'),
+        take_while(|c: char| c.is_alphanumeric() || c == '_' || c == '-'),
+    ))
+    .parse(i)
+}
+
+fn number(i: Input<'_>) -> IResult<Input<'_>, Input<'_>> {
+    recognize((
+        opt(char('-')),
+        digit1,
+        opt((char('.'), digit1)),
+        opt((one_of("eE"), opt(one_of("+-")), digit1)),
+    ))
+    .parse(i)
+}
+
+fn punct(i: Input<'_>) -> IResult<Input<'_>, Input<'_>> {
+    alt((
+        tag("!="),
+        tag("<>"),
+        tag("<="),
+        tag(">="),
+        recognize(one_of("(),;.=<>")),
+    ))
+    .parse(i)
+}
+
+/// A quoted string ('…' or "…", `\` escapes the next character).
+/// `Ok(None)` at an unterminated string.
+fn string(i: Input<'_>) -> IResult<Input<'_>, Option<(String, usize)>> {
+    let (rest, quote) = one_of("\"'").parse(i)?;
+    let mut value = String::new();
+    let mut chars = rest.fragment().char_indices();
+    while let Some((at, c)) = chars.next() {
+        if c == quote {
+            let len = 1 + at + 1;
+            let (rest, _) = nom::bytes::complete::take(at + 1).parse(rest)?;
+            return Ok((rest, Some((value, len))));
+        }
+        if c == '\\' {
+            match chars.next() {
+                Some((_, e)) => value.push(e),
+                None => break,
+            }
+        } else {
+            value.push(c);
+        }
+    }
+    Ok((i, None))
+}
+
+/// Splits `text` into tokens, ending with an `Eof` token.
+///
+/// ```
+/// let tokens = nrgdb::query::lex("FIND rooms -- all\nLIMIT 3;").unwrap();
+/// let texts: Vec<_> = tokens.iter().map(|t| t.text.as_str()).collect();
+/// assert_eq!(texts, ["FIND", "rooms", "LIMIT", "3", ";", ""]);
+/// ```
+pub fn lex(text: &str) -> Result<Vec<Token>, QueryError> {
+    let mut tokens = Vec::new();
+    let mut input = Input::new(text);
+    loop {
+        let Ok((rest, ())) = skip(input) else {
+            return Err(bad_char(&input));
+        };
+        input = rest;
+        if input.fragment().is_empty() {
+            tokens.push(Token {
+                kind: TokenKind::Eof,
+                text: String::new(),
+                span: span_of(&input, 0),
+            });
+            return Ok(tokens);
+        }
+        let start = input;
+        let (rest, kind, text) = if let Ok((rest, t)) = number(input) {
+            (rest, TokenKind::Number, t.fragment().to_string())
+        } else if let Ok((rest, t)) = word(input) {
+            (rest, TokenKind::Word, t.fragment().to_string())
+        } else if let Ok((rest, t)) = punct(input) {
+            (rest, TokenKind::Punct, t.fragment().to_string())
+        } else if let Ok((rest, s)) = string(input) {
+            let Some((value, len)) = s else {
+                return Err(QueryError::Syntax {
+                    span: span_of(&start, start.fragment().len()),
+                    message: "unterminated string (close it with the same quote)".into(),
+                });
+            };
+            (
+                rest,
+                TokenKind::Str(value),
+                start.fragment()[..len].to_string(),
+            )
+        } else {
+            return Err(bad_char(&input));
+        };
+        tokens.push(Token {
+            kind,
+            span: span_of(&start, text.len()),
+            text,
+        });
+        input = rest;
+    }
+}
+
+fn bad_char(input: &Input<'_>) -> QueryError {
+    let c = input.fragment().chars().next().unwrap_or(' ');
+    QueryError::Syntax {
+        span: span_of(input, c.len_utf8()),
+        message: format!(
+            "unexpected character '{c}' (strings need quotes, statements end with ';')"
+        ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn positions_and_strings() {
+        let t = lex("use 'a\\'b'\n  (1.5, -2e3)").unwrap();
+        assert_eq!(t[1].kind, TokenKind::Str("a'b".into()));
+        assert_eq!(t[2].span.line, 2);
+        assert_eq!(t[2].span.column, 3);
+        assert_eq!(t[5].text, "-2e3");
+    }
+
+    #[test]
+    fn errors_point_at_the_character() {
+        let e = lex("FIND rooms WHERE name = \"x").unwrap_err();
+        assert_eq!(e.span().unwrap().offset, 24);
+        let e = lex("FIND @").unwrap_err();
+        assert_eq!(e.span().unwrap().column, 6);
+    }
+}

@@ -1,0 +1,52 @@
+//! The query language: text → tokens ([`lex`], nom + nom_locate) →
+//! [`Statement`]s ([`parse`]) → [`Plan`] (references resolved) → execution
+//! over a [`Source`] → [`QueryResult`] rendered as a table, JSON or CSV.
+//! [`Session`] ties these together (line in, text out).
+//!
+//! Owns the AST, the parser, the planner, the executor, the [`Source`]
+//! trait and [`MemorySource`]. Uses `model` and `route`. Must not use
+//! `store` (it implements [`Source`]), the server or the terminal.
+//!
+//! Statements: `ROUTE FROM a TO b [VIA c, …] [AVOID d, …] [ALTERNATIVES k]`,
+//! `NEIGHBOURS OF a [DEPTH n]`, `FIND rooms|corridors|doors|others|spaces
+//! [WHERE …] [ORDER BY …] [LIMIT n]`, `LOCATE (x, y)`, `REACHABLE FROM a
+//! WITHIN d`, `SHOW MAPS`, `SHOW REVISIONS [OF m]`, `USE m [AT REVISION n]`,
+//! `NAME a AS "…"`, `DIFF r1 r2` (not available yet), `EXPLAIN <statement>`.
+//! A reference is an id (`12`, `space 12`, `room 12`), a name
+//! (`"Kitchen"`, case-insensitive) or a point (`(3.5, 7.25)`, metres).
+//!
+//! WHERE fields: `id`, `kind`, `name` (the label when unnamed), `area` (m²),
+//! `degree` (navigable connections), `width` (metres: the `width_m`
+//! attribute when numeric, else the shorter side of the polygon's minimum
+//! rotated bounding rectangle) and `attr.key`; operators `= != < <= > >=
+//! LIKE`, combined with `AND`, `OR`, `NOT` and parentheses.
+
+pub mod demo;
+
+mod ast;
+mod error;
+mod exec;
+mod filter;
+mod index;
+mod lexer;
+mod parser;
+mod plan;
+mod result;
+mod session;
+mod source;
+mod suggest;
+
+pub use ast::{
+    CompareOp, Condition, Field, OrderKey, SpaceRef, Statement, Value, is_identifier, quote,
+};
+pub use error::{QueryError, SourceError, Span};
+pub use exec::{Limits, execute};
+pub use filter::like;
+pub use index::{IndexedRevision, width_m};
+pub use lexer::{Token, TokenKind, lex};
+pub use parser::{KEYWORDS, STATEMENT_KEYWORDS, parse, parse_statement};
+pub use plan::{Plan, plan};
+pub use result::{Cell, Format, QueryResult, Table};
+pub use session::Session;
+pub use source::{MapInfo, MemorySource, RevisionInfo, Source};
+pub use suggest::{edit_distance, suggest};

@@ -1,0 +1,187 @@
+//! A query session: a [`Source`], the selected map revision (indexed) and
+//! limits. Text in, results or rendered text out; the REPL, the CLI and the
+//! golden tests all drive this.
+
+use super::ast::Statement;
+use super::error::QueryError;
+use super::exec::{Limits, execute};
+use super::index::IndexedRevision;
+use super::parser::parse;
+use super::plan::{Plan, plan};
+use super::result::{Cell, Format, QueryResult, Table};
+use super::source::Source;
+
+/// A session over a source.
+///
+/// ```
+/// use nrgdb::query::{Format, MemorySource, Session, demo};
+/// let mut source = MemorySource::new();
+/// source.insert("demo", demo::building(3));
+/// let mut session = Session::with_default_map(source).unwrap();
+/// let text = session.run("ROUTE FROM \"Kitchen\" TO \"Library\";", Format::Table).unwrap();
+/// assert!(text.starts_with("route 1: "));
+/// ```
+pub struct Session<S: Source> {
+    source: S,
+    current: Option<IndexedRevision>,
+    limits: Limits,
+}
+
+impl<S: Source> Session<S> {
+    /// A session with no map selected and default limits.
+    pub fn new(source: S) -> Session<S> {
+        Session {
+            source,
+            current: None,
+            limits: Limits::default(),
+        }
+    }
+
+    /// A session on the latest revision of the first map (by name), if any.
+    pub fn with_default_map(source: S) -> Result<Session<S>, QueryError> {
+        let mut session = Session::new(source);
+        if let Some(first) = session.source.maps()?.into_iter().next() {
+            session.use_map(&first.name, None)?;
+        }
+        Ok(session)
+    }
+
+    /// Replaces the limits.
+    pub fn set_limits(&mut self, limits: Limits) {
+        self.limits = limits;
+    }
+
+    /// The limits in force.
+    pub fn limits(&self) -> Limits {
+        self.limits
+    }
+
+    /// The source.
+    pub fn source(&self) -> &S {
+        &self.source
+    }
+
+    /// The selected revision, indexed.
+    pub fn current(&self) -> Option<&IndexedRevision> {
+        self.current.as_ref()
+    }
+
+    /// Selects `map` at `revision` (latest when `None`); returns a message.
+    pub fn use_map(&mut self, map: &str, revision: Option<u64>) -> Result<String, QueryError> {
+        let revision = match revision {
+            Some(r) => r,
+            None => self.source.revisions(map)?.last().map_or(1, |r| r.revision),
+        };
+        let nrg = self.source.load(map, revision)?;
+        let rev = IndexedRevision::new(map, revision, nrg);
+        let message = format!(
+            "using map '{map}' at revision {revision} ({} spaces, {} connections)",
+            rev.nrg.spaces().len(),
+            rev.nrg.connections().len()
+        );
+        self.current = Some(rev);
+        Ok(message)
+    }
+
+    /// Plans a statement against the selected revision.
+    pub fn plan(&self, statement: &Statement) -> Result<Plan, QueryError> {
+        plan(
+            statement,
+            self.current.as_ref(),
+            self.current.as_ref().map(|c| c.map.as_str()),
+        )
+    }
+
+    /// Plans and runs one statement.
+    pub fn execute_statement(&mut self, statement: &Statement) -> Result<QueryResult, QueryError> {
+        let planned = self.plan(statement)?;
+        self.execute_plan(&planned)
+    }
+
+    fn execute_plan(&mut self, planned: &Plan) -> Result<QueryResult, QueryError> {
+        match planned {
+            Plan::Explain(inner) => Ok(QueryResult::Plan(inner.to_string())),
+            Plan::ShowMaps => {
+                let rows = self
+                    .source
+                    .maps()?
+                    .into_iter()
+                    .map(|m| {
+                        vec![
+                            Cell::Text(m.name),
+                            Cell::Int(m.revisions as i64),
+                            Cell::Int(m.latest as i64),
+                        ]
+                    })
+                    .collect();
+                Ok(table(&["map", "revisions", "latest"], rows))
+            }
+            Plan::ShowRevisions(map) => {
+                let rows = self
+                    .source
+                    .revisions(map)?
+                    .into_iter()
+                    .map(|r| {
+                        vec![
+                            Cell::Int(r.revision as i64),
+                            Cell::Int(r.spaces as i64),
+                            Cell::Int(r.connections as i64),
+                            Cell::Text(r.note),
+                        ]
+                    })
+                    .collect();
+                Ok(table(&["revision", "spaces", "connections", "note"], rows))
+            }
+            Plan::Use(map, revision) => Ok(QueryResult::Message(self.use_map(map, *revision)?)),
+            Plan::Name(id, name) => {
+                let current = self.current.as_ref().ok_or(QueryError::NoMapSelected)?;
+                let (map, old) = (current.map.clone(), current.revision);
+                let revision = self.source.rename_space(&map, old, *id, name)?;
+                self.use_map(&map, Some(revision))?;
+                Ok(QueryResult::Message(format!(
+                    "named space {id} '{name}' in map '{map}': revision {revision} (was {old})"
+                )))
+            }
+            Plan::Diff(..) => Err(QueryError::NotAvailable("DIFF")),
+            data => {
+                let current = self.current.as_ref().ok_or(QueryError::NoMapSelected)?;
+                execute(data, current, &self.limits)
+            }
+        }
+    }
+
+    /// Parses `text` and runs each statement in order. A syntax error fails
+    /// the whole text (nothing runs); a statement's own error is kept in
+    /// its slot and the following statements still run.
+    pub fn execute(
+        &mut self,
+        text: &str,
+    ) -> Result<Vec<Result<QueryResult, QueryError>>, QueryError> {
+        let statements = parse(text)?;
+        Ok(statements
+            .iter()
+            .map(|s| self.execute_statement(s))
+            .collect())
+    }
+
+    /// Line in, text out: runs `text` and renders every result in
+    /// `format`, a statement's error as `error: …`. Syntax errors are
+    /// returned so the caller can point at the token.
+    pub fn run(&mut self, text: &str, format: Format) -> Result<String, QueryError> {
+        let mut out = String::new();
+        for result in self.execute(text)? {
+            match result {
+                Ok(r) => out.push_str(&r.render(format)),
+                Err(e) => out.push_str(&format!("error: {e}\n")),
+            }
+        }
+        Ok(out)
+    }
+}
+
+fn table(names: &[&str], rows: Vec<Vec<Cell>>) -> QueryResult {
+    QueryResult::Table(Table {
+        columns: names.iter().map(|s| (*s).to_string()).collect(),
+        rows,
+    })
+}

@@ -1,0 +1,179 @@
+//! The storage the executor reads: the [`Source`] trait and
+//! [`MemorySource`], an in-memory implementation for tests and model files.
+
+use std::collections::BTreeMap;
+
+use super::error::SourceError;
+use super::suggest::suggest;
+use crate::model::{Nrg, SpaceId};
+
+/// A map and how many revisions it has.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct MapInfo {
+    /// The map's name.
+    pub name: String,
+    /// Number of revisions.
+    pub revisions: usize,
+    /// Newest revision number.
+    pub latest: u64,
+}
+
+/// One revision of a map.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct RevisionInfo {
+    /// Revision number (starting at 1, increasing).
+    pub revision: u64,
+    /// Number of spaces.
+    pub spaces: usize,
+    /// Number of connections.
+    pub connections: usize,
+    /// A note saying where it came from ("imported from willow.yaml").
+    pub note: String,
+}
+
+/// What the query executor needs from storage. `store::Store` implements
+/// it for SQLite; [`MemorySource`] holds maps in memory.
+///
+/// Revisions are numbered from 1 per map and only grow; a revision's model
+/// never changes once written. Errors use [`SourceError`]: `NoMap` /
+/// `NoRevision` for names and numbers that do not exist (with a suggestion
+/// when cheap), `Backend` for anything else.
+pub trait Source {
+    /// Every map, sorted by name.
+    fn maps(&self) -> Result<Vec<MapInfo>, SourceError>;
+    /// The revisions of `map`, oldest first.
+    fn revisions(&self, map: &str) -> Result<Vec<RevisionInfo>, SourceError>;
+    /// The model of one revision.
+    fn load(&self, map: &str, revision: u64) -> Result<Nrg, SourceError>;
+    /// Gives space `id` of `map` at `revision` the name `name`, writing a new
+    /// revision (whose model is the old one with that change) and returning
+    /// its number. The caller has checked that the space exists.
+    fn rename_space(
+        &mut self,
+        map: &str,
+        revision: u64,
+        id: SpaceId,
+        name: &str,
+    ) -> Result<u64, SourceError>;
+}
+
+/// Maps held in memory: name → revisions (revision `n` at index `n - 1`).
+///
+/// ```
+/// use nrgdb::query::{MemorySource, Source, demo};
+/// let mut source = MemorySource::new();
+/// source.insert("demo", demo::building(2));
+/// assert_eq!(source.maps().unwrap()[0].latest, 1);
+/// ```
+#[derive(Debug, Clone, Default)]
+pub struct MemorySource {
+    maps: BTreeMap<String, Vec<(Nrg, String)>>,
+}
+
+impl MemorySource {
+    /// An empty source.
+    pub fn new() -> MemorySource {
+        MemorySource::default()
+    }
+
+    /// Adds `nrg` as a new revision of `map` (creating the map); returns the
+    /// revision number.
+    pub fn insert(&mut self, map: &str, nrg: Nrg) -> u64 {
+        self.insert_with_note(map, nrg, "inserted")
+    }
+
+    /// Like [`MemorySource::insert`] with a note.
+    pub fn insert_with_note(&mut self, map: &str, nrg: Nrg, note: &str) -> u64 {
+        let revisions = self.maps.entry(map.to_string()).or_default();
+        revisions.push((nrg, note.to_string()));
+        revisions.len() as u64
+    }
+
+    fn map(&self, map: &str) -> Result<&Vec<(Nrg, String)>, SourceError> {
+        self.maps.get(map).ok_or_else(|| SourceError::NoMap {
+            name: map.to_string(),
+            suggestion: suggest(map, self.maps.keys().map(String::as_str)).map(str::to_string),
+        })
+    }
+
+    fn revision(&self, map: &str, revision: u64) -> Result<&Nrg, SourceError> {
+        let revisions = self.map(map)?;
+        revision
+            .checked_sub(1)
+            .and_then(|i| revisions.get(usize::try_from(i).ok()?))
+            .map(|(nrg, _)| nrg)
+            .ok_or_else(|| SourceError::NoRevision {
+                map: map.to_string(),
+                revision,
+            })
+    }
+}
+
+impl Source for MemorySource {
+    fn maps(&self) -> Result<Vec<MapInfo>, SourceError> {
+        Ok(self
+            .maps
+            .iter()
+            .map(|(name, revs)| MapInfo {
+                name: name.clone(),
+                revisions: revs.len(),
+                latest: revs.len() as u64,
+            })
+            .collect())
+    }
+
+    fn revisions(&self, map: &str) -> Result<Vec<RevisionInfo>, SourceError> {
+        Ok(self
+            .map(map)?
+            .iter()
+            .enumerate()
+            .map(|(i, (nrg, note))| RevisionInfo {
+                revision: i as u64 + 1,
+                spaces: nrg.spaces().len(),
+                connections: nrg.connections().len(),
+                note: note.clone(),
+            })
+            .collect())
+    }
+
+    fn load(&self, map: &str, revision: u64) -> Result<Nrg, SourceError> {
+        self.revision(map, revision).cloned()
+    }
+
+    fn rename_space(
+        &mut self,
+        map: &str,
+        revision: u64,
+        id: SpaceId,
+        name: &str,
+    ) -> Result<u64, SourceError> {
+        let (mut spaces, connections) = self.revision(map, revision)?.clone().into_parts();
+        for s in spaces.iter_mut().filter(|s| s.id == id) {
+            s.name = Some(name.to_string());
+        }
+        let nrg = Nrg::new(spaces, connections).map_err(|e| SourceError::Backend(Box::new(e)))?;
+        let note = format!("renamed space {id} to '{name}' (from revision {revision})");
+        Ok(self.insert_with_note(map, nrg, &note))
+    }
+}
+
+impl<S: Source + ?Sized> Source for Box<S> {
+    fn maps(&self) -> Result<Vec<MapInfo>, SourceError> {
+        (**self).maps()
+    }
+    fn revisions(&self, map: &str) -> Result<Vec<RevisionInfo>, SourceError> {
+        (**self).revisions(map)
+    }
+    fn load(&self, map: &str, revision: u64) -> Result<Nrg, SourceError> {
+        (**self).load(map, revision)
+    }
+    fn rename_space(
+        &mut self,
+        map: &str,
+        revision: u64,
+        id: SpaceId,
+        name: &str,
+    ) -> Result<u64, SourceError> {
+        (**self).rename_space(map, revision, id, name)
+    }
+}

@@ -1,0 +1,258 @@
+//! Every statement of the query language on the demo building.
+
+use nrgdb::model::{SpaceId, SpaceKind};
+use nrgdb::query::{Cell, Format, Limits, MemorySource, QueryError, QueryResult, Session, demo};
+
+fn session(columns: usize) -> Session<MemorySource> {
+    let mut source = MemorySource::new();
+    source.insert("demo", demo::building(columns));
+    Session::with_default_map(source).unwrap()
+}
+
+fn one(s: &mut Session<MemorySource>, text: &str) -> Result<QueryResult, QueryError> {
+    let mut all = s.execute(text)?;
+    assert_eq!(all.len(), 1, "{text}");
+    all.remove(0)
+}
+
+fn ids(r: &QueryResult) -> Vec<i64> {
+    let QueryResult::Table(t) = r else {
+        panic!("not a table: {r:?}")
+    };
+    t.rows
+        .iter()
+        .map(|row| match row[0] {
+            Cell::Int(i) => i,
+            _ => panic!("id column"),
+        })
+        .collect()
+}
+
+#[test]
+fn route_between_names_passes_their_doors() {
+    let mut s = session(6);
+    let QueryResult::Routes(r) = one(&mut s, "ROUTE FROM \"Kitchen\" TO \"Library\"").unwrap()
+    else {
+        panic!()
+    };
+    // Kitchen 3 → door 2 → corridor 1 → door 4 → Library 5.
+    assert_eq!(r[0].spaces, [3, 2, 1, 4, 5].map(SpaceId));
+    assert_eq!(r[0].doors, [2, 4].map(SpaceId));
+    assert_eq!(
+        r[0].steps[0],
+        "leave Kitchen through door 2 into corridor 1"
+    );
+    assert_eq!(r[0].steps.last().unwrap(), "arrive at Library");
+    let expected: f64 = [(3, 2), (2, 1), (1, 4), (4, 5)]
+        .iter()
+        .map(|(a, b)| {
+            s.current()
+                .unwrap()
+                .nrg
+                .connection(SpaceId(*a), SpaceId(*b))
+                .unwrap()
+                .length_m
+        })
+        .sum();
+    assert!((r[0].length_m - expected).abs() < 1e-9);
+    assert!(
+        (r[0].waypoints[0][0] - 2.0).abs() < 1e-9 && (r[0].waypoints[0][1] - 9.15).abs() < 1e-9
+    );
+}
+
+#[test]
+fn route_via_avoid_and_alternatives() {
+    let mut s = session(6);
+    let QueryResult::Routes(r) = one(&mut s, "ROUTE FROM 3 TO 5 VIA room 13").unwrap() else {
+        panic!()
+    };
+    assert!(r[0].spaces.contains(&SpaceId(13)));
+    let QueryResult::Routes(r) =
+        one(&mut s, "ROUTE FROM \"Kitchen\" TO \"Lounge\" AVOID door 12").unwrap()
+    else {
+        panic!()
+    };
+    assert!(!r[0].spaces.contains(&SpaceId(12)) && r[0].spaces.contains(&SpaceId(8)));
+    let QueryResult::Routes(r) = one(
+        &mut s,
+        "ROUTE FROM \"Kitchen\" TO \"Lounge\" ALTERNATIVES 3",
+    )
+    .unwrap() else {
+        panic!()
+    };
+    assert_eq!(r.len(), 2, "exactly two loopless routes reach the Lounge");
+    assert!(r[0].length_m <= r[1].length_m);
+    let none = one(&mut s, "ROUTE FROM \"Kitchen\" TO \"Library\" AVOID door 2").unwrap();
+    assert_eq!(none, QueryResult::Routes(vec![]));
+    assert_eq!(none.render(Format::Table), "no route\n");
+}
+
+#[test]
+fn route_errors_are_clear() {
+    let mut s = session(3);
+    let e = one(&mut s, "ROUTE FROM \"Kitchn\" TO 5")
+        .unwrap_err()
+        .to_string();
+    assert_eq!(e, "no space named 'Kitchn'; did you mean 'Kitchen'?");
+    let e = one(&mut s, "ROUTE FROM room 2 TO 5")
+        .unwrap_err()
+        .to_string();
+    assert_eq!(e, "space 2 is a door, not a room");
+    let e = one(&mut s, "ROUTE FROM 999 TO 5").unwrap_err().to_string();
+    assert!(e.contains("no space 999"), "{e}");
+    let e = one(&mut s, "ROUTE FROM (-50, 0) TO 5")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("no space contains the point"), "{e}");
+    let e = one(&mut s, "ROUTE FROM 3 TO \"Shaft\"")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("not navigable"), "{e}");
+}
+
+#[test]
+fn neighbours_by_depth() {
+    let mut s = session(4);
+    assert_eq!(ids(&one(&mut s, "NEIGHBOURS OF \"Kitchen\"").unwrap()), [2]);
+    assert_eq!(ids(&one(&mut s, "neighbors of 3 depth 2").unwrap()), [2, 1]);
+    let three = ids(&one(&mut s, "NEIGHBOURS OF 3 DEPTH 3").unwrap());
+    assert_eq!(three, [2, 1, 4, 6]);
+}
+
+#[test]
+fn find_filters_sorts_and_limits() {
+    let mut s = session(4);
+    let rooms = ids(&one(&mut s, "FIND rooms").unwrap());
+    assert_eq!(rooms.len(), 8);
+    let named = ids(&one(&mut s, "FIND rooms WHERE name LIKE 'L%' ORDER BY id DESC").unwrap());
+    assert_eq!(named, [13, 5]);
+    let limited = ids(&one(
+        &mut s,
+        "FIND spaces WHERE kind != room ORDER BY area DESC, id LIMIT 2",
+    )
+    .unwrap());
+    assert_eq!(limited, [1, 6]);
+    let wide = ids(&one(&mut s, "FIND doors WHERE width > 1").unwrap());
+    assert_eq!(wide, [4, 14]);
+    let seats = ids(&one(&mut s, "FIND rooms WHERE attr.seats = 4").unwrap());
+    assert_eq!(seats, [10, 13]);
+    let missing = ids(&one(&mut s, "FIND doors WHERE attr.width_m = NULL").unwrap());
+    assert_eq!(missing, [7, 9, 17, 19, 21]);
+    let hub = ids(&one(&mut s, "FIND corridors WHERE degree >= 4 AND NOT id = 1").unwrap());
+    assert_eq!(hub, [6, 11]);
+    let e = one(&mut s, "FIND rooms WHERE area = \"big\"")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("cannot compare area"), "{e}");
+    let others = ids(&one(&mut s, "FIND others").unwrap());
+    assert_eq!(others, [22]);
+}
+
+#[test]
+fn locate_and_reachable() {
+    let mut s = session(3);
+    assert_eq!(ids(&one(&mut s, "LOCATE (2.0, 9.0)").unwrap()), [3]);
+    assert_eq!(ids(&one(&mut s, "LOCATE (2.0, 7.1)").unwrap()), [2]);
+    assert!(ids(&one(&mut s, "LOCATE (99, 99)").unwrap()).is_empty());
+    let QueryResult::Table(t) = one(&mut s, "REACHABLE FROM \"Kitchen\" WITHIN 3.2").unwrap()
+    else {
+        panic!()
+    };
+    assert_eq!(t.columns.last().unwrap(), "distance_m");
+    assert_eq!(ids(&QueryResult::Table(t.clone())), [3, 2, 1]);
+}
+
+#[test]
+fn show_use_name_diff_explain() {
+    let mut s = session(2);
+    assert!(
+        one(&mut s, "SHOW MAPS")
+            .unwrap()
+            .render(Format::Csv)
+            .starts_with("map,revisions,latest\ndemo,1,1\n")
+    );
+    let QueryResult::Message(m) = one(&mut s, "NAME room 8 AS \"Meeting Room\"").unwrap() else {
+        panic!()
+    };
+    assert!(m.contains("revision 2"), "{m}");
+    assert_eq!(s.current().unwrap().revision, 2);
+    assert_eq!(
+        ids(&one(&mut s, "FIND rooms WHERE name = 'meeting room'").unwrap()),
+        [8]
+    );
+    assert_eq!(ids(&one(&mut s, "SHOW REVISIONS OF demo").unwrap()), [1, 2]);
+    one(&mut s, "USE demo AT REVISION 1").unwrap();
+    assert!(ids(&one(&mut s, "FIND rooms WHERE name = 'meeting room'").unwrap()).is_empty());
+    let e = one(&mut s, "USE dmeo").unwrap_err().to_string();
+    assert_eq!(
+        e,
+        "no map named 'dmeo'; did you mean 'demo'? (see SHOW MAPS)"
+    );
+    let e = one(&mut s, "DIFF 1 2").unwrap_err().to_string();
+    assert!(e.contains("not available yet"), "{e}");
+    let QueryResult::Plan(p) = one(&mut s, "EXPLAIN FIND rooms WHERE area > 3 LIMIT 2").unwrap()
+    else {
+        panic!()
+    };
+    assert_eq!(
+        p,
+        "Limit 2\n  Filter area > 3.0\n    Scan spaces kind = room"
+    );
+}
+
+#[test]
+fn limits_bound_rows_and_time() {
+    let mut s = session(4);
+    s.set_limits(Limits {
+        max_rows: 3,
+        ..Limits::default()
+    });
+    let e = one(&mut s, "FIND spaces").unwrap_err();
+    assert!(matches!(e, QueryError::TooManyRows(3)));
+    assert!(one(&mut s, "FIND spaces LIMIT 3").is_ok());
+    let mut big = session(2000);
+    big.set_limits(Limits {
+        timeout: std::time::Duration::ZERO,
+        ..Limits::default()
+    });
+    let e = one(&mut big, "REACHABLE FROM 3 WITHIN 100000").unwrap_err();
+    assert!(matches!(e, QueryError::Timeout(0)), "{e}");
+}
+
+#[test]
+fn no_map_selected_and_renderings() {
+    let mut s = Session::new(MemorySource::new());
+    let e = one(&mut s, "FIND rooms").unwrap_err().to_string();
+    assert!(e.contains("no map selected"), "{e}");
+    let mut s = session(2);
+    let json = one(&mut s, "ROUTE FROM 3 TO 5")
+        .unwrap()
+        .render(Format::Json);
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(v["routes"][0]["spaces"], serde_json::json!([3, 2, 1, 4, 5]));
+    let csv = one(&mut s, "ROUTE FROM 3 TO 5")
+        .unwrap()
+        .render(Format::Csv);
+    assert!(
+        csv.starts_with("route,length_m,step,space,x_m,y_m\n1,"),
+        "{csv}"
+    );
+    assert_eq!(csv.lines().count(), 6);
+    assert_eq!(kind_of(&s, 2), SpaceKind::Door);
+}
+
+fn kind_of(s: &Session<MemorySource>, id: u32) -> SpaceKind {
+    s.current().unwrap().nrg.space(SpaceId(id)).unwrap().kind
+}
+
+#[test]
+fn parse_errors_point_at_the_token() {
+    let mut s = session(2);
+    let e = s.execute("FIND rooms ORDRE BY area").unwrap_err();
+    assert!(
+        e.to_string()
+            .contains("found 'ORDRE' (did you mean ORDER?)"),
+        "{e}"
+    );
+    assert_eq!(e.span().unwrap().column, 12);
+}
