@@ -12,3 +12,7 @@
 
 pub mod atomic;
 pub mod model;
+pub mod eval;
+pub mod extract;
+pub mod grid;
+pub mod imaging;

@@ -1,0 +1,68 @@
+//! Watershed segmentation of free space into basins (paper §4.3.2, Tab. 3),
+//! with markers from the distance transform so corridors are not cut up.
+
+use crate::imaging::{Labels, Mask, label_components, watershed};
+
+/// Basins of the free space: markers are the components of the places
+/// farther than `core_px` from any obstacle (a passage narrower than
+/// `2 core_px` separates two of them); the flood runs from the highest
+/// distance down, so basin borders settle on the narrowest point of each
+/// passage. Free pixels no basin reaches (narrow closets) become basins of
+/// their own.
+pub(crate) fn segment_basins(clean: &Mask, reachable: &[bool], dist: &[f32], core_px: f64) -> Labels {
+    let (w, h) = clean.dimensions();
+    let cores_data = dist.iter().map(|&d| if f64::from(d) > core_px { 255 } else { 0 }).collect();
+    let cores = Mask::from_raw(w, h, cores_data).unwrap_or_else(|| Mask::new(w, h));
+    let markers = label_components(&cores, true);
+    let max_d = dist.iter().copied().fold(0.0f32, f32::max);
+    let elevation: Vec<u16> =
+        dist.iter().map(|&d| ((max_d - d) * 4.0).clamp(0.0, 65535.0) as u16).collect();
+    let mut basins = watershed(&elevation, &markers, reachable);
+    fill_unreached(&mut basins, reachable);
+    basins
+}
+
+/// Gives every 8-connected group of reachable but unlabelled pixels a new label.
+pub(crate) fn fill_unreached(basins: &mut Labels, reachable: &[bool]) {
+    let (w, h) = (basins.width, basins.height);
+    let rest_data = basins
+        .data
+        .iter()
+        .zip(reachable)
+        .map(|(&l, &r)| if l == 0 && r { 255 } else { 0 })
+        .collect();
+    let rest = Mask::from_raw(w, h, rest_data).unwrap_or_else(|| Mask::new(w, h));
+    let extra = label_components(&rest, true);
+    for (b, &e) in basins.data.iter_mut().zip(&extra.data) {
+        if e != 0 {
+            *b = basins.count + e;
+        }
+    }
+    basins.count += extra.count;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::imaging::{ascii_mask, distance_to_background};
+
+    #[test]
+    fn two_rooms_split_at_the_doorway() {
+        let m = ascii_mask(
+            "...............
+             .######.######.
+             .######.######.
+             .#############.
+             .######.######.
+             .######.######.
+             ...............",
+        );
+        let d = distance_to_background(&m);
+        let reach: Vec<bool> = m.iter().map(|&p| p != 0).collect();
+        let b = segment_basins(&m, &reach, &d, 1.5);
+        assert_eq!(b.count, 2);
+        let w = 15;
+        assert_ne!(b.data[2 * w + 3], b.data[2 * w + 11]);
+        assert!(b.data.iter().zip(&reach).all(|(&l, &r)| (l != 0) == r));
+    }
+}
