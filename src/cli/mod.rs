@@ -8,6 +8,9 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+pub mod eval;
+pub mod extract;
+
 /// The command line.
 #[derive(Debug, Parser)]
 #[command(
@@ -30,12 +33,19 @@ pub struct Cli {
 
 /// The subcommands.
 #[derive(Debug, Subcommand)]
-pub enum Command {}
+pub enum Command {
+    /// Extract an NRG (rooms, corridors, doors, connections) from an occupancy grid map.
+    Extract(extract::Args),
+    /// Score an extraction against a ground-truth room image.
+    Eval(eval::Args),
+}
 
 /// Runs one subcommand, writing its report to `out`.
 pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
-    let _ = out;
-    match command {}
+    match command {
+        Command::Extract(args) => extract::run(args, out),
+        Command::Eval(args) => eval::run(args, out),
+    }
 }
 
 /// Sends `tracing` output to stderr at a level chosen by `-v` or `RUST_LOG`.
