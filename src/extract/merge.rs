@@ -4,7 +4,7 @@ use crate::imaging::{Labels, region_adjacency};
 
 /// Merges every region under `min_px` pixels into the neighbour it shares
 /// the longest border with (smallest first, repeatedly), then renumbers.
-/// Regions with no neighbour are kept.
+/// Small regions with no neighbour are removed.
 pub(crate) fn merge_small(labels: &mut Labels, min_px: usize) {
     loop {
         let areas = labels.areas();
@@ -40,6 +40,12 @@ pub(crate) fn merge_small(labels: &mut Labels, min_px: usize) {
             }
         }
         if !changed {
+            // What is still small has no neighbour left to join: drop it.
+            for v in &mut labels.data {
+                if *v != 0 && areas[*v as usize] < min_px {
+                    *v = 0;
+                }
+            }
             break;
         }
         for v in &mut labels.data {

@@ -73,15 +73,21 @@ pub fn extract(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extractio
     clock.lap("clean");
     let dist = distance_to_background(&free.clean);
     clock.lap("distance");
+    let min_free_px = (params.min_free_area_m2 / (res * res)).ceil() as usize;
     let mut regions = match params.method {
-        Method::Watershed => {
-            segment_basins(&free.clean, &free.reachable, &dist, params.core_radius_m / res)
-        }
+        Method::Watershed => segment_basins(
+            &free.clean,
+            &free.reachable,
+            &dist,
+            params.core_radius_m / res,
+            min_free_px,
+        ),
         Method::Ccl => segment_ccl(
             &free.clean,
             &free.reachable,
             params.ccl_erode_m / res,
             params.ccl_open_m / res,
+            min_free_px,
         ),
     };
     clock.lap("segment");

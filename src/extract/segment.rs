@@ -8,8 +8,14 @@ use crate::imaging::{Labels, Mask, label_components, watershed};
 /// `2 core_px` separates two of them); the flood runs from the highest
 /// distance down, so basin borders settle on the narrowest point of each
 /// passage. Free pixels no basin reaches (narrow closets) become basins of
-/// their own.
-pub(crate) fn segment_basins(clean: &Mask, reachable: &[bool], dist: &[f32], core_px: f64) -> Labels {
+/// their own if they have at least `min_px` pixels.
+pub(crate) fn segment_basins(
+    clean: &Mask,
+    reachable: &[bool],
+    dist: &[f32],
+    core_px: f64,
+    min_px: usize,
+) -> Labels {
     let (w, h) = clean.dimensions();
     let cores_data = dist.iter().map(|&d| if f64::from(d) > core_px { 255 } else { 0 }).collect();
     let cores = Mask::from_raw(w, h, cores_data).unwrap_or_else(|| Mask::new(w, h));
@@ -18,12 +24,13 @@ pub(crate) fn segment_basins(clean: &Mask, reachable: &[bool], dist: &[f32], cor
     let elevation: Vec<u16> =
         dist.iter().map(|&d| ((max_d - d) * 4.0).clamp(0.0, 65535.0) as u16).collect();
     let mut basins = watershed(&elevation, &markers, reachable);
-    fill_unreached(&mut basins, reachable);
+    fill_unreached(&mut basins, reachable, min_px);
     basins
 }
 
-/// Gives every 8-connected group of reachable but unlabelled pixels a new label.
-pub(crate) fn fill_unreached(basins: &mut Labels, reachable: &[bool]) {
+/// Gives every 8-connected group of at least `min_px` reachable but
+/// unlabelled pixels a new label (smaller groups stay unlabelled).
+pub(crate) fn fill_unreached(basins: &mut Labels, reachable: &[bool], min_px: usize) {
     let (w, h) = (basins.width, basins.height);
     let rest_data = basins
         .data
@@ -32,7 +39,14 @@ pub(crate) fn fill_unreached(basins: &mut Labels, reachable: &[bool]) {
         .map(|(&l, &r)| if l == 0 && r { 255 } else { 0 })
         .collect();
     let rest = Mask::from_raw(w, h, rest_data).unwrap_or_else(|| Mask::new(w, h));
-    let extra = label_components(&rest, true);
+    let mut extra = label_components(&rest, true);
+    let areas = extra.areas();
+    extra.data.iter_mut().for_each(|e| {
+        if areas[*e as usize] < min_px {
+            *e = 0;
+        }
+    });
+    extra.compact();
     for (b, &e) in basins.data.iter_mut().zip(&extra.data) {
         if e != 0 {
             *b = basins.count + e;
@@ -59,7 +73,7 @@ mod tests {
         );
         let d = distance_to_background(&m);
         let reach: Vec<bool> = m.iter().map(|&p| p != 0).collect();
-        let b = segment_basins(&m, &reach, &d, 1.5);
+        let b = segment_basins(&m, &reach, &d, 1.5, 1);
         assert_eq!(b.count, 2);
         let w = 15;
         assert_ne!(b.data[2 * w + 3], b.data[2 * w + 11]);
