@@ -23,7 +23,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     while let Some(a) = args.next() {
         match a.as_str() {
             "--method" => params.method = args.next().unwrap_or_default().parse::<Method>()?,
-            "--params" => params = toml::from_str(&std::fs::read_to_string(args.next().unwrap_or_default())?)?,
+            "--params" => {
+                params = toml::from_str(&std::fs::read_to_string(args.next().unwrap_or_default())?)?
+            }
             "--color" => color = args.next().map(PathBuf::from),
             _ => dir = Some(PathBuf::from(a)),
         }
@@ -43,11 +45,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "{:<32} {:>6} {:>6} {:>6} {:>6} | {:>6} {:>6} | {:>6} {:>6} | {:>5} {:>7}",
         "map", "R", "P", "Rmac", "Pmac", "doorR", "doorP", "connR", "connP", "rooms", "ms"
     );
-    let mut groups: [(Vec<Evaluation>, &str); 3] =
-        [(Vec::new(), "plain (IPA)"), (Vec::new(), "furnished (IPA)"), (Vec::new(), "rose2")];
+    let mut groups: [(Vec<Evaluation>, &str); 3] = [
+        (Vec::new(), "plain (IPA)"),
+        (Vec::new(), "furnished (IPA)"),
+        (Vec::new(), "rose2"),
+    ];
     for name in &names {
         let grid = load_map(&dir.join(format!("{name}.yaml")), &LoadOptions::default())?;
-        let gt = load_ground_truth(&dir.join(format!("{name}_gt.png")), &grid)?;
+        let gt = match load_ground_truth(&dir.join(format!("{name}_gt.png")), &grid) {
+            Ok(gt) => gt,
+            Err(e) => {
+                println!("{name:<32} skipped: {e}");
+                continue;
+            }
+        };
         let t = Instant::now();
         let x = extract(&grid, &params)?;
         let ms = t.elapsed().as_secs_f64() * 1e3;
@@ -75,11 +86,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 if l == 0 {
                     let g = grid.grey[i] / 2;
                     image::Rgb([g, g, g])
-                } else if x.nrg.spaces().get(l as usize - 1).is_some_and(|s| s.kind.as_str() == "door") {
+                } else if x
+                    .nrg
+                    .spaces()
+                    .get(l as usize - 1)
+                    .is_some_and(|s| s.kind.as_str() == "door")
+                {
                     image::Rgb([255, 0, 0])
                 } else {
                     let h = l.wrapping_mul(2_654_435_761);
-                    image::Rgb([64 + (h >> 24) as u8 / 2, 64 + (h >> 16) as u8 / 2, 64 + (h >> 8) as u8 / 2])
+                    image::Rgb([
+                        64 + (h >> 24) as u8 / 2,
+                        64 + (h >> 16) as u8 / 2,
+                        64 + (h >> 8) as u8 / 2,
+                    ])
                 }
             });
             img.save(out.join(format!("{name}.png")))?;

@@ -11,8 +11,8 @@
 //! origin at the lower left, y up).
 
 pub mod atomic;
-pub mod model;
 pub mod eval;
 pub mod extract;
 pub mod grid;
 pub mod imaging;
+pub mod model;

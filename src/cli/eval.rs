@@ -39,12 +39,31 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         let r = e.rooms;
         writeln!(out, "rooms       recall {:6.2} %  precision {:6.2} %  (per-room mean, IPA \"micro\"; {} GT rooms, {} segments)",
             100.0 * r.recall_micro, 100.0 * r.precision_micro, r.gt_rooms, r.segments).into_diagnostic()?;
-        writeln!(out, "rooms       recall {:6.2} %  precision {:6.2} %  (pixel-weighted, IPA \"macro\")",
-            100.0 * r.recall_macro, 100.0 * r.precision_macro).into_diagnostic()?;
-        writeln!(out, "doors       recall {:6.2} %  precision {:6.2} %  ({} GT doorway lines, {} detected)",
-            100.0 * e.doors.recall, 100.0 * e.doors.precision, e.doors.gt, e.doors.detected).into_diagnostic()?;
-        writeln!(out, "connections recall {:6.2} %  precision {:6.2} %  ({} GT, {} detected)",
-            100.0 * e.connections.recall, 100.0 * e.connections.precision, e.connections.gt, e.connections.detected).into_diagnostic()?;
+        writeln!(
+            out,
+            "rooms       recall {:6.2} %  precision {:6.2} %  (pixel-weighted, IPA \"macro\")",
+            100.0 * r.recall_macro,
+            100.0 * r.precision_macro
+        )
+        .into_diagnostic()?;
+        writeln!(
+            out,
+            "doors       recall {:6.2} %  precision {:6.2} %  ({} GT doorway lines, {} detected)",
+            100.0 * e.doors.recall,
+            100.0 * e.doors.precision,
+            e.doors.gt,
+            e.doors.detected
+        )
+        .into_diagnostic()?;
+        writeln!(
+            out,
+            "connections recall {:6.2} %  precision {:6.2} %  ({} GT, {} detected)",
+            100.0 * e.connections.recall,
+            100.0 * e.connections.precision,
+            e.connections.gt,
+            e.connections.detected
+        )
+        .into_diagnostic()?;
     }
     Ok(ExitCode::SUCCESS)
 }

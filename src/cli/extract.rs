@@ -45,7 +45,10 @@ pub struct MapArgs {
 impl MapArgs {
     /// Loads the map and resolves the parameters.
     pub fn load(&self) -> miette::Result<(OccupancyGrid, ExtractParams)> {
-        let opts = LoadOptions { free_min_grey: self.free_min_grey, max_pixels: self.max_pixels };
+        let opts = LoadOptions {
+            free_min_grey: self.free_min_grey,
+            max_pixels: self.max_pixels,
+        };
         let is_yaml = self
             .map
             .extension()
@@ -66,7 +69,9 @@ impl MapArgs {
             Some(p) => {
                 let text = std::fs::read_to_string(p)
                     .into_diagnostic()
-                    .wrap_err_with(|| format!("{}: cannot read the parameters file", p.display()))?;
+                    .wrap_err_with(|| {
+                        format!("{}: cannot read the parameters file", p.display())
+                    })?;
                 toml::from_str::<ExtractParams>(&text)
                     .into_diagnostic()
                     .wrap_err_with(|| format!("{}: invalid parameters", p.display()))?
@@ -111,13 +116,17 @@ pub struct Args {
 /// Runs `nrgdb extract`.
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     let (grid, params) = args.map.load()?;
-    let x = extract(&grid, &params).into_diagnostic().wrap_err_with(|| {
-        format!("{}: extraction failed", args.map.map.display())
-    })?;
+    let x = extract(&grid, &params)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("{}: extraction failed", args.map.map.display()))?;
     // Encode everything before writing anything, so a failure leaves no half output.
     let json = args.json.as_ref().map(|_| x.to_json());
     let png = match &args.labels {
-        Some(_) => Some(x.labels_png().into_diagnostic().wrap_err("cannot encode the label image")?),
+        Some(_) => Some(
+            x.labels_png()
+                .into_diagnostic()
+                .wrap_err("cannot encode the label image")?,
+        ),
         None => None,
     };
     if let (Some(path), Some(json)) = (&args.json, json) {
@@ -145,7 +154,13 @@ fn write_out(path: &Path, bytes: &[u8]) -> miette::Result<()> {
 }
 
 fn summary(x: &Extraction, out: &mut dyn Write) -> std::io::Result<()> {
-    let count = |k: &str| x.nrg.spaces().iter().filter(|s| s.kind.as_str() == k).count();
+    let count = |k: &str| {
+        x.nrg
+            .spaces()
+            .iter()
+            .filter(|s| s.kind.as_str() == k)
+            .count()
+    };
     writeln!(
         out,
         "{} spaces: {} rooms, {} corridors, {} doors; {} connections",

@@ -32,8 +32,12 @@ impl GroundTruth {
     /// pixels free in the map (≥ 250) but not in the GT (≤ 250) that touch
     /// two rooms.
     pub fn from_grey(width: u32, height: u32, gt: &[u8], map: &[u8]) -> GroundTruth {
-        let white = Mask::from_raw(width, height, gt.iter().map(|&g| if g > 250 { 255 } else { 0 }).collect())
-            .unwrap_or_else(|| Mask::new(width, height));
+        let white = Mask::from_raw(
+            width,
+            height,
+            gt.iter().map(|&g| if g > 250 { 255 } else { 0 }).collect(),
+        )
+        .unwrap_or_else(|| Mask::new(width, height));
         let mut rooms = label_components(&white, true);
         let areas = rooms.areas();
         for l in &mut rooms.data {
@@ -45,7 +49,10 @@ impl GroundTruth {
         let line_mask = Mask::from_raw(
             width,
             height,
-            gt.iter().zip(map).map(|(&g, &m)| if m >= 250 && g <= 250 { 255 } else { 0 }).collect(),
+            gt.iter()
+                .zip(map)
+                .map(|(&g, &m)| if m >= 250 && g <= 250 { 255 } else { 0 })
+                .collect(),
         )
         .unwrap_or_else(|| Mask::new(width, height));
         let lines = label_components(&line_mask, true);
@@ -78,7 +85,10 @@ impl GroundTruth {
             }
             if touched.len() >= 2 {
                 touched.sort_unstable();
-                doors.push(DoorLine { pixels: px, rooms: touched });
+                doors.push(DoorLine {
+                    pixels: px,
+                    rooms: touched,
+                });
             }
         }
         GroundTruth { rooms, doors }
@@ -87,7 +97,10 @@ impl GroundTruth {
 
 /// Loads a GT image (any format `grid` reads) for `map`; its size must match.
 pub fn load_ground_truth(path: &Path, map: &OccupancyGrid) -> Result<GroundTruth, EvalError> {
-    let opts = LoadOptions { max_pixels: u64::MAX, ..LoadOptions::default() };
+    let opts = LoadOptions {
+        max_pixels: u64::MAX,
+        ..LoadOptions::default()
+    };
     let img = crate::grid::decode_image(path, &opts)?;
     if (img.width(), img.height()) != (map.width, map.height) {
         return Err(GridError::SizeMismatch {
@@ -103,7 +116,9 @@ pub fn load_ground_truth(path: &Path, map: &OccupancyGrid) -> Result<GroundTruth
     let (grey, _) = crate::grid::grey_and_alpha(&img);
     let gt = GroundTruth::from_grey(map.width, map.height, &grey, &map.grey);
     if gt.rooms.count == 0 {
-        return Err(EvalError::NoRooms { path: path.to_path_buf() });
+        return Err(EvalError::NoRooms {
+            path: path.to_path_buf(),
+        });
     }
     Ok(gt)
 }

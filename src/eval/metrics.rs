@@ -91,12 +91,23 @@ pub fn room_scores(gt: &Labels, segments: &Labels) -> RoomScores {
             }
         }
         let micro = if k == 0 { 0.0 } else { sum / k as f64 };
-        let macro_ = if den == 0 { 0.0 } else { num as f64 / den as f64 };
+        let macro_ = if den == 0 {
+            0.0
+        } else {
+            num as f64 / den as f64
+        };
         (micro, macro_, k)
     };
     let (recall_micro, recall_macro, gt_rooms) = ratio(&best_for_gt, &gt_area);
     let (precision_micro, precision_macro, segments) = ratio(&best_for_seg, &seg_area);
-    RoomScores { recall_micro, precision_micro, recall_macro, precision_macro, gt_rooms, segments }
+    RoomScores {
+        recall_micro,
+        precision_micro,
+        recall_macro,
+        precision_macro,
+        gt_rooms,
+        segments,
+    }
 }
 
 /// Door recall/precision: a detected door (its pixel centroid) matches a GT
@@ -116,7 +127,10 @@ pub fn door_scores(gt: &GroundTruth, doors: &[[f64; 2]], radius_px: f64) -> Dete
         (x >= 0.0 && y >= 0.0 && x < f64::from(w) && y < f64::from(h))
             .then(|| y as usize * w as usize + x as usize)
     };
-    let matched_det = doors.iter().filter(|c| at(c).is_some_and(|i| sq[i] <= r2)).count();
+    let matched_det = doors
+        .iter()
+        .filter(|c| at(c).is_some_and(|i| sq[i] <= r2))
+        .count();
     let matched_gt = gt
         .doors
         .iter()
@@ -134,8 +148,16 @@ pub fn door_scores(gt: &GroundTruth, doors: &[[f64; 2]], radius_px: f64) -> Dete
 
 fn detection(matched_gt: usize, gt: usize, matched_det: usize, detected: usize) -> Detection {
     Detection {
-        recall: if gt == 0 { 1.0 } else { matched_gt as f64 / gt as f64 },
-        precision: if detected == 0 { 1.0 } else { matched_det as f64 / detected as f64 },
+        recall: if gt == 0 {
+            1.0
+        } else {
+            matched_gt as f64 / gt as f64
+        },
+        precision: if detected == 0 {
+            1.0
+        } else {
+            matched_det as f64 / detected as f64
+        },
         gt,
         detected,
     }
@@ -193,7 +215,9 @@ pub fn evaluate(gt: &GroundTruth, x: &Extraction, resolution: f64) -> Evaluation
     let mut segments = x.labels.clone();
     let is_door: Vec<bool> = std::iter::once(false)
         .chain((1..=segments.count).map(|id| {
-            x.nrg.space(SpaceId(id)).is_some_and(|s| s.kind == SpaceKind::Door)
+            x.nrg
+                .space(SpaceId(id))
+                .is_some_and(|s| s.kind == SpaceKind::Door)
         }))
         .collect();
     for l in &mut segments.data {
@@ -224,7 +248,12 @@ mod tests {
     fn ipa_micro_and_macro() {
         // GT: room 1 = 200 px, room 2 = 200 px. Segments: 1 covers room 1 and
         // half of room 2, 2 covers the other half of room 2.
-        let gt = Labels { width: 400, height: 1, data: [vec![1; 200], vec![2; 200]].concat(), count: 2 };
+        let gt = Labels {
+            width: 400,
+            height: 1,
+            data: [vec![1; 200], vec![2; 200]].concat(),
+            count: 2,
+        };
         let seg = Labels {
             width: 400,
             height: 1,
@@ -244,7 +273,10 @@ mod tests {
         let rooms = Labels::new(20, 20);
         let gt = GroundTruth {
             rooms,
-            doors: vec![DoorLine { pixels: vec![10 * 20 + 10, 11 * 20 + 10, 12 * 20 + 10], rooms: vec![1, 2] }],
+            doors: vec![DoorLine {
+                pixels: vec![10 * 20 + 10, 11 * 20 + 10, 12 * 20 + 10],
+                rooms: vec![1, 2],
+            }],
         };
         let d = door_scores(&gt, &[[10.0, 14.0], [2.0, 2.0]], 2.5);
         assert_eq!(d.recall, 1.0);

@@ -12,4 +12,6 @@ mod metrics;
 
 pub use error::EvalError;
 pub use ground_truth::{DoorLine, GroundTruth, load_ground_truth};
-pub use metrics::{Detection, Evaluation, RoomScores, connection_scores, door_scores, evaluate, room_scores};
+pub use metrics::{
+    Detection, Evaluation, RoomScores, connection_scores, door_scores, evaluate, room_scores,
+};

@@ -20,8 +20,16 @@ pub(crate) fn segment_ccl(
     open_px: f64,
     min_px: usize,
 ) -> Labels {
-    let erd = if erode_px >= 0.5 { erode(clean, erode_px) } else { clean.clone() };
-    let core = if open_px >= 0.5 { erode(&erd, open_px) } else { erd };
+    let erd = if erode_px >= 0.5 {
+        erode(clean, erode_px)
+    } else {
+        clean.clone()
+    };
+    let core = if open_px >= 0.5 {
+        erode(&erd, open_px)
+    } else {
+        erd
+    };
     let rooms = label_components(&core, true);
     let mut grown = watershed(&vec![0u16; rooms.data.len()], &rooms, reachable);
     fill_unreached(&mut grown, reachable, min_px);

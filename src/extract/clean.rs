@@ -16,11 +16,19 @@ pub(crate) struct FreeSpace {
 /// narrower than its diameter) and drops 8-connected components under
 /// `min_area_m2`.
 pub(crate) fn clean_free(grid: &OccupancyGrid, noise_radius_m: f64, min_area_m2: f64) -> FreeSpace {
-    let data = grid.cells.iter().map(|c| if *c == Cell::Free { 255 } else { 0 }).collect();
+    let data = grid
+        .cells
+        .iter()
+        .map(|c| if *c == Cell::Free { 255 } else { 0 })
+        .collect();
     let free = Mask::from_raw(grid.width, grid.height, data)
         .unwrap_or_else(|| Mask::new(grid.width, grid.height));
     let r = noise_radius_m / grid.resolution;
-    let mut clean = if r >= 0.5 { open(&free, r) } else { free.clone() };
+    let mut clean = if r >= 0.5 {
+        open(&free, r)
+    } else {
+        free.clone()
+    };
     let labels = label_components(&clean, true);
     let areas = labels.areas();
     let min_px = (min_area_m2 / (grid.resolution * grid.resolution)).ceil() as usize;
@@ -30,7 +38,11 @@ pub(crate) fn clean_free(grid: &OccupancyGrid, noise_radius_m: f64, min_area_m2:
         }
     }
     let near = dilate(&clean, r + 1.0);
-    let reachable = free.iter().zip(near.iter()).map(|(&f, &n)| f != 0 && n != 0).collect();
+    let reachable = free
+        .iter()
+        .zip(near.iter())
+        .map(|(&f, &n)| f != 0 && n != 0)
+        .collect();
     FreeSpace { clean, reachable }
 }
 
@@ -57,6 +69,9 @@ mod tests {
         assert_eq!(f.clean.as_raw()[2 * w + 10], 0, "ray removed");
         assert_eq!(f.clean.as_raw()[4 * w + 11], 0, "island removed");
         assert_ne!(f.clean.as_raw()[3 * w + 3], 0, "room kept");
-        assert!(!f.reachable[2 * w + 11], "the far end of the ray is not reachable");
+        assert!(
+            !f.reachable[2 * w + 11],
+            "the far end of the ray is not reachable"
+        );
     }
 }

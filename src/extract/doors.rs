@@ -27,7 +27,11 @@ pub(crate) fn borders(labels: &Labels, dist: &[f32]) -> Vec<Border> {
             return;
         }
         let pair = (a.min(b), a.max(b));
-        let e = map.entry(pair).or_insert_with(|| Border { pair, width_px: 0.0, pixels: Vec::new() });
+        let e = map.entry(pair).or_insert_with(|| Border {
+            pair,
+            width_px: 0.0,
+            pixels: Vec::new(),
+        });
         let half = f64::from(dist[i].min(dist[j]));
         e.width_px = e.width_px.max(2.0 * half + 1.0);
         e.pixels.push(i as u32);
@@ -63,7 +67,9 @@ pub(crate) fn cut_doors(labels: &Labels, doors: &[&Border], depth_px: f64) -> La
     seeds.count = labels.count + doors.len() as u32;
     let r = (depth_px / 2.0 - 0.5).max(0.0);
     let sq = squared_distance_to_foreground(&border_mask);
-    let band: Vec<bool> = (0..n).map(|i| labels.data[i] != 0 && sq[i] <= r * r).collect();
+    let band: Vec<bool> = (0..n)
+        .map(|i| labels.data[i] != 0 && sq[i] <= r * r)
+        .collect();
     let grown = watershed(&vec![0u16; n], &seeds, &band);
     let mut out = labels.clone();
     for (o, &g) in out.data.iter_mut().zip(&grown.data) {
@@ -88,7 +94,9 @@ mod tests {
             data: vec![1, 1, 1, 2, 2, 2, 1, 1, 1, 2, 2, 2, 1, 1, 1, 2, 2, 2],
             count: 2,
         };
-        let dist = vec![1.0f32, 1., 1., 1., 1., 1., 1., 2., 2., 2., 2., 1., 1., 1., 1., 1., 1., 1.];
+        let dist = vec![
+            1.0f32, 1., 1., 1., 1., 1., 1., 2., 2., 2., 2., 1., 1., 1., 1., 1., 1., 1.,
+        ];
         let b = borders(&labels, &dist);
         assert_eq!(b.len(), 1);
         assert_eq!(b[0].pair, (1, 2));

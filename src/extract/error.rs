@@ -13,7 +13,9 @@ pub enum ExtractError {
         value: f64,
     },
     /// Nothing free is left after noise removal.
-    #[error("no free space is left after removing noise narrower than {noise_m} m and components under {min_area_m2} m² (lower noise_radius_m or min_free_area_m2)")]
+    #[error(
+        "no free space is left after removing noise narrower than {noise_m} m and components under {min_area_m2} m² (lower noise_radius_m or min_free_area_m2)"
+    )]
     NoSpace {
         /// The noise radius used.
         noise_m: f64,
@@ -21,7 +23,9 @@ pub enum ExtractError {
         min_area_m2: f64,
     },
     /// The map has more spaces than a 16-bit label image can hold.
-    #[error("the map produced {0} spaces; at most 65535 fit a label image (raise min_room_area_m2)")]
+    #[error(
+        "the map produced {0} spaces; at most 65535 fit a label image (raise min_room_area_m2)"
+    )]
     TooManySpaces(usize),
     /// The extracted graph broke a model invariant (a bug).
     #[error("extracted graph is not a valid nrg: {0}")]

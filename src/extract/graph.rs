@@ -65,7 +65,10 @@ pub(crate) fn topology(
             }
         };
     }
-    Topology { kinds, edges: edges.into_iter().collect() }
+    Topology {
+        kinds,
+        edges: edges.into_iter().collect(),
+    }
 }
 
 #[cfg(test)]
@@ -86,7 +89,10 @@ mod tests {
         assert_eq!(t.kinds[1], SpaceKind::Corridor);
         assert_eq!(t.kinds[2], SpaceKind::Room);
         assert_eq!(t.kinds[4], SpaceKind::Door);
-        assert!(!t.edges.iter().any(|e| (e.0, e.1) == (1, 2)), "cycle edge removed");
+        assert!(
+            !t.edges.iter().any(|e| (e.0, e.1) == (1, 2)),
+            "cycle edge removed"
+        );
         assert!(t.edges.contains(&(1, 4, ConnectionKind::Door)));
         assert!(t.edges.contains(&(2, 4, ConnectionKind::Door)));
         assert_eq!(t.edges.len(), 4);

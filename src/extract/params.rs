@@ -21,7 +21,9 @@ impl std::str::FromStr for Method {
         match s {
             "ccl" => Ok(Method::Ccl),
             "watershed" => Ok(Method::Watershed),
-            other => Err(format!("unknown method `{other}` (expected ccl or watershed)")),
+            other => Err(format!(
+                "unknown method `{other}` (expected ccl or watershed)"
+            )),
         }
     }
 }
@@ -49,6 +51,10 @@ pub struct ExtractParams {
     /// Room cores are the places farther than this from any obstacle; a
     /// passage narrower than twice this separates two spaces. Default 0.5 m.
     pub core_radius_m: f64,
+    /// A room core that splits, at a higher distance level, into parts of at
+    /// least this area becomes one space per part (rooms joined by a doorway
+    /// wider than `2 core_radius_m`). Default 1.0 m².
+    pub split_min_core_m2: f64,
     /// A boundary between two spaces whose passage is at most this wide is a
     /// door; wider boundaries are open connections. Default 1.6 m.
     pub door_width_max_m: f64,
@@ -76,6 +82,7 @@ impl Default for ExtractParams {
             noise_radius_m: 0.2,
             min_free_area_m2: 1.0,
             core_radius_m: 0.5,
+            split_min_core_m2: 1.0,
             door_width_max_m: 1.6,
             door_depth_m: 0.3,
             min_room_area_m2: 1.0,
@@ -94,6 +101,7 @@ impl ExtractParams {
             ("noise_radius_m", self.noise_radius_m),
             ("min_free_area_m2", self.min_free_area_m2),
             ("core_radius_m", self.core_radius_m),
+            ("split_min_core_m2", self.split_min_core_m2),
             ("door_width_max_m", self.door_width_max_m),
             ("door_depth_m", self.door_depth_m),
             ("min_room_area_m2", self.min_room_area_m2),
@@ -102,7 +110,10 @@ impl ExtractParams {
             ("ccl_erode_m", self.ccl_erode_m),
             ("ccl_open_m", self.ccl_open_m),
         ];
-        match fields.into_iter().find(|(_, v)| !(v.is_finite() && *v >= 0.0)) {
+        match fields
+            .into_iter()
+            .find(|(_, v)| !(v.is_finite() && *v >= 0.0))
+        {
             Some(bad) => Err(bad),
             None => Ok(()),
         }

@@ -60,9 +60,14 @@ impl Clock {
 /// assert_eq!((x.nrg.spaces().len(), doors), (3, 1));
 /// ```
 pub fn extract(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction, ExtractError> {
-    params.validate().map_err(|(name, value)| ExtractError::BadParam { name, value })?;
+    params
+        .validate()
+        .map_err(|(name, value)| ExtractError::BadParam { name, value })?;
     let res = grid.resolution;
-    let mut clock = Clock { last: Instant::now(), timings: Vec::new() };
+    let mut clock = Clock {
+        last: Instant::now(),
+        timings: Vec::new(),
+    };
     let free = clean_free(grid, params.noise_radius_m, params.min_free_area_m2);
     if free.clean.iter().all(|&p| p == 0) {
         return Err(ExtractError::NoSpace {
@@ -81,6 +86,7 @@ pub fn extract(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extractio
             &dist,
             params.core_radius_m / res,
             min_free_px,
+            (params.split_min_core_m2 / (res * res)).ceil() as usize,
         ),
         Method::Ccl => segment_ccl(
             &free.clean,
@@ -91,7 +97,10 @@ pub fn extract(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extractio
         ),
     };
     clock.lap("segment");
-    merge_small(&mut regions, (params.min_room_area_m2 / (res * res)).ceil() as usize);
+    merge_small(
+        &mut regions,
+        (params.min_room_area_m2 / (res * res)).ceil() as usize,
+    );
     clock.lap("merge");
     let all = borders(&regions, &dist);
     let door_px = params.door_width_max_m / res;
@@ -101,12 +110,30 @@ pub fn extract(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extractio
     let labels = cut_doors(&regions, &doors, (params.door_depth_m / res).max(1.0));
     clock.lap("doors");
     let shape = region_shapes(&labels, &dist);
-    let topo = topology(&labels, n_regions, &door_pairs, &shape, params.corridor_min_elongation);
+    let topo = topology(
+        &labels,
+        n_regions,
+        &door_pairs,
+        &shape,
+        params.corridor_min_elongation,
+    );
     clock.lap("graph");
-    let out = build(grid, labels, &dist, &topo.kinds, &topo.edges, params.simplify_m)?;
+    let out = build(
+        grid,
+        labels,
+        &dist,
+        &topo.kinds,
+        &topo.edges,
+        params.simplify_m,
+    )?;
     clock.lap("polygons");
     let (labels, nrg, pixel_centroids) = out;
-    Ok(Extraction { nrg, labels, pixel_centroids, timings: clock.timings })
+    Ok(Extraction {
+        nrg,
+        labels,
+        pixel_centroids,
+        timings: clock.timings,
+    })
 }
 
 /// (area in px, widest inscribed diameter in px) of every label.
@@ -189,9 +216,16 @@ fn build(
         if na == 0 || nb == 0 || na == nb {
             continue;
         }
-        let (Some(pa), Some(pb)) = (anchor_of(na), anchor_of(nb)) else { continue };
+        let (Some(pa), Some(pb)) = (anchor_of(na), anchor_of(nb)) else {
+            continue;
+        };
         let length_m = ((pa[0] - pb[0]).powi(2) + (pa[1] - pb[1]).powi(2)).sqrt();
-        connections.push(Connection { a: SpaceId(na.min(nb)), b: SpaceId(na.max(nb)), kind, length_m });
+        connections.push(Connection {
+            a: SpaceId(na.min(nb)),
+            b: SpaceId(na.max(nb)),
+            kind,
+            length_m,
+        });
     }
     connections.sort_by_key(|c| (c.a, c.b));
     connections.dedup_by_key(|c| (c.a, c.b));

@@ -63,13 +63,19 @@ pub(crate) fn outline(
         .enumerate()
         .filter(|(_, c)| c.border_type == BorderType::Outer)
         .max_by(|a, b| {
-            polygon_area(&to_m(a.1)).abs().total_cmp(&polygon_area(&to_m(b.1)).abs())
+            polygon_area(&to_m(a.1))
+                .abs()
+                .total_cmp(&polygon_area(&to_m(b.1)).abs())
         });
     let Some((oi, oc)) = outer else {
         return (Vec::new(), Vec::new());
     };
     let exterior = finish(to_m(oc), simplify_m, true);
-    let exterior = if distinct(&exterior) < 3 { pixel_box(bbox, grid) } else { exterior };
+    let exterior = if distinct(&exterior) < 3 {
+        pixel_box(bbox, grid)
+    } else {
+        exterior
+    };
     let holes = contours
         .iter()
         .filter(|c| c.border_type == BorderType::Hole && c.parent == Some(oi))
@@ -94,7 +100,11 @@ fn distinct(r: &[Point]) -> usize {
     let mut v: Vec<Point> = r.to_vec();
     v.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
     v.dedup();
-    if polygon_area(r).abs() < 1e-12 { v.len().min(2) } else { v.len() }
+    if polygon_area(r).abs() < 1e-12 {
+        v.len().min(2)
+    } else {
+        v.len()
+    }
 }
 
 /// The outer corners of a pixel box, CCW in metres (for one-pixel-thin spaces).
@@ -141,7 +151,12 @@ mod tests {
     #[test]
     fn a_thin_line_gets_a_box() {
         let grid = OccupancyGrid::from_cells(5, 1, 1.0, [0.0; 3], vec![Cell::Free; 5]);
-        let labels = Labels { width: 5, height: 1, data: vec![0, 1, 1, 1, 0], count: 1 };
+        let labels = Labels {
+            width: 5,
+            height: 1,
+            data: vec![0, 1, 1, 1, 0],
+            count: 1,
+        };
         let (ext, _) = outline(&labels, 1, [1, 0, 3, 0], &grid, 0.01);
         assert_eq!(ext.len(), 4);
         assert!((polygon_area(&ext) - 3.0).abs() < 1e-9);

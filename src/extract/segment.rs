@@ -15,17 +15,74 @@ pub(crate) fn segment_basins(
     dist: &[f32],
     core_px: f64,
     min_px: usize,
+    split_min_px: usize,
 ) -> Labels {
     let (w, h) = clean.dimensions();
-    let cores_data = dist.iter().map(|&d| if f64::from(d) > core_px { 255 } else { 0 }).collect();
+    let cores_data = dist
+        .iter()
+        .map(|&d| if f64::from(d) > core_px { 255 } else { 0 })
+        .collect();
     let cores = Mask::from_raw(w, h, cores_data).unwrap_or_else(|| Mask::new(w, h));
-    let markers = label_components(&cores, true);
+    let markers = split_markers(label_components(&cores, true), dist, core_px, split_min_px);
     let max_d = dist.iter().copied().fold(0.0f32, f32::max);
-    let elevation: Vec<u16> =
-        dist.iter().map(|&d| ((max_d - d) * 4.0).clamp(0.0, 65535.0) as u16).collect();
+    let elevation: Vec<u16> = dist
+        .iter()
+        .map(|&d| ((max_d - d) * 4.0).clamp(0.0, 65535.0) as u16)
+        .collect();
     let mut basins = watershed(&elevation, &markers, reachable);
     fill_unreached(&mut basins, reachable, min_px);
     basins
+}
+
+/// Refines markers through rising distance levels (×1.25 each): a marker
+/// whose pixels above the next level fall into two or more components of at
+/// least `split_min_px` pixels is replaced by those components. Rooms joined
+/// by a doorway wider than `2 core_px` split this way, while a corridor,
+/// whose core thins out evenly, stays one marker.
+fn split_markers(mut markers: Labels, dist: &[f32], core_px: f64, split_min_px: usize) -> Labels {
+    let max_d = f64::from(dist.iter().copied().fold(0.0f32, f32::max));
+    let (w, h) = (markers.width, markers.height);
+    let mut level = core_px.max(1.0) * 1.25;
+    while level < max_d {
+        let data = dist
+            .iter()
+            .map(|&d| if f64::from(d) > level { 255 } else { 0 })
+            .collect();
+        let high = label_components(
+            &Mask::from_raw(w, h, data).unwrap_or_else(|| Mask::new(w, h)),
+            true,
+        );
+        let areas = high.areas();
+        // Parent marker of every big high component.
+        let mut parent = vec![0u32; high.count as usize + 1];
+        for (&c, &m) in high.data.iter().zip(&markers.data) {
+            if c != 0 {
+                parent[c as usize] = m;
+            }
+        }
+        let mut big_children = vec![0usize; markers.count as usize + 1];
+        for c in 1..=high.count as usize {
+            if areas[c] >= split_min_px && parent[c] != 0 {
+                big_children[parent[c] as usize] += 1;
+            }
+        }
+        if big_children.iter().any(|&n| n >= 2) {
+            let base = markers.count;
+            for (m, &c) in markers.data.iter_mut().zip(&high.data) {
+                if *m != 0 && big_children[*m as usize] >= 2 {
+                    *m = if c != 0 && areas[c as usize] >= split_min_px {
+                        base + c
+                    } else {
+                        0
+                    };
+                }
+            }
+            markers.count = base + high.count;
+            markers.compact();
+        }
+        level *= 1.25;
+    }
+    markers
 }
 
 /// Gives every 8-connected group of at least `min_px` reachable but
@@ -73,7 +130,7 @@ mod tests {
         );
         let d = distance_to_background(&m);
         let reach: Vec<bool> = m.iter().map(|&p| p != 0).collect();
-        let b = segment_basins(&m, &reach, &d, 1.5, 1);
+        let b = segment_basins(&m, &reach, &d, 1.5, 1, 1000);
         assert_eq!(b.count, 2);
         let w = 15;
         assert_ne!(b.data[2 * w + 3], b.data[2 * w + 11]);

@@ -24,7 +24,11 @@ pub(crate) fn simplify_ring(ring: &[Point], eps: f64) -> Vec<Point> {
             keep[k + far] = true;
         }
     }
-    ring.iter().zip(&keep).filter(|(_, k)| **k).map(|(p, _)| *p).collect()
+    ring.iter()
+        .zip(&keep)
+        .filter(|(_, k)| **k)
+        .map(|(p, _)| *p)
+        .collect()
 }
 
 fn dist2(a: Point, b: Point) -> f64 {

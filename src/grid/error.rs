@@ -23,7 +23,9 @@ pub enum GridError {
         message: String,
     },
     /// A required YAML field is missing.
-    #[error("{path}: field `{field}` is missing (a ROS map yaml needs image, resolution and origin)")]
+    #[error(
+        "{path}: field `{field}` is missing (a ROS map yaml needs image, resolution and origin)"
+    )]
     MissingField {
         /// The YAML file.
         path: PathBuf,
@@ -51,7 +53,9 @@ pub enum GridError {
         message: String,
     },
     /// The image is larger than the configured pixel limit.
-    #[error("{path}: image is {width}x{height} = {pixels} px, above the limit of {limit} px (raise the pixel limit if the map is genuine)")]
+    #[error(
+        "{path}: image is {width}x{height} = {pixels} px, above the limit of {limit} px (raise the pixel limit if the map is genuine)"
+    )]
     TooLarge {
         /// The image file.
         path: PathBuf,
@@ -65,7 +69,9 @@ pub enum GridError {
         limit: u64,
     },
     /// The image size disagrees with what was expected.
-    #[error("{path}: image is {width}x{height} px but {expected_width}x{expected_height} px were expected ({what})")]
+    #[error(
+        "{path}: image is {width}x{height} px but {expected_width}x{expected_height} px were expected ({what})"
+    )]
     SizeMismatch {
         /// The image file.
         path: PathBuf,
@@ -87,7 +93,9 @@ pub enum GridError {
         path: PathBuf,
     },
     /// No cell is free.
-    #[error("{path}: the map has no free cell (free = grey >= {free_min_grey}; check negate or the free threshold)")]
+    #[error(
+        "{path}: the map has no free cell (free = grey >= {free_min_grey}; check negate or the free threshold)"
+    )]
     NoFreeSpace {
         /// The image file.
         path: PathBuf,

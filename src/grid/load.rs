@@ -18,7 +18,10 @@ pub struct LoadOptions {
 
 impl Default for LoadOptions {
     fn default() -> Self {
-        LoadOptions { free_min_grey: 250, max_pixels: 64 * 1024 * 1024 }
+        LoadOptions {
+            free_min_grey: 250,
+            max_pixels: 64 * 1024 * 1024,
+        }
     }
 }
 
@@ -60,12 +63,19 @@ pub fn load_image(
 /// Decodes an image, checking the pixel limit before decoding the pixels.
 pub fn decode_image(path: &Path, options: &LoadOptions) -> Result<DynamicImage, GridError> {
     let reader = ImageReader::open(path)
-        .map_err(|source| GridError::Io { path: path.to_path_buf(), source })?
+        .map_err(|source| GridError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?
         .with_guessed_format()
-        .map_err(|source| GridError::Io { path: path.to_path_buf(), source })?;
-    let (w, h) = reader
-        .into_dimensions()
-        .map_err(|e| GridError::Image { path: path.to_path_buf(), message: e.to_string() })?;
+        .map_err(|source| GridError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+    let (w, h) = reader.into_dimensions().map_err(|e| GridError::Image {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    })?;
     let pixels = u64::from(w) * u64::from(h);
     if pixels > options.max_pixels {
         return Err(GridError::TooLarge {
@@ -77,15 +87,25 @@ pub fn decode_image(path: &Path, options: &LoadOptions) -> Result<DynamicImage, 
         });
     }
     if pixels == 0 {
-        return Err(GridError::Image { path: path.to_path_buf(), message: "image is empty".into() });
+        return Err(GridError::Image {
+            path: path.to_path_buf(),
+            message: "image is empty".into(),
+        });
     }
     let reader = ImageReader::open(path)
-        .map_err(|source| GridError::Io { path: path.to_path_buf(), source })?
+        .map_err(|source| GridError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?
         .with_guessed_format()
-        .map_err(|source| GridError::Io { path: path.to_path_buf(), source })?;
-    reader
-        .decode()
-        .map_err(|e| GridError::Image { path: path.to_path_buf(), message: e.to_string() })
+        .map_err(|source| GridError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+    reader.decode().map_err(|e| GridError::Image {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    })
 }
 
 /// Grey (0..255) and alpha per pixel, whatever the colour type and depth.
@@ -160,7 +180,9 @@ fn classify(
         cells.push(cell);
     }
     if cells.iter().all(|c| *c == Cell::Unknown) {
-        return Err(GridError::AllUnknown { path: yaml.image.clone() });
+        return Err(GridError::AllUnknown {
+            path: yaml.image.clone(),
+        });
     }
     if !cells.contains(&Cell::Free) {
         return Err(GridError::NoFreeSpace {
@@ -168,7 +190,14 @@ fn classify(
             free_min_grey: options.free_min_grey,
         });
     }
-    Ok(OccupancyGrid { width, height, resolution: yaml.resolution, origin: yaml.origin, grey, cells })
+    Ok(OccupancyGrid {
+        width,
+        height,
+        resolution: yaml.resolution,
+        origin: yaml.origin,
+        grey,
+        cells,
+    })
 }
 
 #[cfg(test)]
@@ -182,8 +211,11 @@ mod tests {
 
     fn yaml(d: &Path, image: &str, extra: &str) -> std::path::PathBuf {
         let p = d.join("map.yaml");
-        std::fs::write(&p, format!("image: {image}\nresolution: 0.1\norigin: [0, 0, 0]\n{extra}"))
-            .unwrap();
+        std::fs::write(
+            &p,
+            format!("image: {image}\nresolution: 0.1\norigin: [0, 0, 0]\n{extra}"),
+        )
+        .unwrap();
         p
     }
 
@@ -209,11 +241,19 @@ mod tests {
         assert_eq!(m.free_count(), 6);
         assert_eq!(m.cell(0, 0), Some(Cell::Unknown));
 
-        let rgb: ImageBuffer<Rgb<u8>, Vec<u8>> =
-            ImageBuffer::from_fn(4, 2, |x, _| if x == 0 { Rgb([255, 255, 255]) } else { Rgb([0, 0, 0]) });
+        let rgb: ImageBuffer<Rgb<u8>, Vec<u8>> = ImageBuffer::from_fn(4, 2, |x, _| {
+            if x == 0 {
+                Rgb([255, 255, 255])
+            } else {
+                Rgb([0, 0, 0])
+            }
+        });
         rgb.save(d.path().join("rgb.png")).unwrap();
-        let m = load_map(&yaml(d.path(), "rgb.png", "negate: 1\n"), &LoadOptions::default())
-            .unwrap();
+        let m = load_map(
+            &yaml(d.path(), "rgb.png", "negate: 1\n"),
+            &LoadOptions::default(),
+        )
+        .unwrap();
         assert_eq!(m.free_count(), 6, "negate turns black into free");
     }
 
@@ -238,7 +278,10 @@ mod tests {
         let e = load_map(&yaml(d.path(), "o.pgm", ""), &LoadOptions::default()).unwrap_err();
         assert!(matches!(e, GridError::NoFreeSpace { .. }), "{e}");
 
-        let opts = LoadOptions { max_pixels: 10, ..LoadOptions::default() };
+        let opts = LoadOptions {
+            max_pixels: 10,
+            ..LoadOptions::default()
+        };
         let e = load_map(&yaml(d.path(), "o.pgm", ""), &opts).unwrap_err();
         assert!(matches!(e, GridError::TooLarge { pixels: 64, .. }), "{e}");
 

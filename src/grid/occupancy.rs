@@ -52,13 +52,24 @@ impl OccupancyGrid {
                 Cell::Unknown => 205,
             })
             .collect();
-        OccupancyGrid { width, height, resolution, origin, grey, cells }
+        OccupancyGrid {
+            width,
+            height,
+            resolution,
+            origin,
+            grey,
+            cells,
+        }
     }
 
     /// Parses an ASCII picture (lines trimmed): `.` free, `#` occupied,
     /// anything else unknown. Handy for tests and examples.
     pub fn from_ascii(text: &str, resolution: f64) -> OccupancyGrid {
-        let rows: Vec<&str> = text.lines().map(str::trim).filter(|l| !l.is_empty()).collect();
+        let rows: Vec<&str> = text
+            .lines()
+            .map(str::trim)
+            .filter(|l| !l.is_empty())
+            .collect();
         let width = rows.iter().map(|r| r.chars().count()).max().unwrap_or(0);
         let mut cells = Vec::with_capacity(width * rows.len());
         for r in &rows {
@@ -113,7 +124,10 @@ impl OccupancyGrid {
         let lx = col * self.resolution;
         let ly = (f64::from(self.height) - row) * self.resolution;
         let (s, c) = self.origin[2].sin_cos();
-        [self.origin[0] + c * lx - s * ly, self.origin[1] + s * lx + c * ly]
+        [
+            self.origin[0] + c * lx - s * ly,
+            self.origin[1] + s * lx + c * ly,
+        ]
     }
 
     /// The inverse of [`OccupancyGrid::pixel_to_metres`]: fractional `[col, row]`.
@@ -123,7 +137,10 @@ impl OccupancyGrid {
         let (s, c) = self.origin[2].sin_cos();
         let lx = c * dx + s * dy;
         let ly = -s * dx + c * dy;
-        [lx / self.resolution, f64::from(self.height) - ly / self.resolution]
+        [
+            lx / self.resolution,
+            f64::from(self.height) - ly / self.resolution,
+        ]
     }
 }
 

@@ -65,7 +65,10 @@ impl MapYaml {
             path: p(),
             message: e.to_string(),
         })?;
-        let image = raw.image.ok_or(GridError::MissingField { path: p(), field: "image" })?;
+        let image = raw.image.ok_or(GridError::MissingField {
+            path: p(),
+            field: "image",
+        })?;
         let resolution = raw.resolution.ok_or(GridError::MissingField {
             path: p(),
             field: "resolution",
@@ -78,7 +81,10 @@ impl MapYaml {
                 hint: "must be a finite number of metres per pixel > 0",
             });
         }
-        let origin = raw.origin.ok_or(GridError::MissingField { path: p(), field: "origin" })?;
+        let origin = raw.origin.ok_or(GridError::MissingField {
+            path: p(),
+            field: "origin",
+        })?;
         if origin.len() != 3 || origin.iter().any(|v| !v.is_finite()) {
             return Err(GridError::BadField {
                 path: p(),
@@ -103,7 +109,10 @@ impl MapYaml {
         };
         let occupied_thresh = raw.occupied_thresh.unwrap_or(0.65);
         let free_thresh = raw.free_thresh.unwrap_or(0.196);
-        for (field, v) in [("occupied_thresh", occupied_thresh), ("free_thresh", free_thresh)] {
+        for (field, v) in [
+            ("occupied_thresh", occupied_thresh),
+            ("free_thresh", free_thresh),
+        ] {
             if !(0.0..=1.0).contains(&v) {
                 return Err(GridError::BadField {
                     path: p(),
@@ -165,11 +174,17 @@ mod tests {
     fn names_missing_and_bad_fields() {
         let e = MapYaml::parse("image: m.pgm\norigin: [0,0,0]\n", Path::new("a.yaml")).unwrap_err();
         assert!(e.to_string().contains("`resolution`"), "{e}");
-        let e = MapYaml::parse("image: m.pgm\nresolution: 0\norigin: [0,0,0]\n", Path::new("a.yaml"))
-            .unwrap_err();
+        let e = MapYaml::parse(
+            "image: m.pgm\nresolution: 0\norigin: [0,0,0]\n",
+            Path::new("a.yaml"),
+        )
+        .unwrap_err();
         assert!(e.to_string().contains("a.yaml: field `resolution`"), "{e}");
-        let e = MapYaml::parse("image: m.pgm\nresolution: 0.1\norigin: [0,0]\n", Path::new("a.yaml"))
-            .unwrap_err();
+        let e = MapYaml::parse(
+            "image: m.pgm\nresolution: 0.1\norigin: [0,0]\n",
+            Path::new("a.yaml"),
+        )
+        .unwrap_err();
         assert!(e.to_string().contains("`origin`"), "{e}");
     }
 }

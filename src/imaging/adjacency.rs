@@ -45,9 +45,19 @@ mod tests {
 
     #[test]
     fn diagonal_contact_is_not_adjacency() {
-        let l = Labels { width: 2, height: 2, data: vec![1, 2, 2, 1], count: 2 };
+        let l = Labels {
+            width: 2,
+            height: 2,
+            data: vec![1, 2, 2, 1],
+            count: 2,
+        };
         assert_eq!(region_adjacency(&l).get(&(1, 2)), Some(&4));
-        let l = Labels { width: 2, height: 2, data: vec![1, 0, 0, 2], count: 2 };
+        let l = Labels {
+            width: 2,
+            height: 2,
+            data: vec![1, 0, 0, 2],
+            count: 2,
+        };
         assert!(region_adjacency(&l).is_empty());
     }
 }

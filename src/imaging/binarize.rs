@@ -9,7 +9,10 @@ use super::Mask;
 /// assert_eq!(m.as_raw(), &vec![0, 255, 255]);
 /// ```
 pub fn binarize(width: u32, height: u32, grey: &[u8], min_grey: u8) -> Mask {
-    let data = grey.iter().map(|&g| if g >= min_grey { 255 } else { 0 }).collect();
+    let data = grey
+        .iter()
+        .map(|&g| if g >= min_grey { 255 } else { 0 })
+        .collect();
     Mask::from_raw(width, height, data).unwrap_or_else(|| Mask::new(width, height))
 }
 

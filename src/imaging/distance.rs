@@ -21,7 +21,9 @@ pub fn squared_distance_to_foreground(mask: &Mask) -> Vec<f64> {
 /// ```
 pub fn distance_to_background(mask: &Mask) -> Vec<f32> {
     let mut inverse = mask.clone();
-    inverse.iter_mut().for_each(|p| *p = if *p == 0 { 255 } else { 0 });
+    inverse
+        .iter_mut()
+        .for_each(|p| *p = if *p == 0 { 255 } else { 0 });
     let (w, h) = (mask.width() as usize, mask.height() as usize);
     euclidean_squared_distance_transform(&inverse)
         .into_raw()

@@ -20,7 +20,12 @@ pub struct Labels {
 impl Labels {
     /// An all-zero label image.
     pub fn new(width: u32, height: u32) -> Labels {
-        Labels { width, height, data: vec![0; width as usize * height as usize], count: 0 }
+        Labels {
+            width,
+            height,
+            data: vec![0; width as usize * height as usize],
+            count: 0,
+        }
     }
 
     /// Pixel count of every label, indexed by label (index 0 = unlabelled).
@@ -61,12 +66,21 @@ impl Labels {
 /// assert_eq!(label_components(&m, true).data, vec![1, 0, 2, 2, 0]);
 /// ```
 pub fn label_components(mask: &Mask, eight: bool) -> Labels {
-    let conn = if eight { Connectivity::Eight } else { Connectivity::Four };
+    let conn = if eight {
+        Connectivity::Eight
+    } else {
+        Connectivity::Four
+    };
     let img = connected_components(mask, conn, image::Luma([0u8]));
     let (width, height) = img.dimensions();
     let data = img.into_raw();
     let count = data.iter().copied().max().unwrap_or(0);
-    let mut labels = Labels { width, height, data, count };
+    let mut labels = Labels {
+        width,
+        height,
+        data,
+        count,
+    };
     labels.compact();
     labels
 }

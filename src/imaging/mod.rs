@@ -28,10 +28,18 @@ pub type Mask = image::GrayImage;
 /// Parses an ASCII picture into a mask: `#` or `1` foreground, anything else background.
 #[cfg(test)]
 pub(crate) fn ascii_mask(text: &str) -> Mask {
-    let rows: Vec<&str> = text.lines().map(str::trim).filter(|l| !l.is_empty()).collect();
+    let rows: Vec<&str> = text
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect();
     let w = rows.iter().map(|r| r.len()).max().unwrap_or(0) as u32;
     Mask::from_fn(w, rows.len() as u32, |x, y| {
-        let c = rows[y as usize].as_bytes().get(x as usize).copied().unwrap_or(b'.');
+        let c = rows[y as usize]
+            .as_bytes()
+            .get(x as usize)
+            .copied()
+            .unwrap_or(b'.');
         image::Luma([if c == b'#' || c == b'1' { 255 } else { 0 }])
     })
 }
@@ -42,7 +50,11 @@ pub(crate) fn mask_ascii(mask: &Mask) -> String {
     let mut s = String::new();
     for y in 0..mask.height() {
         for x in 0..mask.width() {
-            s.push(if mask.get_pixel(x, y)[0] != 0 { '#' } else { '.' });
+            s.push(if mask.get_pixel(x, y)[0] != 0 {
+                '#'
+            } else {
+                '.'
+            });
         }
         s.push('\n');
     }

@@ -6,7 +6,8 @@ use super::{Mask, squared_distance_to_foreground};
 
 fn inverse(mask: &Mask) -> Mask {
     let mut inv = mask.clone();
-    inv.iter_mut().for_each(|p| *p = if *p == 0 { 255 } else { 0 });
+    inv.iter_mut()
+        .for_each(|p| *p = if *p == 0 { 255 } else { 0 });
     inv
 }
 
@@ -90,8 +91,17 @@ mod tests {
              .#####
              .###..",
         );
-        assert_eq!(mask_ascii(&open(&m, 1.0)), "......\n..##..\n.####.\n..##..\n");
-        let c = close(&ascii_mask(".......\n.##.##.\n.##.##.\n.##.##.\n.......\n"), 1.0);
-        assert_eq!(mask_ascii(&c), ".......\n.##.##.\n.#####.\n.##.##.\n.......\n");
+        assert_eq!(
+            mask_ascii(&open(&m, 1.0)),
+            "......\n..##..\n.####.\n..##..\n"
+        );
+        let c = close(
+            &ascii_mask(".......\n.##.##.\n.##.##.\n.##.##.\n.......\n"),
+            1.0,
+        );
+        assert_eq!(
+            mask_ascii(&c),
+            ".......\n.##.##.\n.#####.\n.##.##.\n.......\n"
+        );
     }
 }

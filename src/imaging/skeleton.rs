@@ -121,7 +121,12 @@ mod tests {
         let s = skeletonize(&m);
         let text = mask_ascii(&s);
         let rows: Vec<&str> = text.lines().collect();
-        assert!(rows.iter().enumerate().all(|(y, r)| y == 2 || !r.contains('#')), "{rows:?}");
+        assert!(
+            rows.iter()
+                .enumerate()
+                .all(|(y, r)| y == 2 || !r.contains('#')),
+            "{rows:?}"
+        );
         let n = rows[2].matches('#').count();
         assert!((4..=6).contains(&n), "{rows:?}");
     }

@@ -60,7 +60,10 @@ pub fn watershed(elevation: &[u16], markers: &Labels, allowed: &[bool]) -> Label
         };
         let i = i as usize;
         // Take the label of the first labelled neighbour (all are from the same flood front).
-        let label = neighbours(i, w, h).map(|j| out.data[j]).find(|&l| l != 0).unwrap_or(0);
+        let label = neighbours(i, w, h)
+            .map(|j| out.data[j])
+            .find(|&l| l != 0)
+            .unwrap_or(0);
         out.data[i] = label;
         for j in neighbours(i, w, h) {
             if !queued[j] && allowed[j] {
@@ -112,7 +115,12 @@ mod tests {
     #[test]
     fn disallowed_pixels_block_the_flood() {
         let elev = vec![0u16; 5];
-        let markers = Labels { width: 5, height: 1, data: vec![1, 0, 0, 0, 0], count: 1 };
+        let markers = Labels {
+            width: 5,
+            height: 1,
+            data: vec![1, 0, 0, 0, 0],
+            count: 1,
+        };
         let out = watershed(&elev, &markers, &[true, true, false, true, true]);
         assert_eq!(out.data, vec![1, 1, 0, 0, 0]);
     }

@@ -28,7 +28,9 @@ fn floor_plan(res: f64) -> OccupancyGrid {
         for col in 0..w {
             let x = (f64::from(col) + 0.5) * res;
             let y = hm - (f64::from(row) + 0.5) * res;
-            let free = free_rects.iter().any(|&(x0, y0, x1, y1)| x >= x0 && x < x1 && y >= y0 && y < y1);
+            let free = free_rects
+                .iter()
+                .any(|&(x0, y0, x1, y1)| x >= x0 && x < x1 && y >= y0 && y < y1);
             cells.push(if free { Cell::Free } else { Cell::Occupied });
         }
     }
@@ -38,9 +40,23 @@ fn floor_plan(res: f64) -> OccupancyGrid {
 fn check_plan(grid: &OccupancyGrid, params: &ExtractParams) {
     let x = extract(grid, params).unwrap();
     let nrg = &x.nrg;
-    let of = |k: SpaceKind| nrg.spaces().iter().filter(|s| s.kind == k).collect::<Vec<_>>();
-    let (rooms, corridors, doors) = (of(SpaceKind::Room), of(SpaceKind::Corridor), of(SpaceKind::Door));
-    assert_eq!((rooms.len(), corridors.len(), doors.len()), (3, 1, 3), "{}", nrg.to_json());
+    let of = |k: SpaceKind| {
+        nrg.spaces()
+            .iter()
+            .filter(|s| s.kind == k)
+            .collect::<Vec<_>>()
+    };
+    let (rooms, corridors, doors) = (
+        of(SpaceKind::Room),
+        of(SpaceKind::Corridor),
+        of(SpaceKind::Door),
+    );
+    assert_eq!(
+        (rooms.len(), corridors.len(), doors.len()),
+        (3, 1, 3),
+        "{}",
+        nrg.to_json()
+    );
     let corridor = corridors[0].id;
     for d in &doors {
         let ends: Vec<_> = nrg.connections_of(d.id).collect();
@@ -48,7 +64,11 @@ fn check_plan(grid: &OccupancyGrid, params: &ExtractParams) {
         assert!(ends.iter().all(|c| c.kind == ConnectionKind::Door));
         assert!(ends.iter().any(|c| c.other(d.id) == Some(corridor)));
         // Door anchors sit in the wall gap (y ≈ 3.1 m).
-        assert!((d.anchor[1] - 3.1).abs() < 0.4, "door anchor {:?}", d.anchor);
+        assert!(
+            (d.anchor[1] - 3.1).abs() < 0.4,
+            "door anchor {:?}",
+            d.anchor
+        );
     }
     for r in &rooms {
         assert!((r.area_m2 - 14.8).abs() < 2.0, "room area {}", r.area_m2);
@@ -56,7 +76,11 @@ fn check_plan(grid: &OccupancyGrid, params: &ExtractParams) {
         assert!(r.anchor[1] > 3.2);
         assert_eq!(nrg.connections_of(r.id).count(), 1);
     }
-    assert!((corridors[0].area_m2 - 23.2).abs() < 3.0, "corridor area {}", corridors[0].area_m2);
+    assert!(
+        (corridors[0].area_m2 - 23.2).abs() < 3.0,
+        "corridor area {}",
+        corridors[0].area_m2
+    );
     // No room–room or door–door edges.
     for c in nrg.connections() {
         let (a, b) = (nrg.space(c.a).unwrap().kind, nrg.space(c.b).unwrap().kind);
@@ -75,7 +99,10 @@ fn watershed_finds_three_rooms_a_corridor_and_three_doors_at_two_resolutions() {
 
 #[test]
 fn ccl_finds_the_same_plan() {
-    let params = ExtractParams { method: Method::Ccl, ..ExtractParams::default() };
+    let params = ExtractParams {
+        method: Method::Ccl,
+        ..ExtractParams::default()
+    };
     check_plan(&floor_plan(0.05), &params);
 }
 
@@ -85,7 +112,11 @@ fn json_and_label_png_outputs() {
     let v: serde_json::Value = serde_json::from_str(&x.to_json()).unwrap();
     let spaces = v["spaces"].as_array().unwrap();
     assert_eq!(spaces.len(), 7);
-    assert!(spaces.iter().all(|s| s["pixel_centroid"].as_array().is_some_and(|c| c.len() == 2)));
+    assert!(
+        spaces
+            .iter()
+            .all(|s| s["pixel_centroid"].as_array().is_some_and(|c| c.len() == 2))
+    );
     let png = x.labels_png().unwrap();
     let img = image::load_from_memory(&png).unwrap().into_luma16();
     assert_eq!(img.dimensions(), (120, 80));
@@ -113,9 +144,9 @@ fn a_lidar_ray_into_unknown_space_is_not_a_room() {
 }
 
 fn shared() -> Option<PathBuf> {
-    let dir = std::env::var("NRGDB_SHARED").map(PathBuf::from).unwrap_or_else(|_| {
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared")
-    });
+    let dir = std::env::var("NRGDB_SHARED")
+        .map(PathBuf::from)
+        .unwrap_or_else(|_| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared"));
     if dir.join("maps").is_dir() {
         return Some(dir.join("maps"));
     }
@@ -131,8 +162,18 @@ fn shared_willow_full_gives_a_connected_sensible_nrg() {
     let Some(maps) = shared() else { return };
     let grid = load_map(&maps.join("willow-full.yaml"), &LoadOptions::default()).unwrap();
     let x = extract(&grid, &ExtractParams::default()).unwrap();
-    let doors = x.nrg.spaces().iter().filter(|s| s.kind == SpaceKind::Door).count();
-    let rooms = x.nrg.spaces().iter().filter(|s| s.kind != SpaceKind::Door).count();
+    let doors = x
+        .nrg
+        .spaces()
+        .iter()
+        .filter(|s| s.kind == SpaceKind::Door)
+        .count();
+    let rooms = x
+        .nrg
+        .spaces()
+        .iter()
+        .filter(|s| s.kind != SpaceKind::Door)
+        .count();
     assert!((40..400).contains(&doors), "{doors} doors");
     assert!((40..400).contains(&rooms), "{rooms} rooms");
 }
@@ -144,6 +185,9 @@ fn shared_freiburg79_scores() {
     let gt = nrgdb::eval::load_ground_truth(&maps.join("Freiburg79_scan_gt.png"), &grid).unwrap();
     let x = extract(&grid, &ExtractParams::default()).unwrap();
     let e = nrgdb::eval::evaluate(&gt, &x, grid.resolution);
-    assert!(e.rooms.recall_micro > 0.85 && e.rooms.precision_micro > 0.95, "{e:?}");
+    assert!(
+        e.rooms.recall_micro > 0.85 && e.rooms.precision_micro > 0.95,
+        "{e:?}"
+    );
     assert!(e.doors.recall > 0.9 && e.doors.precision > 0.9, "{e:?}");
 }
