@@ -55,7 +55,53 @@ impl GroundTruth {
                 .collect(),
         )
         .unwrap_or_else(|| Mask::new(width, height));
-        let lines = label_components(&line_mask, true);
+        GroundTruth::with_lines(rooms, &line_mask)
+    }
+
+    /// Builds the GT from a colour image (ROSE2 style): each distinct
+    /// non-black colour with more than 100 px is one room; doorway lines are
+    /// map-free pixels in no room, otherwise as for [`GroundTruth::from_grey`].
+    pub fn from_colours(width: u32, height: u32, rgb: &[[u8; 3]], map: &[u8]) -> GroundTruth {
+        let mut ids: std::collections::HashMap<[u8; 3], u32> = std::collections::HashMap::new();
+        let mut data = Vec::with_capacity(rgb.len());
+        for c in rgb {
+            if *c == [0, 0, 0] {
+                data.push(0);
+                continue;
+            }
+            let next = ids.len() as u32 + 1;
+            data.push(*ids.entry(*c).or_insert(next));
+        }
+        let mut rooms = Labels {
+            width,
+            height,
+            data,
+            count: ids.len() as u32,
+        };
+        let areas = rooms.areas();
+        for l in &mut rooms.data {
+            if *l != 0 && areas[*l as usize] <= 100 {
+                *l = 0;
+            }
+        }
+        rooms.compact();
+        let line_mask = Mask::from_raw(
+            width,
+            height,
+            rooms
+                .data
+                .iter()
+                .zip(map)
+                .map(|(&r, &m)| if m >= 250 && r == 0 { 255 } else { 0 })
+                .collect(),
+        )
+        .unwrap_or_else(|| Mask::new(width, height));
+        GroundTruth::with_lines(rooms, &line_mask)
+    }
+
+    fn with_lines(rooms: Labels, line_mask: &Mask) -> GroundTruth {
+        let (width, height) = (rooms.width, rooms.height);
+        let lines = label_components(line_mask, true);
         let mut pixels: Vec<Vec<u32>> = vec![Vec::new(); lines.count as usize + 1];
         for (i, &l) in lines.data.iter().enumerate() {
             if l != 0 {
@@ -96,6 +142,7 @@ impl GroundTruth {
 }
 
 /// Loads a GT image (any format `grid` reads) for `map`; its size must match.
+/// A grey GT is read IPA style, a coloured one ROSE2 style (a room a colour).
 pub fn load_ground_truth(path: &Path, map: &OccupancyGrid) -> Result<GroundTruth, EvalError> {
     let opts = LoadOptions {
         max_pixels: u64::MAX,
@@ -113,8 +160,21 @@ pub fn load_ground_truth(path: &Path, map: &OccupancyGrid) -> Result<GroundTruth
         }
         .into());
     }
-    let (grey, _) = crate::grid::grey_and_alpha(&img);
-    let gt = GroundTruth::from_grey(map.width, map.height, &grey, &map.grey);
+    let rgb = img.to_rgb8();
+    // ROSE2 style when most non-black pixels are not grey.
+    let non_black = rgb.pixels().filter(|p| p.0 != [0, 0, 0]).count();
+    let colour = rgb
+        .pixels()
+        .filter(|p| p[0] != p[1] || p[1] != p[2])
+        .count();
+    let coloured = colour * 2 > non_black;
+    let gt = if coloured {
+        let px: Vec<[u8; 3]> = rgb.pixels().map(|p| p.0).collect();
+        GroundTruth::from_colours(map.width, map.height, &px, &map.grey)
+    } else {
+        let (grey, _) = crate::grid::grey_and_alpha(&img);
+        GroundTruth::from_grey(map.width, map.height, &grey, &map.grey)
+    };
     if gt.rooms.count == 0 {
         return Err(EvalError::NoRooms {
             path: path.to_path_buf(),
@@ -149,5 +209,22 @@ mod tests {
         assert_eq!(g.doors.len(), 1);
         assert_eq!(g.doors[0].rooms, vec![1, 2]);
         assert_eq!(g.doors[0].pixels.len(), 3);
+    }
+
+    #[test]
+    fn rooms_by_colour() {
+        let (w, h) = (30u32, 10u32);
+        let map = vec![255u8; (w * h) as usize];
+        let rgb: Vec<[u8; 3]> = (0..w * h)
+            .map(|i| match i % w {
+                0..=13 => [200, 10, 10],
+                14 => [0, 0, 0],
+                _ => [10, 200, 10],
+            })
+            .collect();
+        let g = GroundTruth::from_colours(w, h, &rgb, &map);
+        assert_eq!(g.rooms.count, 2);
+        assert_eq!(g.doors.len(), 1);
+        assert_eq!(g.doors[0].rooms, vec![1, 2]);
     }
 }
