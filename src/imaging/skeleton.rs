@@ -52,9 +52,11 @@ pub fn skeletonize(mask: &Mask) -> Mask {
                 }
                 let (p2, p4, p6, p8) = (p[0], p[2], p[4], p[6]);
                 let ok = if step == 0 {
-                    !(p2 && p4 && p6) && !(p4 && p6 && p8)
+                    // P2·P4·P6 = 0 and P4·P6·P8 = 0
+                    !(p4 && p6 && (p2 || p8))
                 } else {
-                    !(p2 && p4 && p8) && !(p2 && p6 && p8)
+                    // P2·P4·P8 = 0 and P2·P6·P8 = 0
+                    !(p2 && p8 && (p4 || p6))
                 };
                 if ok {
                     to_delete.push(i);
@@ -150,7 +152,7 @@ mod tests {
         assert!(label_components(&inv, false).count >= 2);
         // Thinner than the input.
         let n = s.as_raw().iter().filter(|&&p| p != 0).count();
-        assert!(n < 30 && n >= 16, "{n}");
+        assert!((16..30).contains(&n), "{n}");
     }
 
     #[test]

@@ -35,12 +35,7 @@ pub fn watershed(elevation: &[u16], markers: &Labels, allowed: &[bool]) -> Label
         queues[level].push_back(idx);
     };
     // Seed: every unlabelled allowed neighbour of a marker pixel.
-    let mut queued = vec![false; n];
-    for i in 0..n {
-        if out.data[i] != 0 {
-            queued[i] = true;
-        }
-    }
+    let mut queued: Vec<bool> = out.data.iter().map(|&l| l != 0).collect();
     for i in 0..n {
         if out.data[i] == 0 {
             continue;
