@@ -16,8 +16,9 @@ pub fn squared_distance_to_foreground(mask: &Mask) -> Vec<f64> {
 ///
 /// ```
 /// use nrgdb::imaging::{binarize, distance_to_background};
-/// let m = binarize(5, 1, &[0, 255, 255, 255, 0], 250);
-/// assert_eq!(distance_to_background(&m), vec![0.0, 1.0, 2.0, 1.0, 0.0]);
+/// let m = binarize(5, 5, &[255; 25], 250);
+/// let d = distance_to_background(&m);
+/// assert_eq!((d[0], d[2 * 5 + 2]), (1.0, 3.0)); // corner, centre
 /// ```
 pub fn distance_to_background(mask: &Mask) -> Vec<f32> {
     let mut inverse = mask.clone();

@@ -11,7 +11,8 @@ use super::Mask;
 /// // A 3-pixel-thick bar thins to its middle row.
 /// let m = binarize(7, 3, &[255; 21], 250);
 /// let s = skeletonize(&m);
-/// assert_eq!(s.as_raw().iter().filter(|&&p| p != 0).count(), 5);
+/// assert!(s.enumerate_pixels().all(|(_, y, p)| p[0] == 0 || y == 1));
+/// assert!(s.as_raw().iter().filter(|&&p| p != 0).count() >= 3);
 /// ```
 pub fn skeletonize(mask: &Mask) -> Mask {
     let (w, h) = (mask.width() as usize, mask.height() as usize);
