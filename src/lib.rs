@@ -11,9 +11,13 @@
 //! origin at the lower left, y up).
 
 pub mod atomic;
+pub mod eval;
+pub mod extract;
 pub mod fixtures;
 pub mod format;
 pub mod geojson;
+pub mod grid;
+pub mod imaging;
 pub mod indoorgml;
 pub mod model;
 pub mod query;

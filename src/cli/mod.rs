@@ -11,6 +11,8 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+pub mod eval;
+pub mod extract;
 mod map_log;
 pub mod query;
 pub mod repl;
@@ -51,6 +53,10 @@ pub enum Command {
     Query(query::Args),
     /// Interactive query shell with history, completion and highlighting.
     Repl(repl::Args),
+    /// Extract an NRG (rooms, corridors, doors, connections) from an occupancy grid map.
+    Extract(extract::Args),
+    /// Score an extraction against a ground-truth room image.
+    Eval(eval::Args),
 }
 
 /// Runs one subcommand, writing its report to `out`.
@@ -62,6 +68,8 @@ pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
         Command::MapLog(args) => map_log::run(args, out),
         Command::Query(args) => query::run(args, out),
         Command::Repl(args) => repl::run(args, out),
+        Command::Extract(args) => extract::run(args, out),
+        Command::Eval(args) => eval::run(args, out),
     }
 }
 

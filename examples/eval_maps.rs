@@ -1,0 +1,138 @@
+//! Runs `nrgdb eval` over every map in the shared map set that has a ground
+//! truth (`<name>_gt.png` next to `<name>.yaml`) and prints a per-map table
+//! and the means, plain and furnished separately.
+//!
+//! ```text
+//! cargo run --release --example eval_maps [-- MAPS_DIR [--method ccl] [--params p.toml] [--color OUT_DIR]]
+//! ```
+//! MAPS_DIR defaults to `$NRGDB_SHARED/maps` (NRGDB_SHARED defaults to `../shared`).
+//! `--color OUT_DIR` also writes each map's segmentation as a colour PNG.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use nrgdb::eval::{Evaluation, evaluate, load_ground_truth};
+use nrgdb::extract::{ExtractParams, Method, extract};
+use nrgdb::grid::{LoadOptions, load_map};
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let mut args = std::env::args().skip(1);
+    let mut dir: Option<PathBuf> = None;
+    let mut params = ExtractParams::default();
+    let mut color: Option<PathBuf> = None;
+    while let Some(a) = args.next() {
+        match a.as_str() {
+            "--method" => params.method = args.next().unwrap_or_default().parse::<Method>()?,
+            "--params" => {
+                params = toml::from_str(&std::fs::read_to_string(args.next().unwrap_or_default())?)?
+            }
+            "--color" => color = args.next().map(PathBuf::from),
+            _ => dir = Some(PathBuf::from(a)),
+        }
+    }
+    let dir = dir.unwrap_or_else(|| {
+        let shared = std::env::var("NRGDB_SHARED").unwrap_or_else(|_| "../shared".into());
+        Path::new(&shared).join("maps")
+    });
+    let mut names: Vec<String> = std::fs::read_dir(&dir)?
+        .filter_map(|e| e.ok())
+        .filter_map(|e| e.file_name().to_str().map(str::to_owned))
+        .filter_map(|n| n.strip_suffix("_gt.png").map(str::to_owned))
+        .filter(|n| dir.join(format!("{n}.yaml")).exists())
+        .collect();
+    names.sort();
+    println!(
+        "{:<32} {:>6} {:>6} {:>6} {:>6} | {:>6} {:>6} | {:>6} {:>6} | {:>5} {:>7}",
+        "map", "R", "P", "Rmac", "Pmac", "doorR", "doorP", "connR", "connP", "rooms", "ms"
+    );
+    let mut groups: [(Vec<Evaluation>, &str); 3] = [
+        (Vec::new(), "plain (IPA)"),
+        (Vec::new(), "furnished (IPA)"),
+        (Vec::new(), "rose2"),
+    ];
+    for name in &names {
+        let grid = load_map(&dir.join(format!("{name}.yaml")), &LoadOptions::default())?;
+        let gt = match load_ground_truth(&dir.join(format!("{name}_gt.png")), &grid) {
+            Ok(gt) => gt,
+            Err(e) => {
+                println!("{name:<32} skipped: {e}");
+                continue;
+            }
+        };
+        let t = Instant::now();
+        let x = extract(&grid, &params)?;
+        let ms = t.elapsed().as_secs_f64() * 1e3;
+        let e = evaluate(&gt, &x, grid.resolution);
+        println!(
+            "{:<32} {:>6.2} {:>6.2} {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>5} {:>7.1}",
+            name,
+            100.0 * e.rooms.recall_micro,
+            100.0 * e.rooms.precision_micro,
+            100.0 * e.rooms.recall_macro,
+            100.0 * e.rooms.precision_macro,
+            100.0 * e.doors.recall,
+            100.0 * e.doors.precision,
+            100.0 * e.connections.recall,
+            100.0 * e.connections.precision,
+            format!("{}/{}", e.rooms.segments, e.rooms.gt_rooms),
+            ms
+        );
+        if let Some(out) = &color {
+            std::fs::create_dir_all(out)?;
+            let w = x.labels.width as usize;
+            let img = image::RgbImage::from_fn(x.labels.width, x.labels.height, |c, r| {
+                let i = r as usize * w + c as usize;
+                let l = x.labels.data[i];
+                if l == 0 {
+                    let g = grid.grey[i] / 2;
+                    image::Rgb([g, g, g])
+                } else if x
+                    .nrg
+                    .spaces()
+                    .get(l as usize - 1)
+                    .is_some_and(|s| s.kind.as_str() == "door")
+                {
+                    image::Rgb([255, 0, 0])
+                } else {
+                    let h = l.wrapping_mul(2_654_435_761);
+                    image::Rgb([
+                        64 + (h >> 24) as u8 / 2,
+                        64 + (h >> 16) as u8 / 2,
+                        64 + (h >> 8) as u8 / 2,
+                    ])
+                }
+            });
+            img.save(out.join(format!("{name}.png")))?;
+        }
+        let g = if name.starts_with("rose2") {
+            2
+        } else if name.ends_with("_furnitures") {
+            1
+        } else {
+            0
+        };
+        groups[g].0.push(e);
+    }
+    println!();
+    for (evals, label) in &groups {
+        if evals.is_empty() {
+            continue;
+        }
+        let n = evals.len() as f64;
+        let mean = |f: &dyn Fn(&Evaluation) -> f64| 100.0 * evals.iter().map(f).sum::<f64>() / n;
+        println!(
+            "mean {:<27} {:>6.2} {:>6.2} {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | n={}",
+            label,
+            mean(&|e| e.rooms.recall_micro),
+            mean(&|e| e.rooms.precision_micro),
+            mean(&|e| e.rooms.recall_macro),
+            mean(&|e| e.rooms.precision_macro),
+            mean(&|e| e.doors.recall),
+            mean(&|e| e.doors.precision),
+            mean(&|e| e.connections.recall),
+            mean(&|e| e.connections.precision),
+            evals.len()
+        );
+    }
+    Ok(())
+}

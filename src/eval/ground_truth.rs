@@ -1,0 +1,230 @@
+//! The ground truth: IPA-style room image (rooms = 8-connected white
+//! components) and the doorway lines drawn into it.
+
+use std::path::Path;
+
+use super::EvalError;
+use crate::grid::{GridError, LoadOptions, OccupancyGrid};
+use crate::imaging::{Labels, Mask, label_components};
+
+/// A doorway line of the ground truth.
+#[derive(Debug, Clone, PartialEq)]
+pub struct DoorLine {
+    /// Its pixels (row-major indices).
+    pub pixels: Vec<u32>,
+    /// The GT rooms it touches (at least two).
+    pub rooms: Vec<u32>,
+}
+
+/// GT rooms and doorway lines in the map's pixel frame.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GroundTruth {
+    /// Room id per pixel (0 = no room); rooms of ≤ 100 px are dropped.
+    pub rooms: Labels,
+    /// Doorway lines.
+    pub doors: Vec<DoorLine>,
+}
+
+impl GroundTruth {
+    /// Builds the GT from its grey image and the map's grey image (same size):
+    /// rooms are the 8-connected components of GT grey > 250 with more than
+    /// 100 px; doorway lines are the 8-connected components (≥ 3 px) of
+    /// pixels free in the map (≥ 250) but not in the GT (≤ 250) that touch
+    /// two rooms.
+    pub fn from_grey(width: u32, height: u32, gt: &[u8], map: &[u8]) -> GroundTruth {
+        let white = Mask::from_raw(
+            width,
+            height,
+            gt.iter().map(|&g| if g > 250 { 255 } else { 0 }).collect(),
+        )
+        .unwrap_or_else(|| Mask::new(width, height));
+        let mut rooms = label_components(&white, true);
+        let areas = rooms.areas();
+        for l in &mut rooms.data {
+            if *l != 0 && areas[*l as usize] <= 100 {
+                *l = 0;
+            }
+        }
+        rooms.compact();
+        let line_mask = Mask::from_raw(
+            width,
+            height,
+            gt.iter()
+                .zip(map)
+                .map(|(&g, &m)| if m >= 250 && g <= 250 { 255 } else { 0 })
+                .collect(),
+        )
+        .unwrap_or_else(|| Mask::new(width, height));
+        GroundTruth::with_lines(rooms, &line_mask)
+    }
+
+    /// Builds the GT from a colour image (ROSE2 style): each distinct
+    /// non-black colour with more than 100 px is one room; doorway lines are
+    /// map-free pixels in no room, otherwise as for [`GroundTruth::from_grey`].
+    pub fn from_colours(width: u32, height: u32, rgb: &[[u8; 3]], map: &[u8]) -> GroundTruth {
+        let mut ids: std::collections::HashMap<[u8; 3], u32> = std::collections::HashMap::new();
+        let mut data = Vec::with_capacity(rgb.len());
+        for c in rgb {
+            if *c == [0, 0, 0] {
+                data.push(0);
+                continue;
+            }
+            let next = ids.len() as u32 + 1;
+            data.push(*ids.entry(*c).or_insert(next));
+        }
+        let mut rooms = Labels {
+            width,
+            height,
+            data,
+            count: ids.len() as u32,
+        };
+        let areas = rooms.areas();
+        for l in &mut rooms.data {
+            if *l != 0 && areas[*l as usize] <= 100 {
+                *l = 0;
+            }
+        }
+        rooms.compact();
+        let line_mask = Mask::from_raw(
+            width,
+            height,
+            rooms
+                .data
+                .iter()
+                .zip(map)
+                .map(|(&r, &m)| if m >= 250 && r == 0 { 255 } else { 0 })
+                .collect(),
+        )
+        .unwrap_or_else(|| Mask::new(width, height));
+        GroundTruth::with_lines(rooms, &line_mask)
+    }
+
+    fn with_lines(rooms: Labels, line_mask: &Mask) -> GroundTruth {
+        let (width, height) = (rooms.width, rooms.height);
+        let lines = label_components(line_mask, true);
+        let mut pixels: Vec<Vec<u32>> = vec![Vec::new(); lines.count as usize + 1];
+        for (i, &l) in lines.data.iter().enumerate() {
+            if l != 0 {
+                pixels[l as usize].push(i as u32);
+            }
+        }
+        let (w, h) = (width as i64, height as i64);
+        let mut doors = Vec::new();
+        for px in pixels.into_iter().skip(1) {
+            if px.len() < 3 {
+                continue;
+            }
+            let mut touched: Vec<u32> = Vec::new();
+            for &p in &px {
+                let (x, y) = (i64::from(p) % w, i64::from(p) / w);
+                for dy in -1..=1 {
+                    for dx in -1..=1 {
+                        let (nx, ny) = (x + dx, y + dy);
+                        if nx >= 0 && ny >= 0 && nx < w && ny < h {
+                            let r = rooms.data[(ny * w + nx) as usize];
+                            if r != 0 && !touched.contains(&r) {
+                                touched.push(r);
+                            }
+                        }
+                    }
+                }
+            }
+            if touched.len() >= 2 {
+                touched.sort_unstable();
+                doors.push(DoorLine {
+                    pixels: px,
+                    rooms: touched,
+                });
+            }
+        }
+        GroundTruth { rooms, doors }
+    }
+}
+
+/// Loads a GT image (any format `grid` reads) for `map`; its size must match.
+/// A grey GT is read IPA style, a coloured one ROSE2 style (a room a colour).
+pub fn load_ground_truth(path: &Path, map: &OccupancyGrid) -> Result<GroundTruth, EvalError> {
+    let opts = LoadOptions {
+        max_pixels: u64::MAX,
+        ..LoadOptions::default()
+    };
+    let img = crate::grid::decode_image(path, &opts)?;
+    if (img.width(), img.height()) != (map.width, map.height) {
+        return Err(GridError::SizeMismatch {
+            path: path.to_path_buf(),
+            width: img.width(),
+            height: img.height(),
+            expected_width: map.width,
+            expected_height: map.height,
+            what: "the map's size",
+        }
+        .into());
+    }
+    let rgb = img.to_rgb8();
+    // ROSE2 style when most non-black pixels are not grey.
+    let non_black = rgb.pixels().filter(|p| p.0 != [0, 0, 0]).count();
+    let colour = rgb
+        .pixels()
+        .filter(|p| p[0] != p[1] || p[1] != p[2])
+        .count();
+    let coloured = colour * 2 > non_black;
+    let gt = if coloured {
+        let px: Vec<[u8; 3]> = rgb.pixels().map(|p| p.0).collect();
+        GroundTruth::from_colours(map.width, map.height, &px, &map.grey)
+    } else {
+        let (grey, _) = crate::grid::grey_and_alpha(&img);
+        GroundTruth::from_grey(map.width, map.height, &grey, &map.grey)
+    };
+    if gt.rooms.count == 0 {
+        return Err(EvalError::NoRooms {
+            path: path.to_path_buf(),
+        });
+    }
+    Ok(gt)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rooms_and_doorway_lines() {
+        // Two 12x12 rooms (144 px each) separated by a wall with a 3 px doorway
+        // that the GT closes with a black line.
+        let (w, h) = (27u32, 14u32);
+        let mut map = vec![0u8; (w * h) as usize];
+        for y in 1..13 {
+            for x in 1..26 {
+                if x != 13 || (5..8).contains(&y) {
+                    map[(y * w + x) as usize] = 255;
+                }
+            }
+        }
+        let mut gt = map.clone();
+        for y in 5..8 {
+            gt[(y * w + 13) as usize] = 0;
+        }
+        let g = GroundTruth::from_grey(w, h, &gt, &map);
+        assert_eq!(g.rooms.count, 2);
+        assert_eq!(g.doors.len(), 1);
+        assert_eq!(g.doors[0].rooms, vec![1, 2]);
+        assert_eq!(g.doors[0].pixels.len(), 3);
+    }
+
+    #[test]
+    fn rooms_by_colour() {
+        let (w, h) = (30u32, 10u32);
+        let map = vec![255u8; (w * h) as usize];
+        let rgb: Vec<[u8; 3]> = (0..w * h)
+            .map(|i| match i % w {
+                0..=13 => [200, 10, 10],
+                14 => [0, 0, 0],
+                _ => [10, 200, 10],
+            })
+            .collect();
+        let g = GroundTruth::from_colours(w, h, &rgb, &map);
+        assert_eq!(g.rooms.count, 2);
+        assert_eq!(g.doors.len(), 1);
+        assert_eq!(g.doors[0].rooms, vec![1, 2]);
+    }
+}

@@ -1,0 +1,77 @@
+//! Free-space cleaning: the free mask without LiDAR rays leaking into unknown
+//! space, speckle and tiny islands.
+
+use crate::grid::{Cell, OccupancyGrid};
+use crate::imaging::{Mask, dilate, label_components, open};
+
+/// The cleaned free space and the free pixels it may grow back into.
+pub(crate) struct FreeSpace {
+    /// Free space after opening and dropping small components.
+    pub clean: Mask,
+    /// Originally free pixels near `clean` (corners the opening rounded off).
+    pub reachable: Vec<bool>,
+}
+
+/// Opens the free mask with a disk of `noise_radius_m` (rays and speckle are
+/// narrower than its diameter) and drops 8-connected components under
+/// `min_area_m2`.
+pub(crate) fn clean_free(grid: &OccupancyGrid, noise_radius_m: f64, min_area_m2: f64) -> FreeSpace {
+    let data = grid
+        .cells
+        .iter()
+        .map(|c| if *c == Cell::Free { 255 } else { 0 })
+        .collect();
+    let free = Mask::from_raw(grid.width, grid.height, data)
+        .unwrap_or_else(|| Mask::new(grid.width, grid.height));
+    let r = noise_radius_m / grid.resolution;
+    let mut clean = if r >= 0.5 {
+        open(&free, r)
+    } else {
+        free.clone()
+    };
+    let labels = label_components(&clean, true);
+    let areas = labels.areas();
+    let min_px = (min_area_m2 / (grid.resolution * grid.resolution)).ceil() as usize;
+    for (p, &l) in clean.iter_mut().zip(labels.data.iter()) {
+        if l != 0 && areas[l as usize] < min_px.max(1) {
+            *p = 0;
+        }
+    }
+    let near = dilate(&clean, r + 1.0);
+    let reachable = free
+        .iter()
+        .zip(near.iter())
+        .map(|(&f, &n)| f != 0 && n != 0)
+        .collect();
+    FreeSpace { clean, reachable }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rays_and_islands_go_rooms_stay() {
+        // A 6x6 room with a one-pixel ray leaving it and a lone free pixel.
+        let g = OccupancyGrid::from_ascii(
+            "##########????
+             #......#??????
+             #...........??
+             #......#??????
+             #......#???.??
+             #......#??????
+             #......#??????
+             ##########????",
+            0.1,
+        );
+        let f = clean_free(&g, 0.1, 0.05);
+        let w = g.width as usize;
+        assert_eq!(f.clean.as_raw()[2 * w + 10], 0, "ray removed");
+        assert_eq!(f.clean.as_raw()[4 * w + 11], 0, "island removed");
+        assert_ne!(f.clean.as_raw()[3 * w + 3], 0, "room kept");
+        assert!(
+            !f.reachable[2 * w + 11],
+            "the far end of the ray is not reachable"
+        );
+    }
+}

@@ -1,0 +1,33 @@
+//! Errors raised by extraction.
+
+/// Why a map could not be turned into an NRG.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum ExtractError {
+    /// A parameter is out of range.
+    #[error("parameter `{name}` = {value} is invalid: lengths must be finite and >= 0")]
+    BadParam {
+        /// The parameter.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// Nothing free is left after noise removal.
+    #[error(
+        "no free space is left after removing noise narrower than {noise_m} m and components under {min_area_m2} m² (lower noise_radius_m or min_free_area_m2)"
+    )]
+    NoSpace {
+        /// The noise radius used.
+        noise_m: f64,
+        /// The minimum area used.
+        min_area_m2: f64,
+    },
+    /// The map has more spaces than a 16-bit label image can hold.
+    #[error(
+        "the map produced {0} spaces; at most 65535 fit a label image (raise min_room_area_m2)"
+    )]
+    TooManySpaces(usize),
+    /// The extracted graph broke a model invariant (a bug).
+    #[error("extracted graph is not a valid nrg: {0}")]
+    Model(#[from] crate::model::ModelError),
+}

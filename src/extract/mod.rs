@@ -1,0 +1,29 @@
+//! Extraction: an [`OccupancyGrid`](crate::grid::OccupancyGrid) in, an
+//! [`Nrg`](crate::model::Nrg) of room, corridor and door spaces in metres out.
+//!
+//! Owns the pipeline order and [`ExtractParams`]; uses grid, imaging and
+//! model. Must not use store, indoorgml, server or the terminal. Pixels never
+//! leave this module except as the label image of an [`Extraction`].
+//!
+//! Stages (see `pipeline.rs`): free space cleaned of LiDAR rays and islands
+//! (`clean`), exact distance transform, segmentation (`segment`: distance
+//! markers + Meyer watershed, or `ccl`: the paper's Experiment I), merging of
+//! tiny regions (`merge`), door spaces cut across narrow borders (`doors`),
+//! region adjacency, labelling and refinement (`graph`), outlines (`polygon`).
+
+mod ccl;
+mod clean;
+mod doors;
+mod error;
+mod graph;
+mod merge;
+mod output;
+mod params;
+mod pipeline;
+mod polygon;
+mod segment;
+mod simplify;
+
+pub use error::ExtractError;
+pub use params::{ExtractParams, Method};
+pub use pipeline::{Extraction, extract};

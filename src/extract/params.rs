@@ -1,0 +1,121 @@
+//! [`ExtractParams`]: every tunable of the pipeline, lengths in metres.
+
+use serde::{Deserialize, Serialize};
+
+/// Which segmentation the pipeline runs.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Method {
+    /// The paper's Experiment I (Tab. 1): erosion, opening, connected
+    /// components, doors from the opening's XOR.
+    Ccl,
+    /// The paper's Experiment II (Tab. 2–4): distance transform, marker
+    /// watershed, doors at narrow basin boundaries, RAG and refinement.
+    #[default]
+    Watershed,
+}
+
+impl std::str::FromStr for Method {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        match s {
+            "ccl" => Ok(Method::Ccl),
+            "watershed" => Ok(Method::Watershed),
+            other => Err(format!(
+                "unknown method `{other}` (expected ccl or watershed)"
+            )),
+        }
+    }
+}
+
+/// All parameters of [`crate::extract::extract`]. Lengths are metres and
+/// areas square metres, converted to pixels with the map's resolution, so one
+/// set of defaults serves 0.05 and 0.1 m/px maps alike. Loads from TOML
+/// (missing keys take their defaults).
+///
+/// ```
+/// let p: nrgdb::extract::ExtractParams = toml::from_str("door_width_max_m = 1.2").unwrap();
+/// assert_eq!(p.door_width_max_m, 1.2);
+/// assert_eq!(p.method, nrgdb::extract::Method::Watershed);
+/// ```
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct ExtractParams {
+    /// Segmentation method.
+    pub method: Method,
+    /// Free space narrower than twice this is noise (LiDAR rays leaking into
+    /// unknown space, speckle) and is removed by an opening. Default 0.2 m.
+    pub noise_radius_m: f64,
+    /// Free components smaller than this are dropped. Default 1.0 m².
+    pub min_free_area_m2: f64,
+    /// Room cores are the places farther than this from any obstacle; a
+    /// passage narrower than twice this separates two spaces. Default 0.5 m.
+    pub core_radius_m: f64,
+    /// A room core that splits, at a higher distance level, into parts of at
+    /// least this area becomes one space per part (rooms joined by a doorway
+    /// wider than `2 core_radius_m`). Default 1.0 m².
+    pub split_min_core_m2: f64,
+    /// A boundary between two spaces whose passage is at most this wide is a
+    /// door; wider boundaries are open connections. Default 1.6 m.
+    pub door_width_max_m: f64,
+    /// Thickness of a door space across the doorway. Default 0.3 m.
+    pub door_depth_m: f64,
+    /// Spaces smaller than this merge into their longest-bordering neighbour
+    /// (small rooms above it are kept). Default 1.0 m².
+    pub min_room_area_m2: f64,
+    /// A non-door space of degree ≥ 2 is a corridor only if its area over
+    /// the square of its widest inscribed diameter is at least this (0 = the
+    /// paper's pure degree rule). Default 2.5.
+    pub corridor_min_elongation: f64,
+    /// Douglas–Peucker tolerance for polygons. Default 0.05 m.
+    pub simplify_m: f64,
+    /// CCL method: erosion radius (thickens walls). Default 0.1 m.
+    pub ccl_erode_m: f64,
+    /// CCL method: opening radius (cuts doorways). Default 0.5 m.
+    pub ccl_open_m: f64,
+}
+
+impl Default for ExtractParams {
+    fn default() -> Self {
+        ExtractParams {
+            method: Method::Watershed,
+            noise_radius_m: 0.2,
+            min_free_area_m2: 1.0,
+            core_radius_m: 0.5,
+            split_min_core_m2: 1.0,
+            door_width_max_m: 1.6,
+            door_depth_m: 0.3,
+            min_room_area_m2: 1.0,
+            corridor_min_elongation: 2.5,
+            simplify_m: 0.05,
+            ccl_erode_m: 0.1,
+            ccl_open_m: 0.5,
+        }
+    }
+}
+
+impl ExtractParams {
+    /// Checks that every length is finite and non-negative; returns the bad field.
+    pub fn validate(&self) -> Result<(), (&'static str, f64)> {
+        let fields = [
+            ("noise_radius_m", self.noise_radius_m),
+            ("min_free_area_m2", self.min_free_area_m2),
+            ("core_radius_m", self.core_radius_m),
+            ("split_min_core_m2", self.split_min_core_m2),
+            ("door_width_max_m", self.door_width_max_m),
+            ("door_depth_m", self.door_depth_m),
+            ("min_room_area_m2", self.min_room_area_m2),
+            ("corridor_min_elongation", self.corridor_min_elongation),
+            ("simplify_m", self.simplify_m),
+            ("ccl_erode_m", self.ccl_erode_m),
+            ("ccl_open_m", self.ccl_open_m),
+        ];
+        match fields
+            .into_iter()
+            .find(|(_, v)| !(v.is_finite() && *v >= 0.0))
+        {
+            Some(bad) => Err(bad),
+            None => Ok(()),
+        }
+    }
+}

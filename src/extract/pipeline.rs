@@ -1,0 +1,234 @@
+//! The extraction pipeline: clean → distance → segment → merge → doors →
+//! graph → polygons → [`Nrg`].
+
+use std::collections::BTreeMap;
+use std::time::{Duration, Instant};
+
+use super::ccl::segment_ccl;
+use super::clean::clean_free;
+use super::doors::{Border, borders, cut_doors};
+use super::graph::topology;
+use super::merge::merge_small;
+use super::polygon::{bounding_boxes, outline};
+use super::segment::segment_basins;
+use super::{ExtractError, ExtractParams, Method};
+use crate::grid::OccupancyGrid;
+use crate::imaging::{Labels, distance_to_background};
+use crate::model::{Connection, Nrg, Space, SpaceId, SpaceKind};
+
+/// The result of [`extract`].
+#[derive(Debug, Clone)]
+pub struct Extraction {
+    /// The NRG, in metres in the map frame.
+    pub nrg: Nrg,
+    /// Space id per pixel (0 = in no space), the map's size, row 0 at the top.
+    pub labels: Labels,
+    /// Mean `[col, row]` of each space's pixels.
+    pub pixel_centroids: BTreeMap<SpaceId, [f64; 2]>,
+    /// Wall-clock time of each stage, in order.
+    pub timings: Vec<(&'static str, Duration)>,
+}
+
+struct Clock {
+    last: Instant,
+    timings: Vec<(&'static str, Duration)>,
+}
+
+impl Clock {
+    fn lap(&mut self, stage: &'static str) {
+        let now = Instant::now();
+        self.timings.push((stage, now - self.last));
+        self.last = now;
+    }
+}
+
+/// Extracts the NRG of rooms, corridors and doors from an occupancy grid.
+///
+/// ```
+/// use nrgdb::extract::{ExtractParams, extract};
+/// use nrgdb::grid::OccupancyGrid;
+/// // Two 2 m rooms joined by a 0.8 m doorway, at 0.1 m/px.
+/// let mut rows = vec!["#".repeat(45)];
+/// for y in 0..20 {
+///     let door = (6..14).contains(&y);
+///     rows.push(format!("#{}{}{}#", ".".repeat(20), if door { ".." } else { "##" }, ".".repeat(21)));
+/// }
+/// rows.push("#".repeat(45));
+/// let grid = OccupancyGrid::from_ascii(&rows.join("\n"), 0.1);
+/// let x = extract(&grid, &ExtractParams::default()).unwrap();
+/// let doors = x.nrg.spaces().iter().filter(|s| s.kind.as_str() == "door").count();
+/// assert_eq!((x.nrg.spaces().len(), doors), (3, 1));
+/// ```
+pub fn extract(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction, ExtractError> {
+    params
+        .validate()
+        .map_err(|(name, value)| ExtractError::BadParam { name, value })?;
+    let res = grid.resolution;
+    let mut clock = Clock {
+        last: Instant::now(),
+        timings: Vec::new(),
+    };
+    let free = clean_free(grid, params.noise_radius_m, params.min_free_area_m2);
+    if free.clean.iter().all(|&p| p == 0) {
+        return Err(ExtractError::NoSpace {
+            noise_m: params.noise_radius_m,
+            min_area_m2: params.min_free_area_m2,
+        });
+    }
+    clock.lap("clean");
+    let dist = distance_to_background(&free.clean);
+    clock.lap("distance");
+    let min_free_px = (params.min_free_area_m2 / (res * res)).ceil() as usize;
+    let mut regions = match params.method {
+        Method::Watershed => segment_basins(
+            &free.clean,
+            &free.reachable,
+            &dist,
+            params.core_radius_m / res,
+            min_free_px,
+            (params.split_min_core_m2 / (res * res)).ceil() as usize,
+        ),
+        Method::Ccl => segment_ccl(
+            &free.clean,
+            &free.reachable,
+            params.ccl_erode_m / res,
+            params.ccl_open_m / res,
+            min_free_px,
+        ),
+    };
+    clock.lap("segment");
+    merge_small(
+        &mut regions,
+        (params.min_room_area_m2 / (res * res)).ceil() as usize,
+    );
+    clock.lap("merge");
+    let all = borders(&regions, &dist);
+    let door_px = params.door_width_max_m / res;
+    let doors: Vec<&Border> = all.iter().filter(|b| b.width_px <= door_px).collect();
+    let door_pairs: Vec<(u32, u32)> = doors.iter().map(|b| b.pair).collect();
+    let n_regions = regions.count;
+    let labels = cut_doors(&regions, &doors, (params.door_depth_m / res).max(1.0));
+    clock.lap("doors");
+    let shape = region_shapes(&labels, &dist);
+    let topo = topology(
+        &labels,
+        n_regions,
+        &door_pairs,
+        &shape,
+        params.corridor_min_elongation,
+    );
+    clock.lap("graph");
+    let out = build(
+        grid,
+        labels,
+        &dist,
+        &topo.kinds,
+        &topo.edges,
+        params.simplify_m,
+    )?;
+    clock.lap("polygons");
+    let (labels, nrg, pixel_centroids) = out;
+    Ok(Extraction {
+        nrg,
+        labels,
+        pixel_centroids,
+        timings: clock.timings,
+    })
+}
+
+/// (area in px, widest inscribed diameter in px) of every label.
+fn region_shapes(labels: &Labels, dist: &[f32]) -> Vec<(usize, f64)> {
+    let mut s = vec![(0usize, 0.0f64); labels.count as usize + 1];
+    for (&l, &d) in labels.data.iter().zip(dist) {
+        let e = &mut s[l as usize];
+        e.0 += 1;
+        e.1 = e.1.max(2.0 * f64::from(d));
+    }
+    s
+}
+
+type Built = (Labels, Nrg, BTreeMap<SpaceId, [f64; 2]>);
+
+/// Renumbers non-empty labels to space ids 1..=n and builds spaces and connections.
+fn build(
+    grid: &OccupancyGrid,
+    mut labels: Labels,
+    dist: &[f32],
+    kinds: &[SpaceKind],
+    edges: &[(u32, u32, crate::model::ConnectionKind)],
+    simplify_m: f64,
+) -> Result<Built, ExtractError> {
+    let n = labels.count as usize + 1;
+    let w = labels.width as usize;
+    // Per label: pixel count, sum of col/row, best anchor pixel.
+    let mut count = vec![0usize; n];
+    let mut sum = vec![[0.0f64; 2]; n];
+    let mut best = vec![(-1.0f32, 0usize); n];
+    for (i, &l) in labels.data.iter().enumerate() {
+        if l == 0 {
+            continue;
+        }
+        let l = l as usize;
+        count[l] += 1;
+        sum[l][0] += (i % w) as f64;
+        sum[l][1] += (i / w) as f64;
+        if dist[i] > best[l].0 {
+            best[l] = (dist[i], i);
+        }
+    }
+    let mut new_id = vec![0u32; n];
+    let mut next = 0u32;
+    for l in 1..n {
+        if count[l] > 0 {
+            next += 1;
+            new_id[l] = next;
+        }
+    }
+    if next > u32::from(u16::MAX) {
+        return Err(ExtractError::TooManySpaces(next as usize));
+    }
+    for v in &mut labels.data {
+        *v = new_id[*v as usize];
+    }
+    labels.count = next;
+    let boxes = bounding_boxes(&labels);
+    let mut spaces = Vec::with_capacity(next as usize);
+    let mut centroids = BTreeMap::new();
+    for l in 1..n {
+        let id = new_id[l];
+        if id == 0 {
+            continue;
+        }
+        let i = best[l].1;
+        let anchor = grid.pixel_to_metres((i % w) as f64 + 0.5, (i / w) as f64 + 0.5);
+        let (polygon, holes) = outline(&labels, id, boxes[id as usize], grid, simplify_m);
+        let mut space = Space::new(SpaceId(id), kinds[l], anchor, polygon);
+        space.holes = holes;
+        space.update_area();
+        spaces.push(space);
+        let c = count[l] as f64;
+        centroids.insert(SpaceId(id), [sum[l][0] / c, sum[l][1] / c]);
+    }
+    let anchor_of = |id: u32| spaces.get(id as usize - 1).map(|s: &Space| s.anchor);
+    let mut connections = Vec::new();
+    for &(a, b, kind) in edges {
+        let (na, nb) = (new_id[a as usize], new_id[b as usize]);
+        if na == 0 || nb == 0 || na == nb {
+            continue;
+        }
+        let (Some(pa), Some(pb)) = (anchor_of(na), anchor_of(nb)) else {
+            continue;
+        };
+        let length_m = ((pa[0] - pb[0]).powi(2) + (pa[1] - pb[1]).powi(2)).sqrt();
+        connections.push(Connection {
+            a: SpaceId(na.min(nb)),
+            b: SpaceId(na.max(nb)),
+            kind,
+            length_m,
+        });
+    }
+    connections.sort_by_key(|c| (c.a, c.b));
+    connections.dedup_by_key(|c| (c.a, c.b));
+    let nrg = Nrg::new(spaces, connections)?;
+    Ok((labels, nrg, centroids))
+}

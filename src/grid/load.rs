@@ -1,0 +1,291 @@
+//! Image decoding and cell classification.
+
+use std::path::Path;
+
+use image::{DynamicImage, ImageReader};
+
+use super::{Cell, GridError, MapMode, MapYaml, OccupancyGrid};
+
+/// How to read and classify a map image.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoadOptions {
+    /// A pixel is free iff its grey (after negate) is at least this (default 250:
+    /// the IPA benchmark's rule; ROS's `free_thresh` misreads many maps).
+    pub free_min_grey: u8,
+    /// Largest accepted image, in pixels (default 64 Mpx).
+    pub max_pixels: u64,
+}
+
+impl Default for LoadOptions {
+    fn default() -> Self {
+        LoadOptions {
+            free_min_grey: 250,
+            max_pixels: 64 * 1024 * 1024,
+        }
+    }
+}
+
+/// Loads a map from its ROS map_server YAML.
+pub fn load_map(yaml_path: &Path, options: &LoadOptions) -> Result<OccupancyGrid, GridError> {
+    let yaml = MapYaml::read(yaml_path)?;
+    let img = decode_image(&yaml.image, options)?;
+    classify(img, &yaml, options)
+}
+
+/// Loads a bare image (PGM or PNG) with the given resolution, origin `[0, 0, 0]`
+/// and trinary interpretation.
+pub fn load_image(
+    image_path: &Path,
+    resolution: f64,
+    options: &LoadOptions,
+) -> Result<OccupancyGrid, GridError> {
+    if !(resolution.is_finite() && resolution > 0.0) {
+        return Err(GridError::BadField {
+            path: image_path.to_path_buf(),
+            field: "resolution",
+            value: resolution.to_string(),
+            hint: "must be a finite number of metres per pixel > 0",
+        });
+    }
+    let yaml = MapYaml {
+        image: image_path.to_path_buf(),
+        resolution,
+        origin: [0.0; 3],
+        negate: false,
+        occupied_thresh: 0.65,
+        free_thresh: 0.196,
+        mode: MapMode::Trinary,
+    };
+    let img = decode_image(image_path, options)?;
+    classify(img, &yaml, options)
+}
+
+/// Decodes an image, checking the pixel limit before decoding the pixels.
+pub fn decode_image(path: &Path, options: &LoadOptions) -> Result<DynamicImage, GridError> {
+    let reader = ImageReader::open(path)
+        .map_err(|source| GridError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?
+        .with_guessed_format()
+        .map_err(|source| GridError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+    let (w, h) = reader.into_dimensions().map_err(|e| GridError::Image {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    })?;
+    let pixels = u64::from(w) * u64::from(h);
+    if pixels > options.max_pixels {
+        return Err(GridError::TooLarge {
+            path: path.to_path_buf(),
+            width: w,
+            height: h,
+            pixels,
+            limit: options.max_pixels,
+        });
+    }
+    if pixels == 0 {
+        return Err(GridError::Image {
+            path: path.to_path_buf(),
+            message: "image is empty".into(),
+        });
+    }
+    let reader = ImageReader::open(path)
+        .map_err(|source| GridError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?
+        .with_guessed_format()
+        .map_err(|source| GridError::Io {
+            path: path.to_path_buf(),
+            source,
+        })?;
+    reader.decode().map_err(|e| GridError::Image {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    })
+}
+
+/// Grey (0..255) and alpha per pixel, whatever the colour type and depth.
+pub fn grey_and_alpha(img: &DynamicImage) -> (Vec<u8>, Option<Vec<u8>>) {
+    let has_alpha = img.color().has_alpha();
+    if img.color().has_color() {
+        let rgba = img.to_rgba8();
+        let grey = rgba
+            .pixels()
+            .map(|p| ((u16::from(p[0]) + u16::from(p[1]) + u16::from(p[2])) / 3) as u8)
+            .collect();
+        let alpha = has_alpha.then(|| rgba.pixels().map(|p| p[3]).collect());
+        (grey, alpha)
+    } else {
+        let la = img.to_luma_alpha8();
+        let grey = la.pixels().map(|p| p[0]).collect();
+        let alpha = has_alpha.then(|| la.pixels().map(|p| p[1]).collect());
+        (grey, alpha)
+    }
+}
+
+fn classify(
+    img: DynamicImage,
+    yaml: &MapYaml,
+    options: &LoadOptions,
+) -> Result<OccupancyGrid, GridError> {
+    let (width, height) = (img.width(), img.height());
+    let (mut grey, alpha) = grey_and_alpha(&img);
+    drop(img);
+    if yaml.negate {
+        grey.iter_mut().for_each(|g| *g = 255 - *g);
+    }
+    // ROS: p = (255 - grey) / 255 is the occupancy probability.
+    let occ_max_grey = ((1.0 - yaml.occupied_thresh) * 255.0).floor() as i32;
+    let mut cells = Vec::with_capacity(grey.len());
+    for (i, g) in grey.iter_mut().enumerate() {
+        let transparent = alpha.as_ref().is_some_and(|a| a[i] == 0);
+        let cell = if transparent {
+            Cell::Unknown
+        } else if yaml.mode == MapMode::Raw {
+            // The stored value is the occupancy in percent; other values are unknown.
+            let v = 255 - *g; // undo the grey convention: raw value as written
+            let cell = match v {
+                0..=100 => {
+                    let p = f64::from(v) / 100.0;
+                    if p > yaml.occupied_thresh {
+                        Cell::Occupied
+                    } else if p < yaml.free_thresh {
+                        Cell::Free
+                    } else {
+                        Cell::Unknown
+                    }
+                }
+                _ => Cell::Unknown,
+            };
+            *g = match cell {
+                Cell::Free => 255,
+                Cell::Occupied => 0,
+                Cell::Unknown => 205,
+            };
+            cell
+        } else if *g >= options.free_min_grey {
+            Cell::Free
+        } else if i32::from(*g) < occ_max_grey {
+            Cell::Occupied
+        } else {
+            Cell::Unknown
+        };
+        if transparent {
+            *g = 205;
+        }
+        cells.push(cell);
+    }
+    if cells.iter().all(|c| *c == Cell::Unknown) {
+        return Err(GridError::AllUnknown {
+            path: yaml.image.clone(),
+        });
+    }
+    if !cells.contains(&Cell::Free) {
+        return Err(GridError::NoFreeSpace {
+            path: yaml.image.clone(),
+            free_min_grey: options.free_min_grey,
+        });
+    }
+    Ok(OccupancyGrid {
+        width,
+        height,
+        resolution: yaml.resolution,
+        origin: yaml.origin,
+        grey,
+        cells,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use image::{GrayImage, ImageBuffer, Luma, LumaA, Rgb};
+
+    fn dir() -> tempfile::TempDir {
+        tempfile::tempdir().unwrap()
+    }
+
+    fn yaml(d: &Path, image: &str, extra: &str) -> std::path::PathBuf {
+        let p = d.join("map.yaml");
+        std::fs::write(
+            &p,
+            format!("image: {image}\nresolution: 0.1\norigin: [0, 0, 0]\n{extra}"),
+        )
+        .unwrap();
+        p
+    }
+
+    #[test]
+    fn loads_pgm_and_png_variants() {
+        let d = dir();
+        let g = GrayImage::from_fn(4, 2, |x, _| Luma([if x < 2 { 255 } else { 0 }]));
+        g.save(d.path().join("m.pgm")).unwrap();
+        let m = load_map(&yaml(d.path(), "m.pgm", ""), &LoadOptions::default()).unwrap();
+        assert_eq!(m.free_count(), 4);
+        assert_eq!(m.cell(3, 1), Some(Cell::Occupied));
+
+        let g16: ImageBuffer<Luma<u16>, Vec<u16>> =
+            ImageBuffer::from_fn(4, 2, |x, _| Luma([if x < 1 { 65535 } else { 0 }]));
+        g16.save(d.path().join("m16.png")).unwrap();
+        let m = load_map(&yaml(d.path(), "m16.png", ""), &LoadOptions::default()).unwrap();
+        assert_eq!(m.free_count(), 2);
+
+        let la: ImageBuffer<LumaA<u8>, Vec<u8>> =
+            ImageBuffer::from_fn(4, 2, |x, _| LumaA([255, if x == 0 { 0 } else { 255 }]));
+        la.save(d.path().join("la.png")).unwrap();
+        let m = load_map(&yaml(d.path(), "la.png", ""), &LoadOptions::default()).unwrap();
+        assert_eq!(m.free_count(), 6);
+        assert_eq!(m.cell(0, 0), Some(Cell::Unknown));
+
+        let rgb: ImageBuffer<Rgb<u8>, Vec<u8>> = ImageBuffer::from_fn(4, 2, |x, _| {
+            if x == 0 {
+                Rgb([255, 255, 255])
+            } else {
+                Rgb([0, 0, 0])
+            }
+        });
+        rgb.save(d.path().join("rgb.png")).unwrap();
+        let m = load_map(
+            &yaml(d.path(), "rgb.png", "negate: 1\n"),
+            &LoadOptions::default(),
+        )
+        .unwrap();
+        assert_eq!(m.free_count(), 6, "negate turns black into free");
+    }
+
+    #[test]
+    fn bad_inputs_give_named_errors() {
+        let d = dir();
+        std::fs::write(d.path().join("t.png"), b"\x89PNG\r\n\x1a\n\0\0").unwrap();
+        let e = load_map(&yaml(d.path(), "t.png", ""), &LoadOptions::default()).unwrap_err();
+        assert!(matches!(e, GridError::Image { .. }), "{e}");
+        assert!(e.to_string().contains("t.png"));
+
+        let e = load_map(&yaml(d.path(), "missing.png", ""), &LoadOptions::default()).unwrap_err();
+        assert!(e.to_string().contains("missing.png"), "{e}");
+
+        let g = GrayImage::from_pixel(8, 8, Luma([205]));
+        g.save(d.path().join("u.pgm")).unwrap();
+        let e = load_map(&yaml(d.path(), "u.pgm", ""), &LoadOptions::default()).unwrap_err();
+        assert!(matches!(e, GridError::AllUnknown { .. }), "{e}");
+
+        let g = GrayImage::from_pixel(8, 8, Luma([0]));
+        g.save(d.path().join("o.pgm")).unwrap();
+        let e = load_map(&yaml(d.path(), "o.pgm", ""), &LoadOptions::default()).unwrap_err();
+        assert!(matches!(e, GridError::NoFreeSpace { .. }), "{e}");
+
+        let opts = LoadOptions {
+            max_pixels: 10,
+            ..LoadOptions::default()
+        };
+        let e = load_map(&yaml(d.path(), "o.pgm", ""), &opts).unwrap_err();
+        assert!(matches!(e, GridError::TooLarge { pixels: 64, .. }), "{e}");
+
+        let e = load_image(&d.path().join("o.pgm"), -1.0, &LoadOptions::default()).unwrap_err();
+        assert!(e.to_string().contains("resolution"), "{e}");
+    }
+}

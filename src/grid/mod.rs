@@ -1,0 +1,18 @@
+//! Map loading: a ROS map_server YAML (or a bare image) in, an
+//! [`OccupancyGrid`] out.
+//!
+//! Owns the YAML fields, image decoding (PGM/PNG, 8/16-bit, grey, grey+alpha,
+//! RGB, RGBA), the free/occupied/unknown classification and the pixel ↔ metre
+//! conversion (ROS convention: row 0 is the top of the image, the map frame
+//! has y up, `origin` is the lower-left pixel's outer corner). Uses `image`
+//! and `serde_yaml_ng`; must not use imaging, extract or anything above.
+
+mod error;
+mod load;
+mod occupancy;
+mod yaml;
+
+pub use error::GridError;
+pub use load::{LoadOptions, decode_image, grey_and_alpha, load_image, load_map};
+pub use occupancy::{Cell, OccupancyGrid};
+pub use yaml::{MapMode, MapYaml};

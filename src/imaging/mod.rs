@@ -1,0 +1,62 @@
+//! Raster algorithms on binary masks and label images: binarisation,
+//! morphology, exact Euclidean distance, connected components, marker
+//! watershed, skeletonisation and region adjacency.
+//!
+//! Owns pixel-level algorithms only; knows nothing of maps, metres or the
+//! model. Uses `image`/`imageproc`; must not import anything from the crate.
+//! A [`Mask`] is a grey image whose non-zero pixels are the foreground.
+
+mod adjacency;
+mod binarize;
+mod distance;
+mod label;
+mod morphology;
+mod skeleton;
+mod watershed;
+
+pub use adjacency::{Adjacency, region_adjacency};
+pub use binarize::binarize;
+pub use distance::{distance_to_background, squared_distance_to_foreground};
+pub use label::{Labels, label_components};
+pub use morphology::{close, dilate, erode, open};
+pub use skeleton::skeletonize;
+pub use watershed::watershed;
+
+/// A binary image: non-zero pixels are the foreground (255 by convention).
+pub type Mask = image::GrayImage;
+
+/// Parses an ASCII picture into a mask: `#` or `1` foreground, anything else background.
+#[cfg(test)]
+pub(crate) fn ascii_mask(text: &str) -> Mask {
+    let rows: Vec<&str> = text
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect();
+    let w = rows.iter().map(|r| r.len()).max().unwrap_or(0) as u32;
+    Mask::from_fn(w, rows.len() as u32, |x, y| {
+        let c = rows[y as usize]
+            .as_bytes()
+            .get(x as usize)
+            .copied()
+            .unwrap_or(b'.');
+        image::Luma([if c == b'#' || c == b'1' { 255 } else { 0 }])
+    })
+}
+
+/// Renders a mask as ASCII (`#` foreground, `.` background), rows joined by newlines.
+#[cfg(test)]
+pub(crate) fn mask_ascii(mask: &Mask) -> String {
+    let mut s = String::new();
+    for y in 0..mask.height() {
+        for x in 0..mask.width() {
+            s.push(if mask.get_pixel(x, y)[0] != 0 {
+                '#'
+            } else {
+                '.'
+            });
+        }
+        s.push('\n');
+    }
+    s
+}

@@ -1,0 +1,193 @@
+//! Extraction on generated floor plans (and, when present, the shared maps).
+
+use std::path::PathBuf;
+
+use nrgdb::extract::{ExtractParams, Method, extract};
+use nrgdb::grid::{Cell, LoadOptions, OccupancyGrid, load_map};
+use nrgdb::model::{ConnectionKind, SpaceKind, point_in_ring};
+
+/// A 12 m × 8 m floor: a 2 m corridor along the bottom, three 4 m deep
+/// rooms above it, each with a 0.9 m door onto the corridor.
+fn floor_plan(res: f64) -> OccupancyGrid {
+    let (wm, hm) = (12.0, 8.0);
+    let (w, h) = ((wm / res).round() as u32, (hm / res).round() as u32);
+    let free_rects = [
+        // corridor
+        (0.2, 1.0, 11.8, 3.0),
+        // rooms
+        (0.2, 3.2, 3.9, 7.2),
+        (4.1, 3.2, 7.9, 7.2),
+        (8.1, 3.2, 11.8, 7.2),
+        // doors through the 0.2 m wall at y 3.0..3.2
+        (1.6, 2.9, 2.5, 3.3),
+        (5.55, 2.9, 6.45, 3.3),
+        (9.5, 2.9, 10.4, 3.3),
+    ];
+    let mut cells = Vec::with_capacity((w * h) as usize);
+    for row in 0..h {
+        for col in 0..w {
+            let x = (f64::from(col) + 0.5) * res;
+            let y = hm - (f64::from(row) + 0.5) * res;
+            let free = free_rects
+                .iter()
+                .any(|&(x0, y0, x1, y1)| x >= x0 && x < x1 && y >= y0 && y < y1);
+            cells.push(if free { Cell::Free } else { Cell::Occupied });
+        }
+    }
+    OccupancyGrid::from_cells(w, h, res, [0.0, 0.0, 0.0], cells)
+}
+
+fn check_plan(grid: &OccupancyGrid, params: &ExtractParams) {
+    let x = extract(grid, params).unwrap();
+    let nrg = &x.nrg;
+    let of = |k: SpaceKind| {
+        nrg.spaces()
+            .iter()
+            .filter(|s| s.kind == k)
+            .collect::<Vec<_>>()
+    };
+    let (rooms, corridors, doors) = (
+        of(SpaceKind::Room),
+        of(SpaceKind::Corridor),
+        of(SpaceKind::Door),
+    );
+    assert_eq!(
+        (rooms.len(), corridors.len(), doors.len()),
+        (3, 1, 3),
+        "{}",
+        nrg.to_json()
+    );
+    let corridor = corridors[0].id;
+    for d in &doors {
+        let ends: Vec<_> = nrg.connections_of(d.id).collect();
+        assert_eq!(ends.len(), 2);
+        assert!(ends.iter().all(|c| c.kind == ConnectionKind::Door));
+        assert!(ends.iter().any(|c| c.other(d.id) == Some(corridor)));
+        // Door anchors sit in the wall gap (y ≈ 3.1 m).
+        assert!(
+            (d.anchor[1] - 3.1).abs() < 0.4,
+            "door anchor {:?}",
+            d.anchor
+        );
+    }
+    for r in &rooms {
+        assert!((r.area_m2 - 14.8).abs() < 2.0, "room area {}", r.area_m2);
+        assert!(point_in_ring(r.anchor, &r.polygon));
+        assert!(r.anchor[1] > 3.2);
+        assert_eq!(nrg.connections_of(r.id).count(), 1);
+    }
+    assert!(
+        (corridors[0].area_m2 - 23.2).abs() < 3.0,
+        "corridor area {}",
+        corridors[0].area_m2
+    );
+    // No room–room or door–door edges.
+    for c in nrg.connections() {
+        let (a, b) = (nrg.space(c.a).unwrap().kind, nrg.space(c.b).unwrap().kind);
+        assert!(!(a == SpaceKind::Room && b == SpaceKind::Room));
+        assert!(!(a == SpaceKind::Door && b == SpaceKind::Door));
+        assert!(c.length_m > 0.5);
+    }
+    assert_eq!(x.labels.count as usize, nrg.spaces().len());
+}
+
+#[test]
+fn watershed_finds_three_rooms_a_corridor_and_three_doors_at_two_resolutions() {
+    check_plan(&floor_plan(0.05), &ExtractParams::default());
+    check_plan(&floor_plan(0.1), &ExtractParams::default());
+}
+
+#[test]
+fn ccl_finds_the_same_plan() {
+    let params = ExtractParams {
+        method: Method::Ccl,
+        ..ExtractParams::default()
+    };
+    check_plan(&floor_plan(0.05), &params);
+}
+
+#[test]
+fn json_and_label_png_outputs() {
+    let x = extract(&floor_plan(0.1), &ExtractParams::default()).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&x.to_json()).unwrap();
+    let spaces = v["spaces"].as_array().unwrap();
+    assert_eq!(spaces.len(), 7);
+    assert!(
+        spaces
+            .iter()
+            .all(|s| s["pixel_centroid"].as_array().is_some_and(|c| c.len() == 2))
+    );
+    let png = x.labels_png().unwrap();
+    let img = image::load_from_memory(&png).unwrap().into_luma16();
+    assert_eq!(img.dimensions(), (120, 80));
+    let max = img.pixels().map(|p| p[0]).max().unwrap();
+    assert_eq!(u32::from(max), x.labels.count);
+}
+
+#[test]
+fn a_lidar_ray_into_unknown_space_is_not_a_room() {
+    let mut g = floor_plan(0.05);
+    // A 2-pixel-wide ray from the top-right room through the wall into unknown space,
+    // fanning out to 3 px.
+    let w = g.width as usize;
+    for row in 2..40usize {
+        for col in 200..(202 + row / 20) {
+            g.cells[row * w + col] = Cell::Free;
+        }
+    }
+    for row in 0..2usize {
+        for col in 0..w {
+            g.cells[row * w + col] = Cell::Unknown;
+        }
+    }
+    check_plan(&g, &ExtractParams::default());
+}
+
+fn shared() -> Option<PathBuf> {
+    let dir = std::env::var("NRGDB_SHARED")
+        .map(PathBuf::from)
+        .unwrap_or_else(|_| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared"));
+    if dir.join("maps").is_dir() {
+        return Some(dir.join("maps"));
+    }
+    if std::env::var("NRGDB_REQUIRE_SHARED").as_deref() == Ok("1") {
+        panic!("NRGDB_REQUIRE_SHARED=1 but {} has no maps/", dir.display());
+    }
+    eprintln!("skipping: shared maps not found at {}", dir.display());
+    None
+}
+
+#[test]
+fn shared_willow_full_gives_a_connected_sensible_nrg() {
+    let Some(maps) = shared() else { return };
+    let grid = load_map(&maps.join("willow-full.yaml"), &LoadOptions::default()).unwrap();
+    let x = extract(&grid, &ExtractParams::default()).unwrap();
+    let doors = x
+        .nrg
+        .spaces()
+        .iter()
+        .filter(|s| s.kind == SpaceKind::Door)
+        .count();
+    let rooms = x
+        .nrg
+        .spaces()
+        .iter()
+        .filter(|s| s.kind != SpaceKind::Door)
+        .count();
+    assert!((40..400).contains(&doors), "{doors} doors");
+    assert!((40..400).contains(&rooms), "{rooms} rooms");
+}
+
+#[test]
+fn shared_freiburg79_scores() {
+    let Some(maps) = shared() else { return };
+    let grid = load_map(&maps.join("Freiburg79_scan.yaml"), &LoadOptions::default()).unwrap();
+    let gt = nrgdb::eval::load_ground_truth(&maps.join("Freiburg79_scan_gt.png"), &grid).unwrap();
+    let x = extract(&grid, &ExtractParams::default()).unwrap();
+    let e = nrgdb::eval::evaluate(&gt, &x, grid.resolution);
+    assert!(
+        e.rooms.recall_micro > 0.85 && e.rooms.precision_micro > 0.95,
+        "{e:?}"
+    );
+    assert!(e.doors.recall > 0.9 && e.doors.precision > 0.9, "{e:?}");
+}
