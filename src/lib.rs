@@ -11,4 +11,6 @@
 //! origin at the lower left, y up).
 
 pub mod atomic;
+pub mod diff;
 pub mod model;
+pub mod store;

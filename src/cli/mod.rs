@@ -8,6 +8,15 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+mod db;
+mod export;
+mod import;
+mod maps;
+mod model_file;
+mod name;
+
+pub use model_file::{load_model, write_model};
+
 /// The command line.
 #[derive(Debug, Parser)]
 #[command(
@@ -30,12 +39,31 @@ pub struct Cli {
 
 /// The subcommands.
 #[derive(Debug, Subcommand)]
-pub enum Command {}
+pub enum Command {
+    /// Store a model file as the next revision of a map.
+    Import(import::Args),
+    /// List the maps in the database.
+    Maps(maps::MapsArgs),
+    /// List the revisions of a map.
+    Revisions(maps::RevisionsArgs),
+    /// Write a revision of a map to a file.
+    Export(export::Args),
+    /// Name a space (a new revision).
+    Name(name::Args),
+    /// Show the history of a map with messages.
+    Log(maps::LogArgs),
+}
 
 /// Runs one subcommand, writing its report to `out`.
 pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
-    let _ = out;
-    match command {}
+    match command {
+        Command::Import(args) => import::run(args, out),
+        Command::Maps(args) => maps::run_maps(args, out),
+        Command::Revisions(args) => maps::run_revisions(args, out),
+        Command::Export(args) => export::run(args, out),
+        Command::Name(args) => name::run(args, out),
+        Command::Log(args) => maps::run_log(args, out),
+    }
 }
 
 /// Sends `tracing` output to stderr at a level chosen by `-v` or `RUST_LOG`.

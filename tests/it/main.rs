@@ -1,1 +1,5 @@
 #![cfg(test)]
+
+mod store;
+mod store_building;
+mod store_cli;
