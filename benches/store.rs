@@ -10,6 +10,7 @@ use nrgdb::model::SpaceId;
 use nrgdb::store::{ImportMeta, Store};
 
 #[path = "../tests/it/store_building.rs"]
+#[allow(dead_code)]
 mod store_building;
 use store_building::{building, nudge};
 
@@ -37,7 +38,10 @@ fn import(c: &mut Criterion) {
     });
     // A re-mapping: every polygon moved, so every space is matched by
     // overlap and every row is replaced (the worst case).
-    let remaps = [building(WILLOW_SEGMENTS, 0.03, 2), building(WILLOW_SEGMENTS, 0.03, 3)];
+    let remaps = [
+        building(WILLOW_SEGMENTS, 0.03, 2),
+        building(WILLOW_SEGMENTS, 0.03, 3),
+    ];
     let dir = tempfile::tempdir().unwrap();
     let mut store = Store::open(&dir.path().join("r.sqlite")).unwrap();
     store.import("willow", &nrg, meta()).unwrap();
@@ -45,7 +49,9 @@ fn import(c: &mut Criterion) {
     c.bench_function("store/import/remapped/willow-150", |b| {
         b.iter(|| {
             k += 1;
-            store.import("willow", black_box(&remaps[k % 2]), meta()).unwrap()
+            store
+                .import("willow", black_box(&remaps[k % 2]), meta())
+                .unwrap()
         })
     });
 }
@@ -53,9 +59,13 @@ fn import(c: &mut Criterion) {
 fn load(c: &mut Criterion) {
     let dir = tempfile::tempdir().unwrap();
     let mut store = Store::open(&dir.path().join("l.sqlite")).unwrap();
-    store.import("willow", &building(WILLOW_SEGMENTS, 0.0, 1), meta()).unwrap();
+    store
+        .import("willow", &building(WILLOW_SEGMENTS, 0.0, 1), meta())
+        .unwrap();
     for k in 0..20 {
-        store.import("willow", &building(WILLOW_SEGMENTS, 0.03, k), meta()).unwrap();
+        store
+            .import("willow", &building(WILLOW_SEGMENTS, 0.03, k), meta())
+            .unwrap();
     }
     c.bench_function("store/load/latest/willow-150", |b| {
         b.iter(|| store.load(black_box("willow"), None).unwrap())
@@ -64,16 +74,23 @@ fn load(c: &mut Criterion) {
         b.iter(|| store.load(black_box("willow"), Some(1)).unwrap())
     });
     c.bench_function("store/locate/willow-150", |b| {
-        b.iter(|| store.locate("willow", None, black_box(61.0), black_box(4.0)).unwrap())
+        b.iter(|| {
+            store
+                .locate("willow", None, black_box(61.0), black_box(4.0))
+                .unwrap()
+        })
     });
 }
 
 /// Bytes of the database file after a checkpoint.
-fn db_bytes(path: &std::path::Path) -> u64 {
+fn db_bytes(path: &std::path::Path) -> i64 {
     let raw = rusqlite::Connection::open(path).unwrap();
-    raw.query_row("PRAGMA wal_checkpoint(TRUNCATE)", [], |_| Ok(())).unwrap();
-    let pages: u64 = raw.query_row("PRAGMA page_count", [], |r| r.get(0)).unwrap();
-    let size: u64 = raw.query_row("PRAGMA page_size", [], |r| r.get(0)).unwrap();
+    raw.query_row("PRAGMA wal_checkpoint(TRUNCATE)", [], |_| Ok(()))
+        .unwrap();
+    let pages: i64 = raw
+        .query_row("PRAGMA page_count", [], |r| r.get(0))
+        .unwrap();
+    let size: i64 = raw.query_row("PRAGMA page_size", [], |r| r.get(0)).unwrap();
     pages * size
 }
 
@@ -83,17 +100,21 @@ fn size_report() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("s.sqlite");
     let mut store = Store::open(&path).unwrap();
-    store.import("willow", &building(WILLOW_SEGMENTS, 0.0, 1), meta()).unwrap();
+    store
+        .import("willow", &building(WILLOW_SEGMENTS, 0.0, 1), meta())
+        .unwrap();
     let one = db_bytes(&path);
     for k in 0..100u32 {
         let room = SpaceId(2 + 5 * (k % WILLOW_SEGMENTS));
         let current = store.load("willow", None).unwrap();
-        store.import("willow", &nudge(&current, room, 0.01), meta()).unwrap();
+        store
+            .import("willow", &nudge(&current, room, 0.01), meta())
+            .unwrap();
     }
     let all = db_bytes(&path);
     let raw = rusqlite::Connection::open(&path).unwrap();
     // Payload of the rows the 100 revisions added (spaces + boxes + revisions).
-    let deltas: u64 = raw
+    let deltas: i64 = raw
         .query_row(
             "SELECT (SELECT COALESCE(SUM(length(geometry) + length(attributes) + length(kind)
                        + COALESCE(length(name), 0) + 40), 0) FROM spaces WHERE valid_from > 1)

@@ -10,7 +10,12 @@ use nrgdb::store::Store;
 #[derive(Debug, Clone, clap::Args)]
 pub struct DbArg {
     /// The database file; created on first import.
-    #[arg(long, env = "NRGDB_DB", default_value = "nrgdb.sqlite", value_name = "DB")]
+    #[arg(
+        long,
+        env = "NRGDB_DB",
+        default_value = "nrgdb.sqlite",
+        value_name = "DB"
+    )]
     pub db: PathBuf,
 }
 

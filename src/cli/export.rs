@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use miette::{IntoDiagnostic, WrapErr};
 
 use super::db::{DbArg, parse_map_rev};
-use super::model_file::write_model;
+use super::write_model;
 
 /// Write a revision of a map to a model file (the latest unless NAME@REV).
 #[derive(Debug, clap::Args)]

@@ -8,7 +8,7 @@ use miette::{IntoDiagnostic, WrapErr};
 use nrgdb::store::ImportMeta;
 
 use super::db::{DbArg, author};
-use super::model_file::load_model;
+use super::load_model;
 
 /// Store a model as the next revision of a map (the map is created on its
 /// first import). Spaces continuing spaces of the previous revision keep
@@ -37,7 +37,8 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         || args.file.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
     );
-    let mut meta = ImportMeta::new(args.message, author(args.author)).with_source(name, &model.bytes);
+    let mut meta =
+        ImportMeta::new(args.message, author(args.author)).with_source(name, &model.bytes);
     meta.params = model.params;
     let mut store = args.db.open()?;
     let done = store

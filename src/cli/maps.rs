@@ -99,7 +99,11 @@ fn write_entry(r: &RevisionInfo, out: &mut dyn Write) -> std::io::Result<()> {
         r.spaces, r.spaces_added, r.spaces_changed, r.spaces_removed, r.connections
     )?;
     writeln!(out)?;
-    let message = if r.message.is_empty() { "(no message)" } else { &r.message };
+    let message = if r.message.is_empty() {
+        "(no message)"
+    } else {
+        &r.message
+    };
     for line in message.lines() {
         writeln!(out, "    {line}")?;
     }

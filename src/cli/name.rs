@@ -61,9 +61,19 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         .message
         .unwrap_or_else(|| format!("name space {id} '{}'", args.name));
     let info = store
-        .rename_space(&args.map, id, name, ImportMeta::new(message, author(args.author)))
+        .rename_space(
+            &args.map,
+            id,
+            name,
+            ImportMeta::new(message, author(args.author)),
+        )
         .into_diagnostic()
         .wrap_err_with(|| format!("naming space {id} of map '{}'", args.map))?;
-    writeln!(out, "{}@{}: space {id} named '{}'", info.map, info.seq, args.name).into_diagnostic()?;
+    writeln!(
+        out,
+        "{}@{}: space {id} named '{}'",
+        info.map, info.seq, args.name
+    )
+    .into_diagnostic()?;
     Ok(ExitCode::SUCCESS)
 }

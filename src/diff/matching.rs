@@ -116,7 +116,7 @@ impl Shape {
     fn new(space: &Space) -> Shape {
         let polygon = Polygon::new(
             line_string(&space.polygon),
-            space.holes.iter().map(|h| line_string(h)).collect(),
+            space.holes.iter().map(line_string).collect(),
         );
         let mut min = [f64::INFINITY; 2];
         let mut max = [f64::NEG_INFINITY; 2];
@@ -313,19 +313,28 @@ mod tests {
 
     #[test]
     fn identical_models_match_one_to_one() {
-        let a = nrg(vec![rect(1, 0.0, 0.0, 4.0, 3.0), rect(2, 4.0, 0.0, 8.0, 3.0)]);
+        let a = nrg(vec![
+            rect(1, 0.0, 0.0, 4.0, 3.0),
+            rect(2, 4.0, 0.0, 8.0, 3.0),
+        ]);
         let m = match_spaces(&a, &a, &MatchParams::default());
         assert_eq!(m.len(), 2);
-        assert!(m.iter().all(|m| m.old == m.new && (m.iou - 1.0).abs() < 1e-12));
+        assert!(
+            m.iter()
+                .all(|m| m.old == m.new && (m.iou - 1.0).abs() < 1e-12)
+        );
     }
 
     #[test]
     fn split_room_keeps_identity_in_the_larger_part() {
-        let old = nrg(vec![rect(1, 0.0, 0.0, 10.0, 4.0), rect(2, 10.0, 0.0, 14.0, 4.0)]);
+        let old = nrg(vec![
+            rect(1, 0.0, 0.0, 10.0, 4.0),
+            rect(2, 10.0, 0.0, 14.0, 4.0),
+        ]);
         let new = nrg(vec![
-            rect(10, 0.0, 0.0, 4.0, 4.0),    // small part of 1
-            rect(11, 4.0, 0.0, 10.0, 4.0),   // large part of 1
-            rect(12, 10.1, 0.0, 14.1, 4.0),  // 2, shifted
+            rect(10, 0.0, 0.0, 4.0, 4.0),   // small part of 1
+            rect(11, 4.0, 0.0, 10.0, 4.0),  // large part of 1
+            rect(12, 10.1, 0.0, 14.1, 4.0), // 2, shifted
         ]);
         let m = match_spaces(&old, &new, &MatchParams::default());
         let pairs: Vec<(u32, u32)> = m.iter().map(|m| (m.new.0, m.old.0)).collect();
@@ -337,8 +346,14 @@ mod tests {
     fn optimal_assignment_beats_greedy() {
         // Greedy takes the best pair first (10-1, iou 0.67) and is left
         // with 11-2 (0.14); the optimum pairs 10-2 (0.54) and 11-1 (0.6).
-        let old = nrg(vec![rect(1, 0.0, 0.0, 2.0, 1.0), rect(2, 1.0, 0.0, 3.0, 1.0)]);
-        let new = nrg(vec![rect(10, 0.4, 0.0, 2.4, 1.0), rect(11, -0.5, 0.0, 1.5, 1.0)]);
+        let old = nrg(vec![
+            rect(1, 0.0, 0.0, 2.0, 1.0),
+            rect(2, 1.0, 0.0, 3.0, 1.0),
+        ]);
+        let new = nrg(vec![
+            rect(10, 0.4, 0.0, 2.4, 1.0),
+            rect(11, -0.5, 0.0, 1.5, 1.0),
+        ]);
         let m = match_spaces(&old, &new, &MatchParams { min_iou: 0.1 });
         let pairs: Vec<(u32, u32)> = m.iter().map(|m| (m.new.0, m.old.0)).collect();
         assert_eq!(pairs, vec![(10, 2), (11, 1)]);

@@ -82,7 +82,9 @@ pub enum StoreError {
     #[error("model refused: {0}")]
     Model(#[from] ModelError),
     /// A stored row could not be decoded.
-    #[error("database is damaged: map '{map}' space row {row}: {what} (run `PRAGMA integrity_check`)")]
+    #[error(
+        "database is damaged: map '{map}' space row {row}: {what} (run `PRAGMA integrity_check`)"
+    )]
     Corrupt {
         /// The map.
         map: String,

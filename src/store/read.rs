@@ -7,8 +7,7 @@ use rusqlite::{Connection, OptionalExtension, Row, params};
 
 use super::{MapInfo, RevisionInfo, Store, StoreError, geometry_blob};
 use crate::model::{
-    Connection as Link, ConnectionKind, Nrg, Space, SpaceId, SpaceKind, point_in_ring,
-    polygon_area,
+    Connection as Link, ConnectionKind, Nrg, Space, SpaceId, SpaceKind, point_in_ring, polygon_area,
 };
 
 impl Store {
@@ -97,13 +96,12 @@ impl Store {
             let row_id: i64 = row.get(0)?;
             let id = SpaceId(row.get(1)?);
             let blob: Vec<u8> = row.get(2)?;
-            let (polygon, holes) = geometry_blob::decode(&blob).map_err(|what| {
-                StoreError::Corrupt {
+            let (polygon, holes) =
+                geometry_blob::decode(&blob).map_err(|what| StoreError::Corrupt {
                     map: map.to_string(),
                     row: row_id,
                     what,
-                }
-            })?;
+                })?;
             let p = [x, y];
             if point_in_ring(p, &polygon) && !holes.iter().any(|h| point_in_ring(p, h)) {
                 let area = polygon_area(&polygon).abs();
@@ -220,12 +218,7 @@ pub(crate) fn load_at(
             .as_blob()
             .map_err(|e| corrupt(row_id, e.to_string()))?;
         let (polygon, holes) = geometry_blob::decode(blob).map_err(|e| corrupt(row_id, e))?;
-        let mut space = Space::new(
-            SpaceId(r.get(1)?),
-            kind,
-            [r.get(5)?, r.get(6)?],
-            polygon,
-        );
+        let mut space = Space::new(SpaceId(r.get(1)?), kind, [r.get(5)?, r.get(6)?], polygon);
         space.name = r.get(3)?;
         space.holes = holes;
         space.attributes = attributes;

@@ -23,7 +23,12 @@ impl Store {
     /// spaces get ids above any the map ever used. The first revision
     /// keeps the model's ids. One transaction: on any error nothing is
     /// stored.
-    pub fn import(&mut self, map: &str, nrg: &Nrg, meta: ImportMeta) -> Result<Imported, StoreError> {
+    pub fn import(
+        &mut self,
+        map: &str,
+        nrg: &Nrg,
+        meta: ImportMeta,
+    ) -> Result<Imported, StoreError> {
         check_map_name(map)?;
         let params = self.match_params;
         let tx = self
@@ -142,8 +147,8 @@ fn continue_identity(
         .map(|m| (m.new, m.old))
         .collect();
     for s in new.spaces() {
-        if !ids.contains_key(&s.id) {
-            ids.insert(s.id, SpaceId(next));
+        if let std::collections::btree_map::Entry::Vacant(e) = ids.entry(s.id) {
+            e.insert(SpaceId(next));
             next = next.saturating_add(1);
         }
     }
@@ -151,7 +156,7 @@ fn continue_identity(
     for s in new.spaces() {
         let mut space = s.clone();
         space.id = ids.get(&s.id).copied().unwrap_or(s.id);
-        if let Some(old) = parent.space(space.id).filter(|_| ids.get(&s.id) != None) {
+        if let Some(old) = parent.space(space.id) {
             if space.name.is_none() {
                 space.name.clone_from(&old.name);
             }
@@ -231,7 +236,14 @@ fn commit_revision(
     )?;
     for c in nrg.connections() {
         if !old.connection(c.a, c.b).is_some_and(|o| same_link(o, c)) {
-            insert_link.execute(params![map_id, c.a.0, c.b.0, seq, c.kind.as_str(), c.length_m])?;
+            insert_link.execute(params![
+                map_id,
+                c.a.0,
+                c.b.0,
+                seq,
+                c.kind.as_str(),
+                c.length_m
+            ])?;
         }
     }
 
@@ -303,7 +315,9 @@ fn insert_space(conn: &Connection, map_id: i64, seq: u32, s: &Space) -> Result<(
 /// Bit-exact equality of what a space row stores (so -0.0 and 0.0 differ).
 fn same_space(a: &Space, b: &Space) -> bool {
     let bits = |r: &Vec<[f64; 2]>| -> Vec<u64> {
-        r.iter().flat_map(|p| [p[0].to_bits(), p[1].to_bits()]).collect()
+        r.iter()
+            .flat_map(|p| [p[0].to_bits(), p[1].to_bits()])
+            .collect()
     };
     a.id == b.id
         && a.kind == b.kind
@@ -312,10 +326,12 @@ fn same_space(a: &Space, b: &Space) -> bool {
         && a.anchor[1].to_bits() == b.anchor[1].to_bits()
         && bits(&a.polygon) == bits(&b.polygon)
         && a.holes.len() == b.holes.len()
-        && a.holes.iter().zip(&b.holes).all(|(x, y)| bits(x) == bits(y))
-        && a.attributes == b.attributes
-        && serde_json::Value::Object(a.attributes.clone()).to_string()
-            == serde_json::Value::Object(b.attributes.clone()).to_string()
+        && a.holes
+            .iter()
+            .zip(&b.holes)
+            .all(|(x, y)| bits(x) == bits(y))
+        // Values and key order (a revision reads back key for key).
+        && a.attributes.iter().eq(b.attributes.iter())
 }
 
 fn same_link(a: &Link, b: &Link) -> bool {

@@ -51,11 +51,16 @@ fn issue_4_every_revision_reads_back_exactly() {
         assert_eq!(stored.spaces().len(), input.spaces().len());
         for s in input.spaces() {
             let got = stored.space(done.ids[&s.id]).unwrap();
-            assert_eq!((got.kind, &got.polygon, got.anchor), (s.kind, &s.polygon, s.anchor));
+            assert_eq!(
+                (got.kind, &got.polygon, got.anchor),
+                (s.kind, &s.polygon, s.anchor)
+            );
         }
         snapshots.push(stored);
     }
-    store.rename_space("b", SpaceId(2), Some("Kitchen"), meta("name")).unwrap();
+    store
+        .rename_space("b", SpaceId(2), Some("Kitchen"), meta("name"))
+        .unwrap();
     snapshots.push(store.load("b", None).unwrap());
     for (k, snap) in snapshots.iter().enumerate() {
         let rev = k as u32 + 1;
@@ -71,10 +76,17 @@ fn issue_4_stable_ids_survive_shift_and_split() {
     let mut store = Store::open_in_memory().unwrap();
     let first = building(10, 0.0, 1);
     store.import("b", &first, meta("first")).unwrap();
-    let info = store.rename_space("b", SpaceId(2), Some("Kitchen"), meta("name")).unwrap();
+    let info = store
+        .rename_space("b", SpaceId(2), Some("Kitchen"), meta("name"))
+        .unwrap();
     assert_eq!(info.spaces_changed, 1);
     assert_eq!(info.spaces_added + info.spaces_removed, 0);
-    let mut room = store.load("b", None).unwrap().space(SpaceId(2)).unwrap().clone();
+    let mut room = store
+        .load("b", None)
+        .unwrap()
+        .space(SpaceId(2))
+        .unwrap()
+        .clone();
     assert_eq!(room.name.as_deref(), Some("Kitchen"));
     room.attributes.insert("floor".into(), serde_json::json!(0));
 
@@ -89,28 +101,50 @@ fn issue_4_stable_ids_survive_shift_and_split() {
     // The smaller part of the split room is new, above every id used.
     assert_eq!(done.ids[&SpaceId(1000 - 77)], SpaceId(51));
     let kitchen = stored.space(SpaceId(2)).unwrap();
-    assert_eq!(kitchen.name.as_deref(), Some("Kitchen"), "name survives re-mapping");
+    assert_eq!(
+        kitchen.name.as_deref(),
+        Some("Kitchen"),
+        "name survives re-mapping"
+    );
     assert_eq!(kitchen.attributes.get("floor"), Some(&serde_json::json!(0)));
     assert_eq!(stored.space(SpaceId(51)).unwrap().name, None);
     assert_eq!(done.revision.spaces_added, 1);
     assert_eq!(done.revision.spaces_removed, 0);
     // The name also survives a second re-mapping.
-    store.import("b", &renumber(&building(10, 0.02, 3)), meta("again")).unwrap();
+    store
+        .import("b", &renumber(&building(10, 0.02, 3)), meta("again"))
+        .unwrap();
     let again = store.load("b", None).unwrap();
-    assert_eq!(again.space(SpaceId(2)).unwrap().name.as_deref(), Some("Kitchen"));
+    assert_eq!(
+        again.space(SpaceId(2)).unwrap().name.as_deref(),
+        Some("Kitchen")
+    );
 }
 
 #[test]
 fn issue_4_new_name_in_the_model_wins() {
     let mut store = Store::open_in_memory().unwrap();
-    store.import("b", &building(3, 0.0, 1), meta("first")).unwrap();
-    store.rename_space("b", SpaceId(2), Some("Kitchen"), meta("name")).unwrap();
+    store
+        .import("b", &building(3, 0.0, 1), meta("first"))
+        .unwrap();
+    store
+        .rename_space("b", SpaceId(2), Some("Kitchen"), meta("name"))
+        .unwrap();
     let (mut spaces, links) = building(3, 0.01, 2).into_parts();
     spaces[1].name = Some("Pantry".into());
-    spaces[1].attributes.insert("floor".into(), serde_json::json!(1));
+    spaces[1]
+        .attributes
+        .insert("floor".into(), serde_json::json!(1));
     let nrg = Nrg::new(spaces, links).unwrap();
-    store.import("b", &nrg, meta("renamed in the file")).unwrap();
-    let s = store.load("b", None).unwrap().space(SpaceId(2)).unwrap().clone();
+    store
+        .import("b", &nrg, meta("renamed in the file"))
+        .unwrap();
+    let s = store
+        .load("b", None)
+        .unwrap()
+        .space(SpaceId(2))
+        .unwrap()
+        .clone();
     assert_eq!(s.name.as_deref(), Some("Pantry"));
     assert_eq!(s.attributes["floor"], serde_json::json!(1));
 }
@@ -126,13 +160,23 @@ fn issue_4_storage_grows_with_changes_only() {
         // Each revision moves one room a little; the rest is unchanged.
         let room = SpaceId(2 + 5 * (k % 10));
         let current = store.load("b", None).unwrap();
-        store.import("b", &nudge(&current, room, 0.01), meta("nudge")).unwrap();
+        store
+            .import("b", &nudge(&current, room, 0.01), meta("nudge"))
+            .unwrap();
     }
     let raw = rusqlite::Connection::open(&path).unwrap();
-    let rows: i64 = raw.query_row("SELECT COUNT(*) FROM spaces", [], |r| r.get(0)).unwrap();
-    let links: i64 = raw.query_row("SELECT COUNT(*) FROM connections", [], |r| r.get(0)).unwrap();
+    let rows: i64 = raw
+        .query_row("SELECT COUNT(*) FROM spaces", [], |r| r.get(0))
+        .unwrap();
+    let links: i64 = raw
+        .query_row("SELECT COUNT(*) FROM connections", [], |r| r.get(0))
+        .unwrap();
     assert_eq!(rows, 50 + 20, "one row per changed space");
-    assert_eq!(links as usize, base.connections().len(), "connections unchanged");
+    assert_eq!(
+        links as usize,
+        base.connections().len(),
+        "connections unchanged"
+    );
     let first = store.load("b", Some(1)).unwrap();
     assert_eq!(first, base);
 }
@@ -143,7 +187,9 @@ fn issue_4_newer_schema_is_refused_and_untouched() {
     let path = dir.path().join("future.sqlite");
     {
         let mut store = Store::open(&path).unwrap();
-        store.import("b", &building(2, 0.0, 1), meta("first")).unwrap();
+        store
+            .import("b", &building(2, 0.0, 1), meta("first"))
+            .unwrap();
     }
     {
         let raw = rusqlite::Connection::open(&path).unwrap();
@@ -154,7 +200,10 @@ fn issue_4_newer_schema_is_refused_and_untouched() {
     let err = Store::open(&path).unwrap_err();
     assert!(matches!(err, StoreError::TooNew { found: 99, .. }), "{err}");
     let msg = err.to_string();
-    assert!(msg.contains("schema version 99") && msg.contains("untouched"), "{msg}");
+    assert!(
+        msg.contains("schema version 99") && msg.contains("untouched"),
+        "{msg}"
+    );
     assert_eq!(std::fs::read(&path).unwrap(), before, "file modified");
 }
 
@@ -181,7 +230,11 @@ fn issue_4_failed_import_leaves_no_partial_revision() {
     assert_eq!(store.revisions("b").unwrap().len(), 1);
     assert_eq!(store.load("b", None).unwrap(), first);
     let rows: i64 = raw
-        .query_row("SELECT COUNT(*) FROM spaces WHERE valid_to IS NOT NULL", [], |r| r.get(0))
+        .query_row(
+            "SELECT COUNT(*) FROM spaces WHERE valid_to IS NOT NULL",
+            [],
+            |r| r.get(0),
+        )
         .unwrap();
     assert_eq!(rows, 0, "no row was closed");
     assert_eq!(store.integrity_check().unwrap(), vec!["ok".to_string()]);
@@ -192,7 +245,9 @@ fn issue_4_failed_import_leaves_no_partial_revision() {
     ));
     let names: Vec<String> = store.maps().unwrap().into_iter().map(|m| m.name).collect();
     assert_eq!(names, vec!["b".to_string()]);
-    let total: i64 = raw.query_row("SELECT COUNT(*) FROM spaces", [], |r| r.get(0)).unwrap();
+    let total: i64 = raw
+        .query_row("SELECT COUNT(*) FROM spaces", [], |r| r.get(0))
+        .unwrap();
     assert_eq!(total as usize, first.spaces().len());
 }
 
@@ -207,7 +262,9 @@ fn issue_4_errors_name_what_exists() {
     assert!(err.starts_with("no map named 'x'; maps are: a, b"), "{err}");
     let err = store.load("a", Some(7)).unwrap_err().to_string();
     assert_eq!(err, "revision 7 of map 'a' does not exist (latest is 1)");
-    let err = store.rename_space("a", SpaceId(99), Some("n"), meta("n")).unwrap_err();
+    let err = store
+        .rename_space("a", SpaceId(99), Some("n"), meta("n"))
+        .unwrap_err();
     assert!(matches!(err, StoreError::NoSuchSpace { .. }), "{err}");
 }
 
@@ -225,9 +282,17 @@ fn issue_4_locate_finds_the_space_under_a_point() {
     let moved = nudge(&building(4, 0.0, 1), SpaceId(7), 100.0);
     store.import("b", &moved, meta("moved")).unwrap();
     assert_ne!(store.locate("b", None, 5.0, 4.0).unwrap(), Some(SpaceId(7)));
-    assert_eq!(store.locate("b", Some(1), 5.0, 4.0).unwrap(), Some(SpaceId(7)));
-    let kinds: BTreeMap<SpaceId, SpaceKind> =
-        store.load("b", Some(1)).unwrap().spaces().iter().map(|s| (s.id, s.kind)).collect();
+    assert_eq!(
+        store.locate("b", Some(1), 5.0, 4.0).unwrap(),
+        Some(SpaceId(7))
+    );
+    let kinds: BTreeMap<SpaceId, SpaceKind> = store
+        .load("b", Some(1))
+        .unwrap()
+        .spaces()
+        .iter()
+        .map(|s| (s.id, s.kind))
+        .collect();
     assert_eq!(kinds[&SpaceId(6)], SpaceKind::Corridor);
 }
 
@@ -266,7 +331,10 @@ fn issue_4_concurrent_importers_keep_a_straight_history() {
     for (k, r) in revs.iter().enumerate() {
         assert_eq!(r.seq as usize, k + 1);
         assert_eq!(r.parent, (k > 0).then_some(k as u32));
-        assert_eq!(store.load("shared", Some(r.seq)).unwrap().spaces().len(), 40);
+        assert_eq!(
+            store.load("shared", Some(r.seq)).unwrap().spaces().len(),
+            40
+        );
     }
     assert_eq!(store.integrity_check().unwrap(), vec!["ok".to_string()]);
 }

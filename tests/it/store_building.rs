@@ -20,22 +20,53 @@ pub fn building(segments: u32, jitter_m: f64, seed: u64) -> Nrg {
     for seg in 0..segments {
         let x = f64::from(seg) * SEGMENT_M;
         let corridor = id(seg, 0);
-        let rooms = [(id(seg, 1), id(seg, 2), 2.2, 6.2, 2.0), (id(seg, 3), id(seg, 4), -4.2, -0.2, -0.2)];
-        spaces.push(space(corridor, SpaceKind::Corridor, rect(x, 0.0, x + SEGMENT_M, 2.0), jitter_m, &mut rng));
+        let rooms = [
+            (id(seg, 1), id(seg, 2), 2.2, 6.2, 2.0),
+            (id(seg, 3), id(seg, 4), -4.2, -0.2, -0.2),
+        ];
+        spaces.push(space(
+            corridor,
+            SpaceKind::Corridor,
+            rect(x, 0.0, x + SEGMENT_M, 2.0),
+            jitter_m,
+            &mut rng,
+        ));
         for (room, door, y0, y1, dy) in rooms {
-            let mut r = space(room, SpaceKind::Room, rect(x, y0, x + SEGMENT_M, y1), jitter_m, &mut rng);
+            let mut r = space(
+                room,
+                SpaceKind::Room,
+                rect(x, y0, x + SEGMENT_M, y1),
+                jitter_m,
+                &mut rng,
+            );
             r.attributes.insert("floor".into(), serde_json::json!(0));
             spaces.push(r);
-            spaces.push(space(door, SpaceKind::Door, rect(x + 1.5, dy, x + 2.5, dy + 0.2), jitter_m * 0.1, &mut rng));
+            spaces.push(space(
+                door,
+                SpaceKind::Door,
+                rect(x + 1.5, dy, x + 2.5, dy + 0.2),
+                jitter_m * 0.1,
+                &mut rng,
+            ));
             links.push(link(room, door, ConnectionKind::Door, 2.1));
             links.push(link(door, corridor, ConnectionKind::Door, 1.1));
             links.push(link(room, corridor, ConnectionKind::Adjacent, 3.2));
             if seg > 0 {
-                links.push(link(SpaceId(room.0 - 5), room, ConnectionKind::Adjacent, SEGMENT_M));
+                links.push(link(
+                    SpaceId(room.0 - 5),
+                    room,
+                    ConnectionKind::Adjacent,
+                    SEGMENT_M,
+                ));
             }
         }
         if seg > 0 {
-            links.push(link(id(seg - 1, 0), corridor, ConnectionKind::Open, SEGMENT_M));
+            links.push(link(
+                id(seg - 1, 0),
+                corridor,
+                ConnectionKind::Open,
+                SEGMENT_M,
+            ));
         }
     }
     Nrg::new(spaces, links).expect("generated building is a valid NRG")
@@ -46,13 +77,26 @@ pub fn building(segments: u32, jitter_m: f64, seed: u64) -> Nrg {
 /// open connection.
 pub fn split_room(nrg: &Nrg, room: SpaceId, new_id: SpaceId) -> Nrg {
     let (mut spaces, mut links) = nrg.clone().into_parts();
-    let i = spaces.iter().position(|s| s.id == room).expect("room exists");
+    let i = spaces
+        .iter()
+        .position(|s| s.id == room)
+        .expect("room exists");
     let old = spaces[i].clone();
     let (min, max) = bbox(&old.polygon);
     let cut = min[0] + 0.6 * (max[0] - min[0]);
-    spaces[i] = Space::new(room, old.kind, [(min[0] + cut) / 2.0, old.anchor[1]], rect(min[0], min[1], cut, max[1]));
+    spaces[i] = Space::new(
+        room,
+        old.kind,
+        [(min[0] + cut) / 2.0, old.anchor[1]],
+        rect(min[0], min[1], cut, max[1]),
+    );
     spaces[i].attributes = old.attributes.clone();
-    spaces.push(Space::new(new_id, old.kind, [(cut + max[0]) / 2.0, old.anchor[1]], rect(cut, min[1], max[0], max[1])));
+    spaces.push(Space::new(
+        new_id,
+        old.kind,
+        [(cut + max[0]) / 2.0, old.anchor[1]],
+        rect(cut, min[1], max[0], max[1]),
+    ));
     links.push(link(room, new_id, ConnectionKind::Open, 1.0));
     Nrg::new(spaces, links).expect("split building is a valid NRG")
 }
@@ -91,11 +135,21 @@ fn space(id: SpaceId, kind: SpaceKind, mut ring: Ring, jitter_m: f64, rng: &mut 
         p[1] += jitter_m * rng.unit();
     }
     let (min, max) = bbox(&ring);
-    Space::new(id, kind, [(min[0] + max[0]) / 2.0, (min[1] + max[1]) / 2.0], ring)
+    Space::new(
+        id,
+        kind,
+        [(min[0] + max[0]) / 2.0, (min[1] + max[1]) / 2.0],
+        ring,
+    )
 }
 
 fn link(a: SpaceId, b: SpaceId, kind: ConnectionKind, length_m: f64) -> Connection {
-    Connection { a, b, kind, length_m }
+    Connection {
+        a,
+        b,
+        kind,
+        length_m,
+    }
 }
 
 /// A tiny deterministic generator (no dependency): uniform in [-1, 1).
@@ -103,7 +157,10 @@ struct Lcg(u64);
 
 impl Lcg {
     fn unit(&mut self) -> f64 {
-        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         ((self.0 >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
     }
 }
