@@ -37,22 +37,46 @@ fn import(c: &mut Criterion) {
         )
     });
     // A re-mapping: every polygon moved, so every space is matched by
-    // overlap and every row is replaced (the worst case).
-    let remaps = [
-        building(WILLOW_SEGMENTS, 0.03, 2),
-        building(WILLOW_SEGMENTS, 0.03, 3),
-    ];
-    let dir = tempfile::tempdir().unwrap();
-    let mut store = Store::open(&dir.path().join("r.sqlite")).unwrap();
-    store.import("willow", &nrg, meta()).unwrap();
-    let mut k = 0;
-    c.bench_function("store/import/remapped/willow-150", |b| {
-        b.iter(|| {
-            k += 1;
-            store
-                .import("willow", black_box(&remaps[k % 2]), meta())
-                .unwrap()
-        })
+    // overlap and every row is replaced (the worst case), onto a history of
+    // 1 and of 50 such revisions (the database is copied for each sample).
+    for history in [1u64, 50] {
+        let dir = tempfile::tempdir().unwrap();
+        let fixture = dir.path().join("fixture.sqlite");
+        {
+            let mut store = Store::open(&fixture).unwrap();
+            store.import("willow", &nrg, meta()).unwrap();
+            for k in 1..history {
+                let remap = building(WILLOW_SEGMENTS, 0.03, 100 + k);
+                store.import("willow", &remap, meta()).unwrap();
+            }
+        }
+        let remap = building(WILLOW_SEGMENTS, 0.03, 2);
+        let name = format!("store/import/remapped-onto-{history}-revisions/willow-150");
+        c.bench_function(&name, |b| {
+            b.iter_batched(
+                || {
+                    let copy = tempfile::tempdir().unwrap();
+                    let path = copy.path().join("b.sqlite");
+                    std::fs::copy(&fixture, &path).unwrap();
+                    let store = Store::open(&path).unwrap();
+                    (copy, store)
+                },
+                |(copy, mut store)| {
+                    store.import("willow", black_box(&remap), meta()).unwrap();
+                    (copy, store)
+                },
+                BatchSize::PerIteration,
+            )
+        });
+    }
+}
+
+fn matching(c: &mut Criterion) {
+    let old = building(WILLOW_SEGMENTS, 0.0, 1);
+    let new = building(WILLOW_SEGMENTS, 0.03, 2);
+    let params = nrgdb::diff::MatchParams::default();
+    c.bench_function("diff/match_spaces/willow-150", |b| {
+        b.iter(|| nrgdb::diff::match_spaces(black_box(&old), black_box(&new), &params))
     });
 }
 
@@ -137,6 +161,7 @@ fn main() {
     size_report();
     let mut c = Criterion::default().configure_from_args();
     import(&mut c);
+    matching(&mut c);
     load(&mut c);
     c.final_summary();
 }

@@ -41,7 +41,7 @@ CREATE TABLE spaces (
     anchor_y    REAL NOT NULL,
     geometry    BLOB NOT NULL                    -- polygon and holes, see store/geometry_blob.rs
 ) STRICT;
-CREATE INDEX spaces_by_id ON spaces(map_id, space_id, valid_from);
+CREATE INDEX spaces_by_id ON spaces(map_id, space_id, valid_to);
 CREATE INDEX spaces_open ON spaces(map_id, valid_to);
 
 CREATE VIRTUAL TABLE space_boxes USING rtree(row_id, min_x, max_x, min_y, max_y);
@@ -56,4 +56,4 @@ CREATE TABLE connections (
     length_m    REAL NOT NULL,
     PRIMARY KEY (map_id, a, b, valid_from)
 ) STRICT, WITHOUT ROWID;
-CREATE INDEX connections_open ON connections(map_id, valid_to);
+CREATE INDEX connections_open ON connections(map_id, valid_to, a, b);

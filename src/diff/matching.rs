@@ -19,7 +19,7 @@ use std::collections::{BTreeMap, HashMap};
 use geo::{Area, BooleanOps, Coord, LineString, Polygon};
 use pathfinding::prelude::{Matrix, kuhn_munkres};
 
-use crate::model::{Nrg, Ring, Space, SpaceId};
+use crate::model::{Nrg, Point, Ring, Space, SpaceId, polygon_area};
 
 /// Tuning of [`match_spaces`].
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -106,6 +106,9 @@ pub fn overlap_iou(a: &Space, b: &Space) -> f64 {
 /// A space's polygon with its area and bounding box, ready to intersect.
 struct Shape {
     id: SpaceId,
+    /// The exterior ring, counter-clockwise, when the space is convex and
+    /// has no holes: then overlaps are clipped directly (fast path).
+    convex: Option<Ring>,
     polygon: Polygon<f64>,
     area: f64,
     min: [f64; 2],
@@ -126,8 +129,16 @@ impl Shape {
                 max[k] = max[k].max(p[k]);
             }
         }
+        let convex = (space.holes.is_empty() && is_convex(&space.polygon)).then(|| {
+            let mut ring = space.polygon.clone();
+            if polygon_area(&ring) < 0.0 {
+                ring.reverse();
+            }
+            ring
+        });
         Shape {
             id: space.id,
+            convex,
             area: polygon.unsigned_area(),
             polygon,
             min,
@@ -143,7 +154,10 @@ impl Shape {
         if !self.bbox_meets(other) {
             return 0.0;
         }
-        let inter = self.polygon.intersection(&other.polygon).unsigned_area();
+        let inter = match (&self.convex, &other.convex) {
+            (Some(a), Some(b)) => clipped_area(a, b),
+            _ => self.polygon.intersection(&other.polygon).unsigned_area(),
+        };
         let union = self.area + other.area - inter;
         if union > 0.0 && inter.is_finite() {
             (inter / union).clamp(0.0, 1.0)
@@ -223,6 +237,52 @@ impl BoxGrid {
         out.sort_unstable();
         out.dedup();
     }
+}
+
+/// Whether a ring is convex (all turns the same way; collinear points
+/// allowed).
+fn is_convex(ring: &Ring) -> bool {
+    let n = ring.len();
+    if n < 3 {
+        return false;
+    }
+    let (mut pos, mut neg) = (false, false);
+    for i in 0..n {
+        let [a, b, c] = [ring[i], ring[(i + 1) % n], ring[(i + 2) % n]];
+        let cross = (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]);
+        pos |= cross > 0.0;
+        neg |= cross < 0.0;
+    }
+    !(pos && neg)
+}
+
+/// Area of the intersection of two convex counter-clockwise rings by
+/// Sutherland–Hodgman clipping of `subject` against each edge of `clip`
+/// (Sutherland & Hodgman 1974, "Reentrant polygon clipping").
+fn clipped_area(subject: &Ring, clip: &Ring) -> f64 {
+    let mut output: Vec<Point> = subject.clone();
+    let n = clip.len();
+    for i in 0..n {
+        if output.is_empty() {
+            return 0.0;
+        }
+        let (a, b) = (clip[i], clip[(i + 1) % n]);
+        let side = |p: Point| (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+        let input = std::mem::take(&mut output);
+        let m = input.len();
+        for k in 0..m {
+            let (p, q) = (input[k], input[(k + 1) % m]);
+            let (sp, sq) = (side(p), side(q));
+            if sp >= 0.0 {
+                output.push(p);
+            }
+            if (sp >= 0.0) != (sq >= 0.0) {
+                let t = sp / (sp - sq);
+                output.push([p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])]);
+            }
+        }
+    }
+    polygon_area(&output).abs()
 }
 
 fn line_string(ring: &Ring) -> LineString<f64> {
@@ -364,6 +424,52 @@ mod tests {
         let old = nrg(vec![rect(1, 0.0, 0.0, 4.0, 4.0)]);
         let new = nrg(vec![rect(5, 3.5, 0.0, 7.5, 4.0)]);
         assert!(match_spaces(&old, &new, &MatchParams::default()).is_empty());
+    }
+
+    #[test]
+    fn convex_fast_path_agrees_with_boolean_ops() {
+        let shapes = [
+            vec![[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0]],
+            vec![[1.0, -1.0], [5.0, 1.0], [3.0, 4.0]],
+            vec![[2.0, 2.0], [2.0, 0.5], [6.0, 0.5], [6.0, 2.0]], // clockwise
+            vec![[-1.0, 1.0], [1.0, -1.0], [3.0, 1.0], [1.0, 3.0]],
+            vec![[0.0, 0.0], [2.0, 0.0], [4.0, 0.0], [4.0, 1.0]], // collinear run
+            vec![[10.0, 10.0], [11.0, 10.0], [11.0, 11.0]],       // disjoint
+        ];
+        for a in &shapes {
+            for b in &shapes {
+                let (sa, sb) = (
+                    Shape::new(&Space::new(
+                        SpaceId(1),
+                        SpaceKind::Room,
+                        [0.0, 0.0],
+                        a.clone(),
+                    )),
+                    Shape::new(&Space::new(
+                        SpaceId(2),
+                        SpaceKind::Room,
+                        [0.0, 0.0],
+                        b.clone(),
+                    )),
+                );
+                let (ca, cb) = (sa.convex.clone().unwrap(), sb.convex.clone().unwrap());
+                let fast = clipped_area(&ca, &cb);
+                let exact = sa.polygon.intersection(&sb.polygon).unsigned_area();
+                assert!(
+                    (fast - exact).abs() < 1e-9,
+                    "{a:?} & {b:?}: {fast} vs {exact}"
+                );
+            }
+        }
+        let l_shape = vec![
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [2.0, 1.0],
+            [1.0, 1.0],
+            [1.0, 2.0],
+            [0.0, 2.0],
+        ];
+        assert!(!is_convex(&l_shape));
     }
 
     #[test]

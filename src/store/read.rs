@@ -199,11 +199,17 @@ pub(crate) fn load_at(
         row,
         what,
     };
-    let mut stmt = conn.prepare_cached(
+    // The latest revision is exactly the open rows (an index lookup);
+    // older ones filter the map's rows by their validity range.
+    let is_latest = seq == latest(conn, map_id)?;
+    let mut stmt = conn.prepare_cached(if is_latest {
+        "SELECT row_id, space_id, kind, name, attributes, anchor_x, anchor_y, geometry
+         FROM spaces WHERE map_id = ?1 AND valid_to IS NULL AND ?2 > 0"
+    } else {
         "SELECT row_id, space_id, kind, name, attributes, anchor_x, anchor_y, geometry
          FROM spaces WHERE map_id = ?1 AND valid_from <= ?2
-           AND (valid_to IS NULL OR valid_to > ?2)",
-    )?;
+           AND (valid_to IS NULL OR valid_to > ?2)"
+    })?;
     let mut rows = stmt.query(params![map_id, seq])?;
     let mut spaces = Vec::new();
     while let Some(r) = rows.next()? {
@@ -224,10 +230,13 @@ pub(crate) fn load_at(
         space.attributes = attributes;
         spaces.push(space);
     }
-    let mut stmt = conn.prepare_cached(
+    let mut stmt = conn.prepare_cached(if is_latest {
+        "SELECT a, b, kind, length_m FROM connections
+         WHERE map_id = ?1 AND valid_to IS NULL AND ?2 > 0"
+    } else {
         "SELECT a, b, kind, length_m FROM connections WHERE map_id = ?1 AND valid_from <= ?2
-           AND (valid_to IS NULL OR valid_to > ?2)",
-    )?;
+           AND (valid_to IS NULL OR valid_to > ?2)"
+    })?;
     let mut rows = stmt.query(params![map_id, seq])?;
     let mut links = Vec::new();
     while let Some(r) = rows.next()? {

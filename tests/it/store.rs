@@ -338,3 +338,53 @@ fn issue_4_concurrent_importers_keep_a_straight_history() {
     }
     assert_eq!(store.integrity_check().unwrap(), vec!["ok".to_string()]);
 }
+
+#[test]
+fn issue_4_readers_are_not_blocked_and_writers_get_a_clear_busy() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("w.sqlite");
+    let mut store = Store::open(&path).unwrap();
+    let first = building(3, 0.0, 1);
+    store.import("b", &first, meta("first")).unwrap();
+    // Another process holds the write lock with an open transaction.
+    let raw = rusqlite::Connection::open(&path).unwrap();
+    raw.execute_batch("BEGIN IMMEDIATE; UPDATE maps SET created_at = created_at;")
+        .unwrap();
+    let started = std::time::Instant::now();
+    assert_eq!(store.load("b", None).unwrap(), first);
+    assert!(store.locate("b", None, 1.0, 1.0).unwrap().is_some());
+    assert!(
+        started.elapsed() < std::time::Duration::from_secs(2),
+        "reader waited"
+    );
+    store
+        .set_busy_timeout(std::time::Duration::from_millis(50))
+        .unwrap();
+    let err = store
+        .import("b", &building(3, 0.01, 2), meta("second"))
+        .unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        "database is busy (another nrgdb is writing); retry"
+    );
+    raw.execute_batch("COMMIT").unwrap();
+    store
+        .import("b", &building(3, 0.01, 2), meta("second"))
+        .unwrap();
+    assert_eq!(store.revisions("b").unwrap().len(), 2);
+}
+
+#[test]
+fn issue_4_a_file_that_is_not_a_database_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("notes.txt");
+    std::fs::write(
+        &path,
+        "hello, this is not sqlite at all, just some text".repeat(40),
+    )
+    .unwrap();
+    let before = std::fs::read(&path).unwrap();
+    let err = Store::open(&path).unwrap_err().to_string();
+    assert!(err.contains("is it an nrgdb database?"), "{err}");
+    assert_eq!(std::fs::read(&path).unwrap(), before);
+}
