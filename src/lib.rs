@@ -11,6 +11,7 @@
 //! origin at the lower left, y up).
 
 pub mod atomic;
+pub mod diff;
 pub mod eval;
 pub mod extract;
 pub mod fixtures;
@@ -23,3 +24,4 @@ pub mod model;
 pub mod query;
 pub mod route;
 pub mod sim;
+pub mod store;

@@ -11,12 +11,20 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+mod db;
 pub mod eval;
+mod export;
 pub mod extract;
+mod import;
 mod map_log;
+mod maps;
+mod model_file;
+mod name;
 pub mod query;
 pub mod repl;
 mod simulate;
+
+pub use model_file::{load_model, write_model};
 
 /// The command line.
 #[derive(Debug, Parser)]
@@ -57,6 +65,18 @@ pub enum Command {
     Extract(extract::Args),
     /// Score an extraction against a ground-truth room image.
     Eval(eval::Args),
+    /// Store a model file as the next revision of a map.
+    Import(import::Args),
+    /// List the maps in the database.
+    Maps(maps::MapsArgs),
+    /// List the revisions of a map.
+    Revisions(maps::RevisionsArgs),
+    /// Write a revision of a map to a file.
+    Export(export::Args),
+    /// Name a space (a new revision).
+    Name(name::Args),
+    /// Show the history of a map with messages.
+    Log(maps::LogArgs),
 }
 
 /// Runs one subcommand, writing its report to `out`.
@@ -70,6 +90,12 @@ pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
         Command::Repl(args) => repl::run(args, out),
         Command::Extract(args) => extract::run(args, out),
         Command::Eval(args) => eval::run(args, out),
+        Command::Import(args) => import::run(args, out),
+        Command::Maps(args) => maps::run_maps(args, out),
+        Command::Revisions(args) => maps::run_revisions(args, out),
+        Command::Export(args) => export::run(args, out),
+        Command::Name(args) => name::run(args, out),
+        Command::Log(args) => maps::run_log(args, out),
     }
 }
 

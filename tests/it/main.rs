@@ -15,3 +15,7 @@ mod query_cli;
 mod query_golden;
 mod query_props;
 mod route_props;
+
+mod store;
+mod store_building;
+mod store_cli;

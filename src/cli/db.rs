@@ -1,0 +1,54 @@
+//! The `--db` option shared by the store subcommands, and the `NAME[@REV]`
+//! syntax.
+
+use std::path::PathBuf;
+
+use miette::{IntoDiagnostic, WrapErr};
+use nrgdb::store::Store;
+
+/// Where the database is.
+#[derive(Debug, Clone, clap::Args)]
+pub struct DbArg {
+    /// The database file; created on first import.
+    #[arg(
+        long,
+        env = "NRGDB_DB",
+        default_value = "nrgdb.sqlite",
+        value_name = "DB"
+    )]
+    pub db: PathBuf,
+}
+
+impl DbArg {
+    /// Opens the database (creating it and its schema if needed).
+    pub fn open(&self) -> miette::Result<Store> {
+        Store::open(&self.db)
+            .into_diagnostic()
+            .wrap_err_with(|| format!("opening database {}", self.db.display()))
+    }
+}
+
+/// Splits `NAME[@REV]` into the map name and the revision (None: latest).
+pub fn parse_map_rev(text: &str) -> miette::Result<(String, Option<u32>)> {
+    match text.rsplit_once('@') {
+        None => Ok((text.to_string(), None)),
+        Some((name, rev)) => {
+            let rev: u32 = rev.parse().map_err(|_| {
+                miette::miette!(
+                    "bad revision '{rev}' in '{text}': expected NAME@N with N a revision number \
+                     (see `nrgdb revisions {name}`)"
+                )
+            })?;
+            Ok((name.to_string(), Some(rev)))
+        }
+    }
+}
+
+/// The author recorded in new revisions: `--author`, else `$NRGDB_AUTHOR`,
+/// else `$USER`, else "unknown".
+pub fn author(given: Option<String>) -> String {
+    given
+        .or_else(|| std::env::var("USER").ok())
+        .filter(|a| !a.is_empty())
+        .unwrap_or_else(|| "unknown".to_string())
+}

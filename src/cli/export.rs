@@ -1,0 +1,35 @@
+//! `nrgdb export`: write a stored revision to a file.
+
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use miette::{IntoDiagnostic, WrapErr};
+
+use super::db::{DbArg, parse_map_rev};
+use super::write_model;
+
+/// Write a revision of a map to a model file (the latest unless NAME@REV).
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The map, optionally with a revision: `willow` or `willow@3`.
+    #[arg(value_name = "NAME[@REV]")]
+    pub map: String,
+    /// Output file (.json), written atomically; `-` for stdout.
+    #[arg(long, short)]
+    pub out: PathBuf,
+    #[command(flatten)]
+    pub db: DbArg,
+}
+
+/// Runs `nrgdb export`.
+pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
+    let (map, rev) = parse_map_rev(&args.map)?;
+    let store = args.db.open()?;
+    let nrg = store
+        .load(&map, rev)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("exporting {}", args.map))?;
+    write_model(&args.out, &nrg, out)?;
+    Ok(ExitCode::SUCCESS)
+}

@@ -1,0 +1,56 @@
+//! `nrgdb import`: store a model file as the next revision of a map.
+
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use miette::{IntoDiagnostic, WrapErr};
+use nrgdb::store::ImportMeta;
+
+use super::db::{DbArg, author};
+use super::load_model;
+
+/// Store a model as the next revision of a map (the map is created on its
+/// first import). Spaces continuing spaces of the previous revision keep
+/// their ids and names.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The model file (.json).
+    pub file: PathBuf,
+    /// The map to add a revision to.
+    #[arg(long, value_name = "NAME")]
+    pub map: String,
+    /// Commit message recorded with the revision.
+    #[arg(short, long, default_value = "")]
+    pub message: String,
+    /// Author recorded with the revision [default: $USER].
+    #[arg(long, env = "NRGDB_AUTHOR")]
+    pub author: Option<String>,
+    #[command(flatten)]
+    pub db: DbArg,
+}
+
+/// Runs `nrgdb import`.
+pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
+    let model = load_model(&args.file)?;
+    let name = args.file.file_name().map_or_else(
+        || args.file.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    let mut meta =
+        ImportMeta::new(args.message, author(args.author)).with_source(name, &model.bytes);
+    meta.params = model.params;
+    let mut store = args.db.open()?;
+    let done = store
+        .import(&args.map, &model.nrg, meta)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("importing {} into map '{}'", args.file.display(), args.map))?;
+    let r = &done.revision;
+    writeln!(
+        out,
+        "{}@{}: {} spaces ({} new, {} changed, {} gone), {} connections",
+        r.map, r.seq, r.spaces, r.spaces_added, r.spaces_changed, r.spaces_removed, r.connections
+    )
+    .into_diagnostic()?;
+    Ok(ExitCode::SUCCESS)
+}

@@ -1,0 +1,484 @@
+//! Space matching by polygon overlap (intersection over union).
+//!
+//! Every pair of spaces (one from the old revision, one from the new) whose
+//! bounding boxes meet is scored by the IoU of their polygons (holes
+//! included), computed exactly with `geo`'s boolean operations. Pairs below
+//! [`MatchParams::min_iou`] are dropped. The remaining pairs form a sparse
+//! bipartite graph; each connected component of it is solved as an
+//! assignment problem (Kuhn–Munkres, maximising the summed IoU), so the
+//! matching is optimal and one-to-one. Components are small (a room
+//! overlaps only its own continuation and a few neighbours), so the cubic
+//! cost of the Hungarian method stays tiny.
+//!
+//! When a room is split, the larger part keeps the old identity (it has the
+//! larger IoU); when two rooms merge, the merged room continues the one it
+//! overlaps most.
+
+use std::collections::{BTreeMap, HashMap};
+
+use geo::{Area, BooleanOps, Coord, LineString, Polygon};
+use pathfinding::prelude::{Matrix, kuhn_munkres};
+
+use crate::model::{Nrg, Point, Ring, Space, SpaceId, polygon_area};
+
+/// Tuning of [`match_spaces`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct MatchParams {
+    /// Smallest intersection-over-union for two spaces to be the same
+    /// space (0..1). The default 0.2 tolerates a room split in up to
+    /// five parts while refusing a room and the door beside it.
+    pub min_iou: f64,
+}
+
+impl Default for MatchParams {
+    fn default() -> Self {
+        MatchParams { min_iou: 0.2 }
+    }
+}
+
+/// One space of the new revision continuing one space of the old.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpaceMatch {
+    /// The space's id in the old revision.
+    pub old: SpaceId,
+    /// The space's id in the new revision.
+    pub new: SpaceId,
+    /// Intersection over union of the two polygons (0..1].
+    pub iou: f64,
+}
+
+/// Matches the spaces of `new` to the spaces of `old` they continue, by
+/// polygon overlap, one-to-one, maximising the summed IoU. The result is
+/// sorted by the new id; unmatched spaces are simply absent.
+///
+/// ```
+/// use nrgdb::diff::{match_spaces, MatchParams};
+/// use nrgdb::model::{Nrg, Space, SpaceId, SpaceKind};
+/// let square = |id, x: f64| Space::new(SpaceId(id), SpaceKind::Room, [x + 1.0, 1.0],
+///     vec![[x, 0.0], [x + 2.0, 0.0], [x + 2.0, 2.0], [x, 2.0]]);
+/// let old = Nrg::new(vec![square(1, 0.0), square(2, 2.0)], vec![])?;
+/// let new = Nrg::new(vec![square(7, 2.1), square(8, 0.1)], vec![])?;
+/// let m = match_spaces(&old, &new, &MatchParams::default());
+/// assert_eq!((m[0].new, m[0].old), (SpaceId(7), SpaceId(2)));
+/// assert_eq!((m[1].new, m[1].old), (SpaceId(8), SpaceId(1)));
+/// # Ok::<(), nrgdb::model::ModelError>(())
+/// ```
+pub fn match_spaces(old: &Nrg, new: &Nrg, params: &MatchParams) -> Vec<SpaceMatch> {
+    let old_shapes: Vec<Shape> = old.spaces().iter().map(Shape::new).collect();
+    let new_shapes: Vec<Shape> = new.spaces().iter().map(Shape::new).collect();
+    // Candidate edges (old index, new index, iou).
+    let grid = BoxGrid::new(&old_shapes);
+    let mut edges: Vec<(usize, usize, f64)> = Vec::new();
+    let mut candidates = Vec::new();
+    for (j, n) in new_shapes.iter().enumerate() {
+        grid.candidates(n, &mut candidates);
+        for &i in &candidates {
+            let o = &old_shapes[i];
+            if !o.bbox_meets(n) {
+                continue;
+            }
+            let iou = o.iou(n);
+            if iou >= params.min_iou && iou > 0.0 {
+                edges.push((i, j, iou));
+            }
+        }
+    }
+    let mut matches = Vec::new();
+    for component in components(&edges, old_shapes.len(), new_shapes.len()) {
+        for (i, j, iou) in assign(&component) {
+            matches.push(SpaceMatch {
+                old: old_shapes[i].id,
+                new: new_shapes[j].id,
+                iou,
+            });
+        }
+    }
+    matches.sort_by_key(|m| m.new);
+    matches
+}
+
+/// Intersection over union of two spaces' polygons (holes included), 0
+/// when they do not overlap.
+pub fn overlap_iou(a: &Space, b: &Space) -> f64 {
+    Shape::new(a).iou(&Shape::new(b))
+}
+
+/// A space's polygon with its area and bounding box, ready to intersect.
+struct Shape {
+    id: SpaceId,
+    /// The exterior ring, counter-clockwise, when the space is convex and
+    /// has no holes: then overlaps are clipped directly (fast path).
+    convex: Option<Ring>,
+    polygon: Polygon<f64>,
+    area: f64,
+    min: [f64; 2],
+    max: [f64; 2],
+}
+
+impl Shape {
+    fn new(space: &Space) -> Shape {
+        let polygon = Polygon::new(
+            line_string(&space.polygon),
+            space.holes.iter().map(line_string).collect(),
+        );
+        let mut min = [f64::INFINITY; 2];
+        let mut max = [f64::NEG_INFINITY; 2];
+        for p in &space.polygon {
+            for k in 0..2 {
+                min[k] = min[k].min(p[k]);
+                max[k] = max[k].max(p[k]);
+            }
+        }
+        let convex = (space.holes.is_empty() && is_convex(&space.polygon)).then(|| {
+            let mut ring = space.polygon.clone();
+            if polygon_area(&ring) < 0.0 {
+                ring.reverse();
+            }
+            ring
+        });
+        Shape {
+            id: space.id,
+            convex,
+            area: polygon.unsigned_area(),
+            polygon,
+            min,
+            max,
+        }
+    }
+
+    fn bbox_meets(&self, other: &Shape) -> bool {
+        (0..2).all(|k| self.min[k] < other.max[k] && other.min[k] < self.max[k])
+    }
+
+    fn iou(&self, other: &Shape) -> f64 {
+        if !self.bbox_meets(other) {
+            return 0.0;
+        }
+        let inter = match (&self.convex, &other.convex) {
+            (Some(a), Some(b)) => clipped_area(a, b),
+            _ => self.polygon.intersection(&other.polygon).unsigned_area(),
+        };
+        let union = self.area + other.area - inter;
+        if union > 0.0 && inter.is_finite() {
+            (inter / union).clamp(0.0, 1.0)
+        } else {
+            0.0
+        }
+    }
+}
+
+/// A uniform grid over bounding boxes (cell = the mean box size), so
+/// candidate pairs cost about O(n) instead of O(n²) on large models.
+struct BoxGrid {
+    cell: f64,
+    cells: HashMap<(i64, i64), Vec<usize>>,
+    /// Shapes covering too many cells, checked against everything.
+    huge: Vec<usize>,
+}
+
+/// Past this many cells a shape goes to [`BoxGrid::huge`].
+const MAX_CELLS_PER_SHAPE: i64 = 4096;
+
+impl BoxGrid {
+    fn new(shapes: &[Shape]) -> BoxGrid {
+        let sizes: Vec<f64> = shapes
+            .iter()
+            .map(|s| (s.max[0] - s.min[0]).max(s.max[1] - s.min[1]))
+            .filter(|d| d.is_finite() && *d > 0.0)
+            .collect();
+        let mean = sizes.iter().sum::<f64>() / sizes.len().max(1) as f64;
+        let cell = if mean > 0.0 { mean } else { 1.0 };
+        let mut grid = BoxGrid {
+            cell,
+            cells: HashMap::new(),
+            huge: Vec::new(),
+        };
+        for (i, s) in shapes.iter().enumerate() {
+            match grid.range(s) {
+                Some((x0, y0, x1, y1)) => {
+                    for cx in x0..=x1 {
+                        for cy in y0..=y1 {
+                            grid.cells.entry((cx, cy)).or_default().push(i);
+                        }
+                    }
+                }
+                None => grid.huge.push(i),
+            }
+        }
+        grid
+    }
+
+    /// The cells a shape's box covers, or None when there are too many.
+    fn range(&self, s: &Shape) -> Option<(i64, i64, i64, i64)> {
+        let to_cell = |v: f64| (v / self.cell).floor() as i64;
+        let (x0, y0) = (to_cell(s.min[0]), to_cell(s.min[1]));
+        let (x1, y1) = (to_cell(s.max[0]), to_cell(s.max[1]));
+        let count = (x1 - x0 + 1).saturating_mul(y1 - y0 + 1);
+        (s.min.iter().chain(&s.max).all(|v| v.is_finite()) && count <= MAX_CELLS_PER_SHAPE)
+            .then_some((x0, y0, x1, y1))
+    }
+
+    /// Indices of the shapes whose cells meet `s`'s cells (sorted, unique).
+    fn candidates(&self, s: &Shape, out: &mut Vec<usize>) {
+        out.clear();
+        out.extend_from_slice(&self.huge);
+        match self.range(s) {
+            Some((x0, y0, x1, y1)) => {
+                for cx in x0..=x1 {
+                    for cy in y0..=y1 {
+                        if let Some(v) = self.cells.get(&(cx, cy)) {
+                            out.extend_from_slice(v);
+                        }
+                    }
+                }
+            }
+            None => out.extend(self.cells.values().flatten()),
+        }
+        out.sort_unstable();
+        out.dedup();
+    }
+}
+
+/// Whether a ring is convex (all turns the same way; collinear points
+/// allowed).
+fn is_convex(ring: &Ring) -> bool {
+    let n = ring.len();
+    if n < 3 {
+        return false;
+    }
+    let (mut pos, mut neg) = (false, false);
+    for i in 0..n {
+        let [a, b, c] = [ring[i], ring[(i + 1) % n], ring[(i + 2) % n]];
+        let cross = (b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0]);
+        pos |= cross > 0.0;
+        neg |= cross < 0.0;
+    }
+    !(pos && neg)
+}
+
+/// Area of the intersection of two convex counter-clockwise rings by
+/// Sutherland–Hodgman clipping of `subject` against each edge of `clip`
+/// (Sutherland & Hodgman 1974, "Reentrant polygon clipping").
+fn clipped_area(subject: &Ring, clip: &Ring) -> f64 {
+    let mut output: Vec<Point> = subject.clone();
+    let n = clip.len();
+    for i in 0..n {
+        if output.is_empty() {
+            return 0.0;
+        }
+        let (a, b) = (clip[i], clip[(i + 1) % n]);
+        let side = |p: Point| (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+        let input = std::mem::take(&mut output);
+        let m = input.len();
+        for k in 0..m {
+            let (p, q) = (input[k], input[(k + 1) % m]);
+            let (sp, sq) = (side(p), side(q));
+            if sp >= 0.0 {
+                output.push(p);
+            }
+            if (sp >= 0.0) != (sq >= 0.0) {
+                let t = sp / (sp - sq);
+                output.push([p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])]);
+            }
+        }
+    }
+    polygon_area(&output).abs()
+}
+
+fn line_string(ring: &Ring) -> LineString<f64> {
+    LineString::new(ring.iter().map(|p| Coord { x: p[0], y: p[1] }).collect())
+}
+
+/// Splits the bipartite edge list into connected components (union-find
+/// over old indices `0..n_old` and new indices `n_old..n_old+n_new`).
+fn components(
+    edges: &[(usize, usize, f64)],
+    n_old: usize,
+    n_new: usize,
+) -> Vec<Vec<(usize, usize, f64)>> {
+    let mut parent: Vec<usize> = (0..n_old + n_new).collect();
+    fn find(parent: &mut [usize], mut x: usize) -> usize {
+        while parent[x] != x {
+            parent[x] = parent[parent[x]];
+            x = parent[x];
+        }
+        x
+    }
+    for &(i, j, _) in edges {
+        let (a, b) = (find(&mut parent, i), find(&mut parent, n_old + j));
+        if a != b {
+            parent[a] = b;
+        }
+    }
+    let mut groups: BTreeMap<usize, Vec<(usize, usize, f64)>> = BTreeMap::new();
+    for &(i, j, iou) in edges {
+        let root = find(&mut parent, i);
+        groups.entry(root).or_default().push((i, j, iou));
+    }
+    groups.into_values().collect()
+}
+
+/// Optimal one-to-one assignment inside one component, maximising the
+/// summed IoU (scaled to integers for Kuhn–Munkres).
+fn assign(component: &[(usize, usize, f64)]) -> Vec<(usize, usize, f64)> {
+    if let [only] = component {
+        return vec![*only];
+    }
+    let mut olds: Vec<usize> = component.iter().map(|e| e.0).collect();
+    let mut news: Vec<usize> = component.iter().map(|e| e.1).collect();
+    olds.sort_unstable();
+    olds.dedup();
+    news.sort_unstable();
+    news.dedup();
+    let n = olds.len().max(news.len());
+    let mut weights = Matrix::new(n, n, 0_i64);
+    let mut iou_of = BTreeMap::new();
+    for &(i, j, iou) in component {
+        let (Ok(r), Ok(c)) = (olds.binary_search(&i), news.binary_search(&j)) else {
+            continue;
+        };
+        // 1e9 keeps six significant digits of IoU and cannot overflow i64
+        // for any component this side of 10^9 spaces.
+        weights[(r, c)] = (iou * 1e9).round() as i64;
+        iou_of.insert((r, c), iou);
+    }
+    let (_, columns) = kuhn_munkres(&weights);
+    let mut out = Vec::new();
+    for (r, &c) in columns.iter().enumerate() {
+        if let Some(&iou) = iou_of.get(&(r, c)) {
+            out.push((olds[r], news[c], iou));
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::SpaceKind;
+
+    fn rect(id: u32, x0: f64, y0: f64, x1: f64, y1: f64) -> Space {
+        let poly = vec![[x0, y0], [x1, y0], [x1, y1], [x0, y1]];
+        Space::new(
+            SpaceId(id),
+            SpaceKind::Room,
+            [(x0 + x1) / 2.0, (y0 + y1) / 2.0],
+            poly,
+        )
+    }
+
+    fn nrg(spaces: Vec<Space>) -> Nrg {
+        Nrg::new(spaces, vec![]).unwrap()
+    }
+
+    #[test]
+    fn identical_models_match_one_to_one() {
+        let a = nrg(vec![
+            rect(1, 0.0, 0.0, 4.0, 3.0),
+            rect(2, 4.0, 0.0, 8.0, 3.0),
+        ]);
+        let m = match_spaces(&a, &a, &MatchParams::default());
+        assert_eq!(m.len(), 2);
+        assert!(
+            m.iter()
+                .all(|m| m.old == m.new && (m.iou - 1.0).abs() < 1e-12)
+        );
+    }
+
+    #[test]
+    fn split_room_keeps_identity_in_the_larger_part() {
+        let old = nrg(vec![
+            rect(1, 0.0, 0.0, 10.0, 4.0),
+            rect(2, 10.0, 0.0, 14.0, 4.0),
+        ]);
+        let new = nrg(vec![
+            rect(10, 0.0, 0.0, 4.0, 4.0),   // small part of 1
+            rect(11, 4.0, 0.0, 10.0, 4.0),  // large part of 1
+            rect(12, 10.1, 0.0, 14.1, 4.0), // 2, shifted
+        ]);
+        let m = match_spaces(&old, &new, &MatchParams::default());
+        let pairs: Vec<(u32, u32)> = m.iter().map(|m| (m.new.0, m.old.0)).collect();
+        assert_eq!(pairs, vec![(11, 1), (12, 2)]);
+        assert!((m[0].iou - 0.6).abs() < 1e-9);
+    }
+
+    #[test]
+    fn optimal_assignment_beats_greedy() {
+        // Greedy takes the best pair first (10-1, iou 0.67) and is left
+        // with 11-2 (0.14); the optimum pairs 10-2 (0.54) and 11-1 (0.6).
+        let old = nrg(vec![
+            rect(1, 0.0, 0.0, 2.0, 1.0),
+            rect(2, 1.0, 0.0, 3.0, 1.0),
+        ]);
+        let new = nrg(vec![
+            rect(10, 0.4, 0.0, 2.4, 1.0),
+            rect(11, -0.5, 0.0, 1.5, 1.0),
+        ]);
+        let m = match_spaces(&old, &new, &MatchParams { min_iou: 0.1 });
+        let pairs: Vec<(u32, u32)> = m.iter().map(|m| (m.new.0, m.old.0)).collect();
+        assert_eq!(pairs, vec![(10, 2), (11, 1)]);
+    }
+
+    #[test]
+    fn small_overlap_is_not_a_match() {
+        let old = nrg(vec![rect(1, 0.0, 0.0, 4.0, 4.0)]);
+        let new = nrg(vec![rect(5, 3.5, 0.0, 7.5, 4.0)]);
+        assert!(match_spaces(&old, &new, &MatchParams::default()).is_empty());
+    }
+
+    #[test]
+    fn convex_fast_path_agrees_with_boolean_ops() {
+        let shapes = [
+            vec![[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0]],
+            vec![[1.0, -1.0], [5.0, 1.0], [3.0, 4.0]],
+            vec![[2.0, 2.0], [2.0, 0.5], [6.0, 0.5], [6.0, 2.0]], // clockwise
+            vec![[-1.0, 1.0], [1.0, -1.0], [3.0, 1.0], [1.0, 3.0]],
+            vec![[0.0, 0.0], [2.0, 0.0], [4.0, 0.0], [4.0, 1.0]], // collinear run
+            vec![[10.0, 10.0], [11.0, 10.0], [11.0, 11.0]],       // disjoint
+        ];
+        for a in &shapes {
+            for b in &shapes {
+                let (sa, sb) = (
+                    Shape::new(&Space::new(
+                        SpaceId(1),
+                        SpaceKind::Room,
+                        [0.0, 0.0],
+                        a.clone(),
+                    )),
+                    Shape::new(&Space::new(
+                        SpaceId(2),
+                        SpaceKind::Room,
+                        [0.0, 0.0],
+                        b.clone(),
+                    )),
+                );
+                let (ca, cb) = (sa.convex.clone().unwrap(), sb.convex.clone().unwrap());
+                let fast = clipped_area(&ca, &cb);
+                let exact = sa.polygon.intersection(&sb.polygon).unsigned_area();
+                // geo's boolean ops snap to a fine grid: agree to 1e-6 m².
+                assert!(
+                    (fast - exact).abs() < 1e-6,
+                    "{a:?} & {b:?}: {fast} vs {exact}"
+                );
+            }
+        }
+        let l_shape = vec![
+            [0.0, 0.0],
+            [2.0, 0.0],
+            [2.0, 1.0],
+            [1.0, 1.0],
+            [1.0, 2.0],
+            [0.0, 2.0],
+        ];
+        assert!(!is_convex(&l_shape));
+    }
+
+    #[test]
+    fn holes_reduce_the_overlap() {
+        let mut ring = rect(1, 0.0, 0.0, 4.0, 4.0);
+        ring.holes = vec![vec![[1.0, 1.0], [3.0, 1.0], [3.0, 3.0], [1.0, 3.0]]];
+        ring.update_area();
+        let full = rect(2, 0.0, 0.0, 4.0, 4.0);
+        assert!((overlap_iou(&ring, &full) - 12.0 / 16.0).abs() < 1e-9);
+    }
+}

@@ -1,0 +1,352 @@
+//! Writing the store: imports and renames, each one transaction (`BEGIN
+//! IMMEDIATE`) that adds exactly one revision or nothing.
+//!
+//! A revision is written as a delta against its parent: rows of spaces and
+//! connections that did not change stay open (`valid_to IS NULL`); changed
+//! or removed ones are closed at the new revision and changed or added ones
+//! opened from it.
+
+use std::collections::BTreeMap;
+
+use rusqlite::{Connection, OptionalExtension, TransactionBehavior, params};
+
+use super::read::{REVISION_COLUMNS, latest, load_at, map_id, revision_info};
+use super::{ImportMeta, Imported, RevisionInfo, Store, StoreError, geometry_blob};
+use crate::diff::{MatchParams, match_spaces};
+use crate::model::{Connection as Link, Nrg, Space, SpaceId};
+
+impl Store {
+    /// Stores `nrg` as the next revision of `map` (creating the map on its
+    /// first import). Each space is matched to the space it continues in
+    /// the parent revision and keeps its stable id, name and attributes
+    /// (the new model's own name and attribute values win when set); new
+    /// spaces get ids above any the map ever used. The first revision
+    /// keeps the model's ids. One transaction: on any error nothing is
+    /// stored.
+    pub fn import(
+        &mut self,
+        map: &str,
+        nrg: &Nrg,
+        meta: ImportMeta,
+    ) -> Result<Imported, StoreError> {
+        check_map_name(map)?;
+        let params = self.match_params;
+        let tx = self
+            .conn
+            .transaction_with_behavior(TransactionBehavior::Immediate)?;
+        let existing = tx
+            .query_row("SELECT id FROM maps WHERE name = ?1", [map], |r| r.get(0))
+            .optional()?;
+        let map_id: i64 = match existing {
+            Some(id) => id,
+            None => {
+                tx.execute(
+                    "INSERT INTO maps (name, created_at) VALUES (?1, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'))",
+                    [map],
+                )?;
+                tx.last_insert_rowid()
+            }
+        };
+        let parent_seq = latest(&tx, map_id)?;
+        let (stable, ids, parent) = if parent_seq == 0 {
+            let ids = nrg.spaces().iter().map(|s| (s.id, s.id)).collect();
+            (nrg.clone(), ids, None)
+        } else {
+            let parent = load_at(&tx, map_id, map, parent_seq)?;
+            let next = next_space_id(&tx, map_id)?;
+            let (stable, ids) = continue_identity(&parent, nrg, &params, next)?;
+            (stable, ids, Some((parent_seq, parent)))
+        };
+        let revision = commit_revision(&tx, map_id, map, parent.as_ref(), &stable, &meta)?;
+        tx.commit()?;
+        Ok(Imported { revision, ids })
+    }
+
+    /// Gives space `id` of the latest revision of `map` the name `name`
+    /// (`None` clears it), as a new revision.
+    pub fn rename_space(
+        &mut self,
+        map: &str,
+        id: SpaceId,
+        name: Option<&str>,
+        meta: ImportMeta,
+    ) -> Result<RevisionInfo, StoreError> {
+        let tx = self
+            .conn
+            .transaction_with_behavior(TransactionBehavior::Immediate)?;
+        let map_id = map_id(&tx, map)?;
+        let seq = latest(&tx, map_id)?;
+        if seq == 0 {
+            return Err(StoreError::NoSuchRevision {
+                map: map.to_string(),
+                rev: 1,
+                latest: 0,
+            });
+        }
+        let parent = load_at(&tx, map_id, map, seq)?;
+        if parent.space(id).is_none() {
+            return Err(StoreError::NoSuchSpace {
+                map: map.to_string(),
+                id,
+                rev: seq,
+            });
+        }
+        let (mut spaces, links) = parent.clone().into_parts();
+        for s in spaces.iter_mut().filter(|s| s.id == id) {
+            s.name = name.map(str::to_string);
+        }
+        let renamed = Nrg::new(spaces, links)?;
+        let info = commit_revision(&tx, map_id, map, Some(&(seq, parent)), &renamed, &meta)?;
+        tx.commit()?;
+        Ok(info)
+    }
+}
+
+fn check_map_name(name: &str) -> Result<(), StoreError> {
+    let reason = if name.trim().is_empty() {
+        Some("it is empty")
+    } else if name.contains('@') {
+        Some("'@' separates a map from a revision (NAME@REV); choose another name")
+    } else if name.chars().any(char::is_control) {
+        Some("it contains control characters")
+    } else if name.len() > 200 {
+        Some("it is longer than 200 bytes")
+    } else {
+        None
+    };
+    match reason {
+        Some(reason) => Err(StoreError::BadMapName {
+            name: name.to_string(),
+            reason,
+        }),
+        None => Ok(()),
+    }
+}
+
+/// One above the largest space id the map ever used.
+fn next_space_id(conn: &Connection, map_id: i64) -> Result<u32, StoreError> {
+    let max: Option<u32> = conn.query_row(
+        "SELECT MAX(space_id) FROM spaces WHERE map_id = ?1",
+        [map_id],
+        |r| r.get(0),
+    )?;
+    Ok(max.map_or(1, |m| m.saturating_add(1)))
+}
+
+/// Renumbers `new` so each space continuing a space of `parent` takes its
+/// id, inheriting its name (unless `new` names it) and its attributes
+/// (`new`'s values win key by key); unmatched spaces get `next`, `next+1`...
+fn continue_identity(
+    parent: &Nrg,
+    new: &Nrg,
+    params: &MatchParams,
+    mut next: u32,
+) -> Result<(Nrg, BTreeMap<SpaceId, SpaceId>), StoreError> {
+    let mut ids: BTreeMap<SpaceId, SpaceId> = match_spaces(parent, new, params)
+        .into_iter()
+        .map(|m| (m.new, m.old))
+        .collect();
+    for s in new.spaces() {
+        if let std::collections::btree_map::Entry::Vacant(e) = ids.entry(s.id) {
+            e.insert(SpaceId(next));
+            next = next.saturating_add(1);
+        }
+    }
+    let mut spaces = Vec::with_capacity(new.spaces().len());
+    for s in new.spaces() {
+        let mut space = s.clone();
+        space.id = ids.get(&s.id).copied().unwrap_or(s.id);
+        if let Some(old) = parent.space(space.id) {
+            if space.name.is_none() {
+                space.name.clone_from(&old.name);
+            }
+            let mut attributes = old.attributes.clone();
+            for (k, v) in &s.attributes {
+                attributes.insert(k.clone(), v.clone());
+            }
+            space.attributes = attributes;
+        }
+        spaces.push(space);
+    }
+    let links = new
+        .connections()
+        .iter()
+        .map(|c| Link {
+            a: ids.get(&c.a).copied().unwrap_or(c.a),
+            b: ids.get(&c.b).copied().unwrap_or(c.b),
+            ..c.clone()
+        })
+        .collect();
+    Ok((Nrg::new(spaces, links)?, ids))
+}
+
+/// Writes `nrg` as revision `parent + 1` of the map, as a delta against
+/// the parent (whose open rows are exactly `parent`'s model).
+fn commit_revision(
+    conn: &Connection,
+    map_id: i64,
+    map: &str,
+    parent: Option<&(u32, Nrg)>,
+    nrg: &Nrg,
+    meta: &ImportMeta,
+) -> Result<RevisionInfo, StoreError> {
+    let parent_seq = parent.map(|p| p.0);
+    let seq = parent_seq.unwrap_or(0) + 1;
+    let empty = Nrg::default();
+    let old = parent.map_or(&empty, |p| &p.1);
+    let (mut added, mut changed, mut removed) = (0usize, 0usize, 0usize);
+
+    let mut close_space = conn.prepare_cached(
+        "UPDATE spaces SET valid_to = ?3 WHERE map_id = ?1 AND space_id = ?2 AND valid_to IS NULL",
+    )?;
+    for s in old.spaces() {
+        match nrg.space(s.id) {
+            Some(n) if same_space(s, n) => {}
+            Some(_) => {
+                close_space.execute(params![map_id, s.id.0, seq])?;
+                changed += 1;
+            }
+            None => {
+                close_space.execute(params![map_id, s.id.0, seq])?;
+                removed += 1;
+            }
+        }
+    }
+    for s in nrg.spaces() {
+        match old.space(s.id) {
+            Some(o) if same_space(o, s) => {}
+            Some(_) => insert_space(conn, map_id, seq, s)?,
+            None => {
+                insert_space(conn, map_id, seq, s)?;
+                added += 1;
+            }
+        }
+    }
+
+    let mut close_link = conn.prepare_cached(
+        "UPDATE connections SET valid_to = ?4 WHERE map_id = ?1 AND a = ?2 AND b = ?3 AND valid_to IS NULL",
+    )?;
+    for c in old.connections() {
+        if !nrg.connection(c.a, c.b).is_some_and(|n| same_link(c, n)) {
+            close_link.execute(params![map_id, c.a.0, c.b.0, seq])?;
+        }
+    }
+    let mut insert_link = conn.prepare_cached(
+        "INSERT INTO connections (map_id, a, b, valid_from, kind, length_m) VALUES (?1, ?2, ?3, ?4, ?5, ?6)",
+    )?;
+    for c in nrg.connections() {
+        if !old.connection(c.a, c.b).is_some_and(|o| same_link(o, c)) {
+            insert_link.execute(params![
+                map_id,
+                c.a.0,
+                c.b.0,
+                seq,
+                c.kind.as_str(),
+                c.length_m
+            ])?;
+        }
+    }
+
+    let params_json = meta.params.as_ref().map(|p| p.to_string());
+    conn.execute(
+        "INSERT INTO revisions (map_id, seq, parent, created_at, source_name, source_sha256, params,
+             message, author, space_count, connection_count, spaces_added, spaces_changed, spaces_removed)
+         VALUES (?1, ?2, ?3, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'), ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13)",
+        params![
+            map_id,
+            seq,
+            parent_seq,
+            meta.source_name,
+            meta.source_sha256,
+            params_json,
+            meta.message,
+            meta.author,
+            count(nrg.spaces().len()),
+            count(nrg.connections().len()),
+            count(added),
+            count(changed),
+            count(removed),
+        ],
+    )?;
+    let info = conn.query_row(
+        &format!("SELECT {REVISION_COLUMNS} FROM revisions WHERE map_id = ?1 AND seq = ?2"),
+        params![map_id, seq],
+        |r| revision_info(map, r),
+    )?;
+    Ok(info)
+}
+
+fn count(n: usize) -> i64 {
+    i64::try_from(n).unwrap_or(i64::MAX)
+}
+
+fn insert_space(conn: &Connection, map_id: i64, seq: u32, s: &Space) -> Result<(), StoreError> {
+    let attributes = serde_json::Value::Object(s.attributes.clone()).to_string();
+    conn.prepare_cached(
+        "INSERT INTO spaces (map_id, space_id, valid_from, kind, name, attributes, anchor_x, anchor_y, geometry)
+         VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)",
+    )?
+    .execute(params![
+        map_id,
+        s.id.0,
+        seq,
+        s.kind.as_str(),
+        s.name,
+        attributes,
+        s.anchor[0],
+        s.anchor[1],
+        geometry_blob::encode(&s.polygon, &s.holes),
+    ])?;
+    let row_id = conn.last_insert_rowid();
+    let (mut min, mut max) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for p in &s.polygon {
+        for k in 0..2 {
+            min[k] = min[k].min(p[k]);
+            max[k] = max[k].max(p[k]);
+        }
+    }
+    conn.prepare_cached(
+        "INSERT INTO space_boxes (row_id, min_x, max_x, min_y, max_y) VALUES (?1, ?2, ?3, ?4, ?5)",
+    )?
+    .execute(params![row_id, min[0], max[0], min[1], max[1]])?;
+    Ok(())
+}
+
+/// Bit-exact equality of what a space row stores (so -0.0 and 0.0 differ).
+fn same_space(a: &Space, b: &Space) -> bool {
+    let bits = |r: &Vec<[f64; 2]>| -> Vec<u64> {
+        r.iter()
+            .flat_map(|p| [p[0].to_bits(), p[1].to_bits()])
+            .collect()
+    };
+    a.id == b.id
+        && a.kind == b.kind
+        && a.name == b.name
+        && a.anchor[0].to_bits() == b.anchor[0].to_bits()
+        && a.anchor[1].to_bits() == b.anchor[1].to_bits()
+        && bits(&a.polygon) == bits(&b.polygon)
+        && a.holes.len() == b.holes.len()
+        && a.holes
+            .iter()
+            .zip(&b.holes)
+            .all(|(x, y)| bits(x) == bits(y))
+        // Values and key order (a revision reads back key for key).
+        && a.attributes.iter().eq(b.attributes.iter())
+}
+
+fn same_link(a: &Link, b: &Link) -> bool {
+    a.key() == b.key() && a.kind == b.kind && a.length_m.to_bits() == b.length_m.to_bits()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn map_names_are_checked() {
+        assert!(check_map_name("willow").is_ok());
+        for bad in ["", "  ", "a@b", "x\ny"] {
+            assert!(check_map_name(bad).is_err(), "{bad:?}");
+        }
+    }
+}
