@@ -11,6 +11,7 @@
 //! origin at the lower left, y up).
 
 pub mod atomic;
+pub mod demo;
 pub mod diff;
 pub mod eval;
 pub mod extract;
@@ -22,6 +23,7 @@ pub mod imaging;
 pub mod indoorgml;
 pub mod model;
 pub mod query;
+pub mod render;
 pub mod route;
 pub mod sim;
 pub mod store;

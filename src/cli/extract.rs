@@ -102,6 +102,9 @@ impl MapArgs {
 pub struct Args {
     #[command(flatten)]
     pub map: MapArgs,
+    /// Write the NRG as IndoorGML 1.0.3 (schema-valid, thick doors).
+    #[arg(long, value_name = "FILE.gml")]
+    pub out: Option<PathBuf>,
     /// Write the graph as JSON (the model's form plus each space's pixel_centroid [col,row]).
     #[arg(long)]
     pub json: Option<PathBuf>,
@@ -120,6 +123,10 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         .into_diagnostic()
         .wrap_err_with(|| format!("{}: extraction failed", args.map.map.display()))?;
     // Encode everything before writing anything, so a failure leaves no half output.
+    let gml = args
+        .out
+        .as_ref()
+        .map(|_| nrgdb::indoorgml::write_string(&nrgdb::indoorgml::from_nrg(&x.nrg)));
     let json = args.json.as_ref().map(|_| x.to_json());
     let png = match &args.labels {
         Some(_) => Some(
@@ -129,6 +136,9 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         ),
         None => None,
     };
+    if let (Some(path), Some(gml)) = (&args.out, gml) {
+        write_out(path, gml.as_bytes())?;
+    }
     if let (Some(path), Some(json)) = (&args.json, json) {
         write_out(path, json.as_bytes())?;
     }

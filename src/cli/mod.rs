@@ -5,6 +5,7 @@
 
 mod check;
 mod convert;
+mod demo;
 
 use std::io::Write;
 use std::process::ExitCode;
@@ -49,6 +50,8 @@ pub struct Cli {
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
+    /// Run the whole pipeline on a simulated building (the place to start).
+    Demo(demo::Args),
     /// Check an IndoorGML file: references, duality, geometry, schema.
     Check(check::Args),
     /// Convert between IndoorGML (.gml/.xml), model JSON (.json) and GeoJSON (.geojson).
@@ -82,6 +85,7 @@ pub enum Command {
 /// Runs one subcommand, writing its report to `out`.
 pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
     match command {
+        Command::Demo(args) => demo::run(args, out),
         Command::Check(args) => check::run(args, out),
         Command::Convert(args) => convert::run(args, out),
         Command::Simulate(args) => simulate::run(args, out),

@@ -1,10 +1,13 @@
-//! Reading and writing model files: the one place that knows which file
-//! formats the CLI accepts (the lead extends these two functions with
-//! IndoorGML and occupancy maps).
+//! Reading and writing model files for the CLI: IndoorGML, model JSON and
+//! GeoJSON by extension (`nrgdb::format`), and occupancy maps (`.yaml`),
+//! which are extracted first.
 
 use std::path::Path;
 
 use miette::{IntoDiagnostic, WrapErr};
+use nrgdb::extract::{ExtractParams, extract};
+use nrgdb::grid::{LoadOptions, load_map};
+use nrgdb::indoorgml::DEFAULT_MAX_BYTES;
 use nrgdb::model::Nrg;
 
 /// A model read from a file, with the bytes it came from.
@@ -17,54 +20,44 @@ pub struct ModelFile {
     pub params: Option<serde_json::Value>,
 }
 
-/// Reads a model file: `.json` (the model's JSON form).
+/// Reads a model: `.gml`/`.xml` (IndoorGML), `.json` (model JSON),
+/// `.geojson`, or `.yaml` (a ROS occupancy map, extracted with default
+/// parameters).
 pub fn load_model(path: &Path) -> miette::Result<ModelFile> {
     let bytes = std::fs::read(path)
         .into_diagnostic()
         .wrap_err_with(|| format!("reading {}", path.display()))?;
-    let ext = extension(path);
-    match ext.as_str() {
-        "json" => {
-            let text = std::str::from_utf8(&bytes)
-                .into_diagnostic()
-                .wrap_err_with(|| format!("{}: not UTF-8 text", path.display()))?;
-            let nrg = Nrg::from_json(text)
-                .into_diagnostic()
-                .wrap_err_with(|| format!("{}: not a valid nrgdb model JSON", path.display()))?;
-            Ok(ModelFile {
-                nrg,
-                bytes,
-                params: None,
-            })
-        }
-        _ => Err(miette::miette!(
-            "{}: unknown model format '.{ext}' (expected .json)",
-            path.display()
-        )),
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or("")
+        .to_ascii_lowercase();
+    if ext == "yaml" || ext == "yml" {
+        let grid = load_map(path, &LoadOptions::default()).into_diagnostic()?;
+        let params = ExtractParams::default();
+        let extraction = extract(&grid, &params)
+            .into_diagnostic()
+            .wrap_err_with(|| format!("extracting the NRG of {}", path.display()))?;
+        let params = serde_json::to_value(&params).ok();
+        return Ok(ModelFile {
+            nrg: extraction.nrg,
+            bytes,
+            params,
+        });
     }
+    let nrg = nrgdb::format::read_model(path, DEFAULT_MAX_BYTES).into_diagnostic()?;
+    Ok(ModelFile {
+        nrg,
+        bytes,
+        params: None,
+    })
 }
 
-/// Writes a model file atomically, in the format its extension names
-/// (`.json`); `-` writes JSON to `out`.
+/// Writes a model atomically in the format its extension names
+/// (`.gml`, `.json`, `.geojson`); `-` writes JSON to `out`.
 pub fn write_model(path: &Path, nrg: &Nrg, out: &mut dyn std::io::Write) -> miette::Result<()> {
     if path == Path::new("-") {
         return writeln!(out, "{}", nrg.to_json()).into_diagnostic();
     }
-    let ext = extension(path);
-    match ext.as_str() {
-        "json" => nrgdb::atomic::write(path, nrg.to_json().as_bytes())
-            .into_diagnostic()
-            .wrap_err_with(|| format!("writing {}", path.display())),
-        _ => Err(miette::miette!(
-            "{}: unknown output format '.{ext}' (expected .json)",
-            path.display()
-        )),
-    }
-}
-
-fn extension(path: &Path) -> String {
-    path.extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or("")
-        .to_ascii_lowercase()
+    nrgdb::format::write_model(nrg, path).into_diagnostic()
 }

@@ -6,18 +6,18 @@ use std::process::ExitCode;
 use std::time::Duration;
 
 use miette::{IntoDiagnostic, LabeledSpan, NamedSource, WrapErr, miette};
-use nrgdb::model::Nrg;
 use nrgdb::query::{Format, Limits, MemorySource, QueryError, QueryResult, Session, Source, demo};
 
 /// Where the model comes from, shared by `query` and `repl`.
 #[derive(Debug, Clone, clap::Args)]
 pub struct SourceArgs {
-    /// SQLite database of map revisions (not wired to queries yet).
-    #[arg(long, value_name = "DB")]
+    /// SQLite database of map revisions (`nrgdb import` fills it; default
+    /// `$NRGDB_DB`, else ./nrgdb.sqlite when it exists).
+    #[arg(long, value_name = "DB", env = "NRGDB_DB")]
     pub db: Option<PathBuf>,
-    /// A model file in nrgdb's JSON form, queried in memory as map `model`
-    /// (or the name given with --map).
-    #[arg(long, value_name = "FILE.json", conflicts_with = "db")]
+    /// A model file (.json, .gml or .geojson), queried in memory as map
+    /// `model` (or the name given with --map).
+    #[arg(long, value_name = "FILE", conflicts_with = "db")]
     pub model: Option<PathBuf>,
     /// Use the built-in demo building (rooms along a corridor, named
     /// Kitchen, Library, Lounge, Office, Printer Room) with this many
@@ -63,23 +63,26 @@ pub struct Args {
 /// Builds the source the arguments name. The one place that knows which
 /// storage backs a session.
 pub fn open_source(args: &SourceArgs) -> miette::Result<Box<dyn Source>> {
-    if let Some(db) = &args.db {
-        return Err(miette!(
-            "querying a database ({}) is not wired yet; export the map to JSON and use --model FILE.json",
-            db.display()
-        ));
+    let default_db = PathBuf::from("nrgdb.sqlite");
+    let db = args.db.clone().or_else(|| {
+        (args.model.is_none() && args.demo.is_none() && default_db.exists()).then_some(default_db)
+    });
+    if let Some(db) = db {
+        if !db.exists() {
+            return Err(miette!(
+                "no database at {} (create one with `nrgdb import`)",
+                db.display()
+            ));
+        }
+        let store = nrgdb::store::Store::open(&db)
+            .into_diagnostic()
+            .wrap_err_with(|| format!("opening database {}", db.display()))?;
+        return Ok(Box::new(store));
     }
     let mut source = MemorySource::new();
     if let Some(path) = &args.model {
-        let text = std::fs::read_to_string(path)
-            .into_diagnostic()
-            .wrap_err_with(|| format!("cannot read model {}", path.display()))?;
-        let nrg = Nrg::from_json(&text).into_diagnostic().wrap_err_with(|| {
-            format!(
-                "{}: not an nrgdb model (JSON with spaces and connections)",
-                path.display()
-            )
-        })?;
+        let nrg = nrgdb::format::read_model(path, nrgdb::indoorgml::DEFAULT_MAX_BYTES)
+            .into_diagnostic()?;
         let name = args.map.clone().unwrap_or_else(|| "model".to_string());
         source.insert_with_note(&name, nrg, &format!("loaded from {}", path.display()));
     } else if let Some(segments) = args.demo {

@@ -30,6 +30,7 @@ mod error;
 mod geometry_blob;
 mod read;
 mod schema;
+mod source;
 mod write;
 
 use std::collections::BTreeMap;
