@@ -17,7 +17,7 @@ const NAMES: [(usize, bool, &str); 5] = [
 /// A building of `columns` corridor segments, each 4 m long, with a room
 /// above and a room below joined to it by a door space. Every third room
 /// pair above the corridor (columns 1–2, 4–5, …) also shares a side door, so
-/// some routes have alternatives. A shaft (`Other`, not navigable) sits at
+/// some routes have alternatives. A shaft (`Other`, with no connection) sits at
 /// the east end. Spaces: `5 × columns + ⌊(columns + 1) / 3⌋ + 1`, roughly.
 ///
 /// Ids: column `i` holds corridor `5i+1`, upper door `5i+2`, upper room

@@ -7,7 +7,7 @@ use crate::model::SpaceId;
 #[non_exhaustive]
 pub enum RouteError {
     /// The space does not exist or cannot be walked through.
-    #[error("space {0} is not navigable or does not exist (routes use rooms, corridors and doors)")]
+    #[error("space {0} does not exist")]
     NotNavigable(SpaceId),
     /// Start, goal or a waypoint is also in AVOID.
     #[error("space {0} is both on the route and in AVOID (remove it from one of them)")]

@@ -9,6 +9,7 @@ mod indoorgml_samples;
 mod sim;
 mod support;
 
+mod demo;
 mod extract;
 mod query;
 mod query_cli;

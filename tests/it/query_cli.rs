@@ -48,5 +48,5 @@ fn errors_exit_2_with_a_caret() {
     );
     let (code, _, err) = nrgdb(&["query", "--db", "x.sqlite", "SHOW MAPS"]);
     assert_eq!(code, 2);
-    assert!(err.contains("not wired yet"), "{err}");
+    assert!(err.contains("no database at x.sqlite"), "{err}");
 }

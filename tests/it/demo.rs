@@ -1,0 +1,66 @@
+//! `nrgdb demo`, the README's first command, runs the whole pipeline with
+//! no arguments and no files, and what it writes is sound.
+
+use crate::support::nrgdb;
+
+#[test]
+fn demo_runs_end_to_end_and_writes_valid_indoorgml() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = nrgdb(dir.path(), &["demo"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for want in [
+        "simulated building",
+        "extracted the NRG",
+        "stored revisions 1 and 2",
+        "route 1:",
+        "removed",
+        "building.gml",
+    ] {
+        assert!(stdout.contains(want), "missing '{want}' in:\n{stdout}");
+    }
+    let demo = dir.path().join("nrgdb-demo");
+    for file in [
+        "map.yaml",
+        "map.pgm",
+        "map_gt.png",
+        "truth.json",
+        "building.gml",
+        "building.png",
+    ] {
+        assert!(demo.join(file).is_file(), "{file} not written");
+    }
+    assert!(dir.path().join("nrgdb.sqlite").is_file());
+    // The exported revision passes the conformance checker.
+    let check = nrgdb(
+        dir.path(),
+        &["check", "nrgdb-demo/building.gml", "--no-schema"],
+    );
+    assert_eq!(
+        check.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&check.stdout)
+    );
+    // The stored revisions answer queries.
+    let q = nrgdb(
+        dir.path(),
+        &["query", "--map", "demo", "SHOW REVISIONS OF demo"],
+    );
+    assert_eq!(
+        q.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&q.stderr)
+    );
+    assert!(
+        String::from_utf8_lossy(&q.stdout).contains("door"),
+        "{}",
+        String::from_utf8_lossy(&q.stdout)
+    );
+}
