@@ -15,7 +15,7 @@ pub struct Args {
     /// The map, optionally with a revision: `willow` or `willow@3`.
     #[arg(value_name = "NAME[@REV]")]
     pub map: String,
-    /// Output file (.json), written atomically; `-` for stdout.
+    /// Output file (.gml IndoorGML, .json model JSON, .geojson), written atomically; `-` writes JSON to stdout.
     #[arg(long, short)]
     pub out: PathBuf,
     #[command(flatten)]

@@ -15,7 +15,7 @@ use super::load_model;
 /// their ids and names.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// The model file (.json).
+    /// The model: .gml/.xml (IndoorGML), .json, .geojson, or .yaml (a ROS occupancy map, extracted first).
     pub file: PathBuf,
     /// The map to add a revision to.
     #[arg(long, value_name = "NAME")]
