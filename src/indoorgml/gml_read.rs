@@ -9,6 +9,8 @@ use super::dom::{Element, Ns};
 pub struct GeometryReader {
     /// Dimension used when neither the element nor an ancestor says.
     pub default_dim: usize,
+    /// The first `srsName` seen on a geometry read so far.
+    srs_name: std::cell::RefCell<Option<String>>,
 }
 
 impl GeometryReader {
@@ -17,12 +19,28 @@ impl GeometryReader {
     pub fn for_document(root: &Element) -> GeometryReader {
         GeometryReader {
             default_dim: if has_3d(root) { 3 } else { 2 },
+            srs_name: std::cell::RefCell::new(None),
+        }
+    }
+
+    /// The first `srsName` on any geometry read.
+    pub fn srs_name(&self) -> Option<String> {
+        self.srs_name.borrow().clone()
+    }
+
+    fn note_srs(&self, el: &Element) {
+        if let Some(srs) = el.attr(&Ns::None, "srsName") {
+            let mut seen = self.srs_name.borrow_mut();
+            if seen.is_none() {
+                *seen = Some(srs.to_string());
+            }
         }
     }
 
     /// A `gml:Point`.
     pub fn point(&self, el: &Element) -> Result<GmlPoint, IndoorGmlError> {
         expect(el, "Point")?;
+        self.note_srs(el);
         let dim = self.dim_of(el, None);
         let pos = el
             .child(&Ns::Gml, "pos")
@@ -40,6 +58,7 @@ impl GeometryReader {
     /// A `gml:LineString`.
     pub fn line_string(&self, el: &Element) -> Result<LineString, IndoorGmlError> {
         expect(el, "LineString")?;
+        self.note_srs(el);
         let dim = self.dim_of(el, None);
         let coords = self.positions(&el.children, dim)?;
         if coords.len() < 2 {
@@ -54,6 +73,7 @@ impl GeometryReader {
     /// A `gml:Polygon`; `dim` is an ancestor's `srsDimension`, if any.
     pub fn polygon(&self, el: &Element, dim: Option<usize>) -> Result<Polygon, IndoorGmlError> {
         expect(el, "Polygon")?;
+        self.note_srs(el);
         let dim = self.dim_of(el, dim);
         let mut exterior = None;
         let mut interiors = Vec::new();
@@ -75,6 +95,7 @@ impl GeometryReader {
     /// A `gml:Solid` made of Polygon surface members.
     pub fn solid(&self, el: &Element) -> Result<Solid, IndoorGmlError> {
         expect(el, "Solid")?;
+        self.note_srs(el);
         let dim = Some(self.dim_of(el, None));
         let mut exterior = None;
         let mut interiors = Vec::new();

@@ -47,7 +47,7 @@ pub fn document(root: &Element) -> Result<Document, IndoorGmlError> {
             _ => {}
         }
     }
-    doc.srs_name = find_srs_name(root);
+    doc.srs_name = geo.srs_name();
     Ok(doc)
 }
 
@@ -462,15 +462,6 @@ fn require_id(el: &Element) -> Result<FeatureInfo, IndoorGmlError> {
         });
     }
     Ok(info)
-}
-
-fn find_srs_name(el: &Element) -> Option<String> {
-    if el.ns == Ns::Gml
-        && let Some(s) = el.attr(&Ns::None, "srsName")
-    {
-        return Some(s.to_string());
-    }
-    el.children.iter().find_map(find_srs_name)
 }
 
 fn unexpected(el: &Element, parent: &Element, expected: &str) -> IndoorGmlError {
