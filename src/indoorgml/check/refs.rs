@@ -79,17 +79,7 @@ pub fn check_references(doc: &Document, out: &mut Vec<Finding>) {
                         .get(*l)
                         .and_then(|l| l.states.get(*s))
                         .and_then(|s| s.duality.as_deref());
-                    if back != Some(id) {
-                        out.push(finding(
-                            "duality-not-mutual",
-                            id,
-                            line,
-                            format!(
-                                "duality → State '{d}', whose duality is {}",
-                                back.map_or("absent".into(), |b| format!("'{b}'"))
-                            ),
-                        ));
-                    }
+                    not_mutual(out, id, line, "State", d, back);
                 }
                 _ => bad(out, id, line, "duality", d, "a State"),
             }
@@ -109,17 +99,7 @@ pub fn check_references(doc: &Document, out: &mut Vec<Finding>) {
                         .get(*l)
                         .and_then(|l| l.transitions.get(*t))
                         .and_then(|t| t.duality.as_deref());
-                    if back != Some(id) {
-                        out.push(finding(
-                            "duality-not-mutual",
-                            id,
-                            line,
-                            format!(
-                                "duality → Transition '{d}', whose duality is {}",
-                                back.map_or("absent".into(), |b| format!("'{b}'"))
-                            ),
-                        ));
-                    }
+                    not_mutual(out, id, line, "Transition", d, back);
                 }
                 _ => bad(out, id, line, "duality", d, "a Transition"),
             }
@@ -206,6 +186,26 @@ pub fn check_references(doc: &Document, out: &mut Vec<Finding>) {
                 }
             }
         }
+    }
+}
+
+/// Reports a duality whose target's duality does not name `id` back.
+fn not_mutual(
+    out: &mut Vec<Finding>,
+    id: &str,
+    line: usize,
+    kind: &str,
+    target: &str,
+    back: Option<&str>,
+) {
+    if back != Some(id) {
+        let back = back.map_or("absent".into(), |b| format!("'{b}'"));
+        out.push(finding(
+            "duality-not-mutual",
+            id,
+            line,
+            format!("duality → {kind} '{target}', whose duality is {back}"),
+        ));
     }
 }
 
