@@ -18,7 +18,55 @@ fn session(columns: usize) -> (Session<MemorySource>, usize) {
     (Session::with_default_map(source).unwrap(), spaces)
 }
 
+/// The NRG extracted from `willow-full` (the map of the paper), when the
+/// shared maps are there.
+fn willow_full() -> Option<nrgdb::model::Nrg> {
+    let shared = std::env::var_os("NRGDB_SHARED")
+        .map_or_else(|| "../shared".into(), std::path::PathBuf::from);
+    let yaml = shared.join("maps/willow-full.yaml");
+    let grid = nrgdb::grid::load_map(&yaml, &nrgdb::grid::LoadOptions::default()).ok()?;
+    Some(
+        nrgdb::extract::extract(&grid, &nrgdb::extract::ExtractParams::default())
+            .ok()?
+            .nrg,
+    )
+}
+
+fn route_willow_full(c: &mut Criterion) {
+    let Some(nrg) = willow_full() else {
+        eprintln!("notice: willow-full not found (NRGDB_SHARED); skipping its ROUTE benchmark");
+        return;
+    };
+    // From the first room to the room farthest from it along the graph.
+    let graph = RouteGraph::new(&nrg);
+    let rooms: Vec<SpaceId> = nrg
+        .spaces()
+        .iter()
+        .filter(|s| s.kind == nrgdb::model::SpaceKind::Room)
+        .map(|s| s.id)
+        .collect();
+    let from = rooms[0];
+    let reach = reachable_within(&graph, from, f64::MAX, &Budget::unlimited()).unwrap();
+    let to = reach
+        .iter()
+        .rev()
+        .map(|(id, _)| *id)
+        .find(|id| rooms.contains(id))
+        .unwrap();
+    let spaces = nrg.spaces().len();
+    let mut source = MemorySource::new();
+    source.insert("willow", nrg);
+    let mut s = Session::with_default_map(source).unwrap();
+    let query = format!("ROUTE FROM space {from} TO space {to}");
+    assert!(!s.execute(&query).unwrap().is_empty());
+    c.bench_function(
+        &format!("query/route/willow-full-extracted-{spaces}-spaces"),
+        |b| b.iter(|| s.execute(black_box(&query)).unwrap()),
+    );
+}
+
 fn route(c: &mut Criterion) {
+    route_willow_full(c);
     for columns in [28, 1875] {
         let (mut s, spaces) = session(columns);
         // Corner to corner: the upper room of the first segment to the

@@ -71,6 +71,69 @@ fn import(c: &mut Criterion) {
     }
 }
 
+/// The NRG extracted from `willow-full`, when the shared maps are there.
+fn willow_full() -> Option<nrgdb::model::Nrg> {
+    let shared = std::env::var_os("NRGDB_SHARED")
+        .map_or_else(|| "../shared".into(), std::path::PathBuf::from);
+    let yaml = shared.join("maps/willow-full.yaml");
+    let grid = nrgdb::grid::load_map(&yaml, &nrgdb::grid::LoadOptions::default()).ok()?;
+    Some(
+        nrgdb::extract::extract(&grid, &nrgdb::extract::ExtractParams::default())
+            .ok()?
+            .nrg,
+    )
+}
+
+/// Import and load of the real `willow-full` NRG: a first import, and the
+/// same extraction imported again (every space matched, nothing changed).
+fn import_willow_full(c: &mut Criterion) {
+    let Some(nrg) = willow_full() else {
+        eprintln!("notice: willow-full not found (NRGDB_SHARED); skipping its store benchmarks");
+        return;
+    };
+    let spaces = nrg.spaces().len();
+    c.bench_function(&format!("store/import/first/willow-full-{spaces}"), |b| {
+        b.iter_batched(
+            || {
+                let dir = tempfile::tempdir().unwrap();
+                let store = Store::open(&dir.path().join("b.sqlite")).unwrap();
+                (dir, store)
+            },
+            |(dir, mut store)| {
+                store.import("willow", black_box(&nrg), meta()).unwrap();
+                (dir, store)
+            },
+            BatchSize::PerIteration,
+        )
+    });
+    let dir = tempfile::tempdir().unwrap();
+    let fixture = dir.path().join("fixture.sqlite");
+    Store::open(&fixture)
+        .unwrap()
+        .import("willow", &nrg, meta())
+        .unwrap();
+    c.bench_function(&format!("store/import/again/willow-full-{spaces}"), |b| {
+        b.iter_batched(
+            || {
+                let copy = tempfile::tempdir().unwrap();
+                let path = copy.path().join("b.sqlite");
+                std::fs::copy(&fixture, &path).unwrap();
+                let store = Store::open(&path).unwrap();
+                (copy, store)
+            },
+            |(copy, mut store)| {
+                store.import("willow", black_box(&nrg), meta()).unwrap();
+                (copy, store)
+            },
+            BatchSize::PerIteration,
+        )
+    });
+    let store = Store::open(&fixture).unwrap();
+    c.bench_function(&format!("store/load/latest/willow-full-{spaces}"), |b| {
+        b.iter(|| nrgdb::model::ConnectivityGraph::new(&store.load("willow", None).unwrap()))
+    });
+}
+
 fn matching(c: &mut Criterion) {
     let old = building(WILLOW_SEGMENTS, 0.0, 1);
     let new = building(WILLOW_SEGMENTS, 0.03, 2);
@@ -161,6 +224,7 @@ fn main() {
     size_report();
     let mut c = Criterion::default().configure_from_args();
     import(&mut c);
+    import_willow_full(&mut c);
     matching(&mut c);
     load(&mut c);
     c.final_summary();
