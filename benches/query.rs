@@ -18,22 +18,8 @@ fn session(columns: usize) -> (Session<MemorySource>, usize) {
     (Session::with_default_map(source).unwrap(), spaces)
 }
 
-/// The NRG extracted from `willow-full` (the map of the paper), when the
-/// shared maps are there.
-fn willow_full() -> Option<nrgdb::model::Nrg> {
-    let shared = std::env::var_os("NRGDB_SHARED")
-        .map_or_else(|| "../shared".into(), std::path::PathBuf::from);
-    let yaml = shared.join("maps/willow-full.yaml");
-    let grid = nrgdb::grid::load_map(&yaml, &nrgdb::grid::LoadOptions::default()).ok()?;
-    Some(
-        nrgdb::extract::extract(&grid, &nrgdb::extract::ExtractParams::default())
-            .ok()?
-            .nrg,
-    )
-}
-
 fn route_willow_full(c: &mut Criterion) {
-    let Some(nrg) = willow_full() else {
+    let Some(nrg) = nrgdb::fixtures::shared_map_nrg("willow-full") else {
         eprintln!("notice: willow-full not found (NRGDB_SHARED); skipping its ROUTE benchmark");
         return;
     };

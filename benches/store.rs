@@ -20,6 +20,32 @@ fn meta() -> ImportMeta {
     ImportMeta::new("bench", "bench")
 }
 
+/// Times importing `nrg` into a fresh copy of the database at `fixture`
+/// (copied for each sample, so every timed import starts from the same state).
+fn bench_import_onto(
+    c: &mut Criterion,
+    name: &str,
+    fixture: &std::path::Path,
+    nrg: &nrgdb::model::Nrg,
+) {
+    c.bench_function(name, |b| {
+        b.iter_batched(
+            || {
+                let copy = tempfile::tempdir().unwrap();
+                let path = copy.path().join("b.sqlite");
+                std::fs::copy(fixture, &path).unwrap();
+                let store = Store::open(&path).unwrap();
+                (copy, store)
+            },
+            |(copy, mut store)| {
+                store.import("willow", black_box(nrg), meta()).unwrap();
+                (copy, store)
+            },
+            BatchSize::PerIteration,
+        )
+    });
+}
+
 fn import(c: &mut Criterion) {
     let nrg = building(WILLOW_SEGMENTS, 0.0, 1);
     c.bench_function("store/import/first/willow-150", |b| {
@@ -52,42 +78,14 @@ fn import(c: &mut Criterion) {
         }
         let remap = building(WILLOW_SEGMENTS, 0.03, 2);
         let name = format!("store/import/remapped-onto-{history}-revisions/willow-150");
-        c.bench_function(&name, |b| {
-            b.iter_batched(
-                || {
-                    let copy = tempfile::tempdir().unwrap();
-                    let path = copy.path().join("b.sqlite");
-                    std::fs::copy(&fixture, &path).unwrap();
-                    let store = Store::open(&path).unwrap();
-                    (copy, store)
-                },
-                |(copy, mut store)| {
-                    store.import("willow", black_box(&remap), meta()).unwrap();
-                    (copy, store)
-                },
-                BatchSize::PerIteration,
-            )
-        });
+        bench_import_onto(c, &name, &fixture, &remap);
     }
-}
-
-/// The NRG extracted from `willow-full`, when the shared maps are there.
-fn willow_full() -> Option<nrgdb::model::Nrg> {
-    let shared = std::env::var_os("NRGDB_SHARED")
-        .map_or_else(|| "../shared".into(), std::path::PathBuf::from);
-    let yaml = shared.join("maps/willow-full.yaml");
-    let grid = nrgdb::grid::load_map(&yaml, &nrgdb::grid::LoadOptions::default()).ok()?;
-    Some(
-        nrgdb::extract::extract(&grid, &nrgdb::extract::ExtractParams::default())
-            .ok()?
-            .nrg,
-    )
 }
 
 /// Import and load of the real `willow-full` NRG: a first import, and the
 /// same extraction imported again (every space matched, nothing changed).
 fn import_willow_full(c: &mut Criterion) {
-    let Some(nrg) = willow_full() else {
+    let Some(nrg) = nrgdb::fixtures::shared_map_nrg("willow-full") else {
         eprintln!("notice: willow-full not found (NRGDB_SHARED); skipping its store benchmarks");
         return;
     };
@@ -112,22 +110,12 @@ fn import_willow_full(c: &mut Criterion) {
         .unwrap()
         .import("willow", &nrg, meta())
         .unwrap();
-    c.bench_function(&format!("store/import/again/willow-full-{spaces}"), |b| {
-        b.iter_batched(
-            || {
-                let copy = tempfile::tempdir().unwrap();
-                let path = copy.path().join("b.sqlite");
-                std::fs::copy(&fixture, &path).unwrap();
-                let store = Store::open(&path).unwrap();
-                (copy, store)
-            },
-            |(copy, mut store)| {
-                store.import("willow", black_box(&nrg), meta()).unwrap();
-                (copy, store)
-            },
-            BatchSize::PerIteration,
-        )
-    });
+    bench_import_onto(
+        c,
+        &format!("store/import/again/willow-full-{spaces}"),
+        &fixture,
+        &nrg,
+    );
     let store = Store::open(&fixture).unwrap();
     c.bench_function(&format!("store/load/latest/willow-full-{spaces}"), |b| {
         b.iter(|| nrgdb::model::ConnectivityGraph::new(&store.load("willow", None).unwrap()))

@@ -3,6 +3,21 @@
 
 use crate::model::{Connection, ConnectionKind, Nrg, Space, SpaceId, SpaceKind};
 
+/// The NRG extracted with default parameters from the shared dev map
+/// `$NRGDB_SHARED/maps/<name>.yaml` (default `../shared`), or `None` when
+/// that map is not there or does not extract. For benchmarks and tests.
+pub fn shared_map_nrg(name: &str) -> Option<Nrg> {
+    let shared = std::env::var_os("NRGDB_SHARED")
+        .map_or_else(|| "../shared".into(), std::path::PathBuf::from);
+    let yaml = shared.join("maps").join(format!("{name}.yaml"));
+    let grid = crate::grid::load_map(&yaml, &crate::grid::LoadOptions::default()).ok()?;
+    Some(
+        crate::extract::extract(&grid, &crate::extract::ExtractParams::default())
+            .ok()?
+            .nrg,
+    )
+}
+
 fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> Vec<[f64; 2]> {
     vec![[x0, y0], [x1, y0], [x1, y1], [x0, y1]]
 }
