@@ -59,10 +59,10 @@ fn paint(map: &GreyMap, img: &mut [u8], bbox: [f64; 4], value: u8, inside: impl 
         let top = (h - 1 - u) as usize;
         for c in c0..=c1 {
             let x = map.origin_m[0] + (c as f64 + 0.5) * r;
-            if inside([x, y]) {
-                if let Some(px) = img.get_mut(top * w as usize + c as usize) {
-                    *px = value;
-                }
+            if inside([x, y])
+                && let Some(px) = img.get_mut(top * w as usize + c as usize)
+            {
+                *px = value;
             }
         }
     }

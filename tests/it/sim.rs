@@ -16,7 +16,7 @@ fn small(seed: u64, furniture: bool, non_manhattan: bool) -> Simulation {
     simulate(&p).unwrap()
 }
 
-/// The grey value of the pixel whose centre is nearest `(x, y)` metres.
+/// Every pixel's centre in metres (map frame) with its grey value.
 fn pixel_centres(map: &GreyMap) -> impl Iterator<Item = ([f64; 2], u8)> + '_ {
     let (w, h, r) = (map.width as usize, map.height as usize, map.resolution_m);
     (0..h).flat_map(move |row| {
