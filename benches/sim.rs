@@ -32,6 +32,20 @@ fn mapping(c: &mut Criterion) {
         },
     );
     let beams: usize = scans.iter().map(|s| s.ranges_m.len()).sum();
+    let cells: f64 = scans
+        .iter()
+        .flat_map(|s| s.ranges_m.iter())
+        .map(|&r| f64::from(r).min(10.0) / 0.05)
+        .sum();
+    let b = plan.bounds();
+    eprintln!(
+        "building {:.1} m x {:.1} m, {} rooms, {} scans, {beams} beams, {:.0} cells per beam on average",
+        b[2] - b[0],
+        b[3] - b[1],
+        plan.rooms.len(),
+        scans.len(),
+        cells / beams as f64
+    );
     let mut g = c.benchmark_group("sim");
     g.sample_size(10);
     g.throughput(Throughput::Elements(beams as u64));

@@ -97,7 +97,7 @@ pub(super) fn layout(p: &FloorPlanParams) -> FloorPlan {
         let e = intersect(b, prev.frame.d, frame.at(0.0, -w), frame.d);
         let mut len = rng.range(p.corridor_length_m.0, p.corridor_length_m.1);
         let mut placed = None;
-        while len >= p.corridor_length_m.0.clamp(3.0, 6.0) {
+        while len >= 6.0 {
             let poly = vec![b, e, frame.at(len, -w), frame.at(len, 0.0), frame.o];
             let clear = plan.corridors[..k - 1]
                 .iter()

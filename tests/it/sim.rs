@@ -16,7 +16,7 @@ fn small(seed: u64, furniture: bool, non_manhattan: bool) -> Simulation {
     simulate(&p).unwrap()
 }
 
-/// The grey value of the pixel whose centre is nearest `(x, y)` metres.
+/// Every pixel's centre in metres (map frame) with its grey value.
 fn pixel_centres(map: &GreyMap) -> impl Iterator<Item = ([f64; 2], u8)> + '_ {
     let (w, h, r) = (map.width as usize, map.height as usize, map.resolution_m);
     (0..h).flat_map(move |row| {
@@ -230,4 +230,48 @@ fn sim_map_log_maps_a_generated_log() {
     assert!(free > 25.0 && free < 36.0, "free area {free}");
     let occupied = m.grey.iter().filter(|&&g| g == 0).count() as f64 * 0.05;
     assert!(occupied > 15.0 && occupied < 40.0, "wall length {occupied}");
+}
+
+/// `NRGDB_SHARED` (default `../shared` next to the crate), or `None` with a
+/// notice when it is missing and `NRGDB_REQUIRE_SHARED` is not `1`.
+fn shared_file(rel: &str) -> Option<PathBuf> {
+    let root = std::env::var_os("NRGDB_SHARED")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared"));
+    let path = root.join(rel);
+    if path.is_file() {
+        return Some(path);
+    }
+    assert!(
+        std::env::var("NRGDB_REQUIRE_SHARED").as_deref() != Ok("1"),
+        "{} is missing and NRGDB_REQUIRE_SHARED=1",
+        path.display()
+    );
+    eprintln!("skipping: {} not found (set NRGDB_SHARED)", path.display());
+    None
+}
+
+#[test]
+fn sim_map_log_intel_has_the_building_size() {
+    let Some(log) = shared_file("carmen/intel-corrected.log.gz") else {
+        return;
+    };
+    let built = nrgdb::sim::map_carmen_log(&log, 0.05, 20.0).unwrap();
+    assert_eq!(built.scans, 910);
+    let m = &built.map;
+    let (w, h) = (m.width as usize, m.height as usize);
+    let (mut c0, mut c1, mut r0, mut r1) = (w, 0, h, 0);
+    for r in 0..h {
+        for c in 0..w {
+            if m.grey[r * w + c] == 254 {
+                (c0, c1, r0, r1) = (c0.min(c), c1.max(c), r0.min(r), r1.max(r));
+            }
+        }
+    }
+    // The Intel lab is a square building of about 29 m a side.
+    let (bw, bh) = ((c1 - c0 + 1) as f64 * 0.05, (r1 - r0 + 1) as f64 * 0.05);
+    assert!(
+        (27.5..31.0).contains(&bw) && (27.5..31.0).contains(&bh),
+        "{bw} x {bh} m"
+    );
 }
