@@ -46,9 +46,9 @@ fn bench_import_onto(
     });
 }
 
-fn import(c: &mut Criterion) {
-    let nrg = building(WILLOW_SEGMENTS, 0.0, 1);
-    c.bench_function("store/import/first/willow-150", |b| {
+/// Times importing `nrg` as the first revision of a new database.
+fn bench_first_import(c: &mut Criterion, name: &str, nrg: &nrgdb::model::Nrg) {
+    c.bench_function(name, |b| {
         b.iter_batched(
             || {
                 let dir = tempfile::tempdir().unwrap();
@@ -56,12 +56,17 @@ fn import(c: &mut Criterion) {
                 (dir, store)
             },
             |(dir, mut store)| {
-                store.import("willow", black_box(&nrg), meta()).unwrap();
+                store.import("willow", black_box(nrg), meta()).unwrap();
                 (dir, store)
             },
             BatchSize::PerIteration,
         )
     });
+}
+
+fn import(c: &mut Criterion) {
+    let nrg = building(WILLOW_SEGMENTS, 0.0, 1);
+    bench_first_import(c, "store/import/first/willow-150", &nrg);
     // A re-mapping: every polygon moved, so every space is matched by
     // overlap and every row is replaced (the worst case), onto a history of
     // 1 and of 50 such revisions (the database is copied for each sample).
@@ -90,20 +95,7 @@ fn import_willow_full(c: &mut Criterion) {
         return;
     };
     let spaces = nrg.spaces().len();
-    c.bench_function(&format!("store/import/first/willow-full-{spaces}"), |b| {
-        b.iter_batched(
-            || {
-                let dir = tempfile::tempdir().unwrap();
-                let store = Store::open(&dir.path().join("b.sqlite")).unwrap();
-                (dir, store)
-            },
-            |(dir, mut store)| {
-                store.import("willow", black_box(&nrg), meta()).unwrap();
-                (dir, store)
-            },
-            BatchSize::PerIteration,
-        )
-    });
+    bench_first_import(c, &format!("store/import/first/willow-full-{spaces}"), &nrg);
     let dir = tempfile::tempdir().unwrap();
     let fixture = dir.path().join("fixture.sqlite");
     Store::open(&fixture)

@@ -60,18 +60,21 @@ pub fn load_image(
     classify(img, &yaml, options)
 }
 
+/// Opens an image file, guessing its format from its first bytes.
+fn open_reader(path: &Path) -> Result<ImageReader<std::io::BufReader<std::fs::File>>, GridError> {
+    let io = |source| GridError::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    ImageReader::open(path)
+        .map_err(io)?
+        .with_guessed_format()
+        .map_err(io)
+}
+
 /// Decodes an image, checking the pixel limit before decoding the pixels.
 pub fn decode_image(path: &Path, options: &LoadOptions) -> Result<DynamicImage, GridError> {
-    let reader = ImageReader::open(path)
-        .map_err(|source| GridError::Io {
-            path: path.to_path_buf(),
-            source,
-        })?
-        .with_guessed_format()
-        .map_err(|source| GridError::Io {
-            path: path.to_path_buf(),
-            source,
-        })?;
+    let reader = open_reader(path)?;
     let (w, h) = reader.into_dimensions().map_err(|e| GridError::Image {
         path: path.to_path_buf(),
         message: e.to_string(),
@@ -92,16 +95,7 @@ pub fn decode_image(path: &Path, options: &LoadOptions) -> Result<DynamicImage, 
             message: "image is empty".into(),
         });
     }
-    let reader = ImageReader::open(path)
-        .map_err(|source| GridError::Io {
-            path: path.to_path_buf(),
-            source,
-        })?
-        .with_guessed_format()
-        .map_err(|source| GridError::Io {
-            path: path.to_path_buf(),
-            source,
-        })?;
+    let reader = open_reader(path)?;
     reader.decode().map_err(|e| GridError::Image {
         path: path.to_path_buf(),
         message: e.to_string(),

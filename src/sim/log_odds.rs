@@ -74,6 +74,19 @@ pub struct LogOddsMap {
     params: LogOddsParams,
 }
 
+/// Checks a map resolution given on the command line or in parameters.
+pub(super) fn check_resolution(resolution_m: f64) -> Result<(), SimError> {
+    if resolution_m > 0.0 && resolution_m.is_finite() {
+        return Ok(());
+    }
+    Err(SimError::BadParameter {
+        name: "--resolution",
+        value: resolution_m.to_string(),
+        expected: "a finite number > 0 (metres per cell)",
+        hint: "0.05 is usual for indoor maps",
+    })
+}
+
 impl LogOddsMap {
     /// An all-unknown map covering `[min_x, min_y, max_x, max_y]` plus
     /// `margin_m` on every side.
@@ -83,14 +96,7 @@ impl LogOddsMap {
         resolution_m: f64,
         params: LogOddsParams,
     ) -> Result<LogOddsMap, SimError> {
-        if !(resolution_m > 0.0 && resolution_m.is_finite()) {
-            return Err(SimError::BadParameter {
-                name: "--resolution",
-                value: resolution_m.to_string(),
-                expected: "a finite number > 0 (metres per cell)",
-                hint: "0.05 is usual for indoor maps",
-            });
-        }
+        check_resolution(resolution_m)?;
         let (w_m, h_m) = (
             bounds[2] - bounds[0] + 2.0 * margin_m,
             bounds[3] - bounds[1] + 2.0 * margin_m,

@@ -5,7 +5,7 @@ use std::path::Path;
 use super::SimError;
 use super::carmen::read_carmen;
 use super::lidar::Scan;
-use super::log_odds::{GreyMap, LogOddsMap, LogOddsParams};
+use super::log_odds::{GreyMap, LogOddsMap, LogOddsParams, check_resolution};
 
 /// What [`map_scans`] built.
 #[derive(Debug, Clone, PartialEq)]
@@ -66,14 +66,7 @@ pub fn map_carmen_log(
     resolution_m: f64,
     usable_range_m: f64,
 ) -> Result<LogMap, SimError> {
-    if !(resolution_m > 0.0 && resolution_m.is_finite()) {
-        return Err(SimError::BadParameter {
-            name: "--resolution",
-            value: resolution_m.to_string(),
-            expected: "a finite number > 0 (metres per cell)",
-            hint: "0.05 is usual for indoor maps",
-        });
-    }
+    check_resolution(resolution_m)?;
     if !(usable_range_m > 0.0 && usable_range_m.is_finite()) {
         return Err(SimError::BadParameter {
             name: "--max-range",
