@@ -46,6 +46,17 @@ pub struct ExtractParams {
     /// Free space narrower than twice this is noise (LiDAR rays leaking into
     /// unknown space, speckle) and is removed by an opening. Default 0.2 m.
     pub noise_radius_m: f64,
+    /// Obstacle islands (not joined to any wall) whose bounding box is at
+    /// most this long on both sides are furniture: rooms are segmented as if
+    /// they were free, and own the pixels under them. 0 turns this off.
+    /// Default 1.0 m: chair and table legs, boxes and pillars, but not the
+    /// 1.2 m wall pieces left between neighbouring doorways.
+    pub furniture_max_m: f64,
+    /// Unknown pockets inside the building (the insides of furniture, what
+    /// the sensor could not see) of at most this area join the spaces
+    /// around them; unknown joined to the image border is outside and stays
+    /// out. 0 turns this off. Default 4.0 m².
+    pub unknown_pocket_max_m2: f64,
     /// Free components smaller than this are dropped. Default 1.0 m².
     pub min_free_area_m2: f64,
     /// Room cores are the places farther than this from any obstacle; a
@@ -80,6 +91,8 @@ impl Default for ExtractParams {
         ExtractParams {
             method: Method::Watershed,
             noise_radius_m: 0.2,
+            furniture_max_m: 1.0,
+            unknown_pocket_max_m2: 4.0,
             min_free_area_m2: 1.0,
             core_radius_m: 0.5,
             split_min_core_m2: 1.0,
@@ -99,6 +112,8 @@ impl ExtractParams {
     pub fn validate(&self) -> Result<(), (&'static str, f64)> {
         let fields = [
             ("noise_radius_m", self.noise_radius_m),
+            ("furniture_max_m", self.furniture_max_m),
+            ("unknown_pocket_max_m2", self.unknown_pocket_max_m2),
             ("min_free_area_m2", self.min_free_area_m2),
             ("core_radius_m", self.core_radius_m),
             ("split_min_core_m2", self.split_min_core_m2),

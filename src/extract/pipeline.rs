@@ -8,6 +8,7 @@ use super::ccl::segment_ccl;
 use super::clean::clean_free;
 use super::doors::{Border, borders, cut_doors};
 use super::graph::topology;
+use super::interior::claim_enclosed_unknown;
 use super::merge::merge_small;
 use super::polygon::{bounding_boxes, outline};
 use super::segment::segment_basins;
@@ -68,7 +69,12 @@ pub fn extract(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extractio
         last: Instant::now(),
         timings: Vec::new(),
     };
-    let free = clean_free(grid, params.noise_radius_m, params.min_free_area_m2);
+    let free = clean_free(
+        grid,
+        params.noise_radius_m,
+        params.min_free_area_m2,
+        params.furniture_max_m,
+    );
     if free.clean.iter().all(|&p| p == 0) {
         return Err(ExtractError::NoSpace {
             noise_m: params.noise_radius_m,
@@ -107,7 +113,12 @@ pub fn extract(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extractio
     let doors: Vec<&Border> = all.iter().filter(|b| b.width_px <= door_px).collect();
     let door_pairs: Vec<(u32, u32)> = doors.iter().map(|b| b.pair).collect();
     let n_regions = regions.count;
-    let labels = cut_doors(&regions, &doors, (params.door_depth_m / res).max(1.0));
+    let mut labels = cut_doors(&regions, &doors, (params.door_depth_m / res).max(1.0));
+    claim_enclosed_unknown(
+        &mut labels,
+        grid,
+        (params.unknown_pocket_max_m2 / (res * res)).floor() as usize,
+    );
     clock.lap("doors");
     let shape = region_shapes(&labels, &dist);
     let topo = topology(
