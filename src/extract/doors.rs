@@ -1,8 +1,8 @@
 //! Doors: narrow borders between two basins become door spaces.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashSet, VecDeque};
 
-use crate::imaging::{Labels, Mask, squared_distance_to_foreground, watershed};
+use crate::imaging::Labels;
 
 /// One border between two regions.
 #[derive(Debug, Clone)]
@@ -53,31 +53,57 @@ pub(crate) fn borders(labels: &Labels, dist: &[f32]) -> Vec<Border> {
 
 /// Cuts a door space of thickness `depth_px` across each border in `doors`,
 /// labelled `labels.count + 1 + k` for the k-th door; returns the new labels.
+/// The door grows breadth-first from its border pixels over the labelled
+/// pixels within `depth_px / 2 - 0.5` of the border (Euclidean), so two
+/// doors side by side split the band between them. Only the band is
+/// visited: a few thousand pixels, whatever the map's size.
 pub(crate) fn cut_doors(labels: &Labels, doors: &[&Border], depth_px: f64) -> Labels {
-    let (w, h) = (labels.width, labels.height);
-    let n = labels.data.len();
-    let mut seeds = Labels::new(w, h);
-    let mut border_mask = Mask::new(w, h);
+    let (w, h) = (labels.width as i64, labels.height as i64);
+    let r = (depth_px / 2.0 - 0.5).max(0.0);
+    let reach = r.floor() as i64;
+    let mut band: HashSet<u32> = HashSet::new();
+    for door in doors {
+        for &p in &door.pixels {
+            let (x, y) = (i64::from(p) % w, i64::from(p) / w);
+            for dy in -reach..=reach {
+                for dx in -reach..=reach {
+                    let (nx, ny) = (x + dx, y + dy);
+                    let inside = nx >= 0 && ny >= 0 && nx < w && ny < h;
+                    if inside && ((dx * dx + dy * dy) as f64) <= r * r {
+                        let j = (ny * w + nx) as u32;
+                        if labels.data[j as usize] != 0 {
+                            band.insert(j);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    let mut out = labels.clone();
+    let mut queue: VecDeque<u32> = VecDeque::new();
     for (k, door) in doors.iter().enumerate() {
         for &p in &door.pixels {
-            seeds.data[p as usize] = labels.count + 1 + k as u32;
-            border_mask.as_mut()[p as usize] = 255;
+            out.data[p as usize] = labels.count + 1 + k as u32;
+            if band.remove(&p) {
+                queue.push_back(p);
+            }
         }
     }
-    seeds.count = labels.count + doors.len() as u32;
-    let r = (depth_px / 2.0 - 0.5).max(0.0);
-    let sq = squared_distance_to_foreground(&border_mask);
-    let band: Vec<bool> = (0..n)
-        .map(|i| labels.data[i] != 0 && sq[i] <= r * r)
-        .collect();
-    let grown = watershed(&vec![0u16; n], &seeds, &band);
-    let mut out = labels.clone();
-    for (o, &g) in out.data.iter_mut().zip(&grown.data) {
-        if g != 0 {
-            *o = g;
+    while let Some(p) = queue.pop_front() {
+        let (x, y) = (i64::from(p) % w, i64::from(p) / w);
+        for (dx, dy) in [(-1, 0), (1, 0), (0, -1), (0, 1)] {
+            let (nx, ny) = (x + dx, y + dy);
+            if nx < 0 || ny < 0 || nx >= w || ny >= h {
+                continue;
+            }
+            let j = (ny * w + nx) as u32;
+            if band.remove(&j) {
+                out.data[j as usize] = out.data[p as usize];
+                queue.push_back(j);
+            }
         }
     }
-    out.count = seeds.count;
+    out.count = labels.count + doors.len() as u32;
     out
 }
 
