@@ -23,6 +23,7 @@ mod output;
 mod params;
 mod pipeline;
 mod polygon;
+mod resample;
 mod segment;
 mod simplify;
 

@@ -11,6 +11,7 @@ use super::graph::topology;
 use super::interior::claim_enclosed_unknown;
 use super::merge::merge_small;
 use super::polygon::{bounding_boxes, outline};
+use super::resample::{coarsen, pixel_centroids, refine};
 use super::segment::segment_basins;
 use super::{ExtractError, ExtractParams, Method};
 use crate::grid::OccupancyGrid;
@@ -64,6 +65,25 @@ pub fn extract(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extractio
     params
         .validate()
         .map_err(|(name, value)| ExtractError::BadParam { name, value })?;
+    let k = (params.working_resolution_m / grid.resolution + 1e-9).floor();
+    if !(k >= 2.0 && k <= 64.0) {
+        return extract_at(grid, params);
+    }
+    let k = k as u32;
+    let started = Instant::now();
+    let coarse = coarsen(grid, k);
+    let coarsen_time = started.elapsed();
+    let mut x = extract_at(&coarse, params)?;
+    let started = Instant::now();
+    x.labels = refine(&x.labels, grid, k);
+    x.pixel_centroids = pixel_centroids(&x.labels);
+    x.timings.insert(0, ("coarsen", coarsen_time));
+    x.timings.push(("refine", started.elapsed()));
+    Ok(x)
+}
+
+/// [`extract`] at the grid's own resolution.
+fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction, ExtractError> {
     let res = grid.resolution;
     let mut clock = Clock {
         last: Instant::now(),

@@ -20,31 +20,35 @@ fn row_distances(mask: &Mask, target: bool, outside: bool) -> Vec<u32> {
     let (w, h) = (mask.width() as usize, mask.height() as usize);
     let src = mask.as_raw();
     let mut out = vec![u32::MAX; w * h];
-    for y in 0..h {
-        let row = &src[y * w..(y + 1) * w];
-        let dst = &mut out[y * w..(y + 1) * w];
-        let mut last: Option<usize> = None;
-        for x in 0..w {
-            if (row[x] != 0) == target {
-                last = Some(x);
-            }
-            dst[x] = match last {
-                Some(l) => (x - l) as u32,
-                None if outside => (x + 1) as u32,
-                None => u32::MAX,
+    // Distances saturate far below u32::MAX, which stays "none".
+    let none = if outside { 0 } else { u32::MAX / 2 };
+    for (row, dst) in src
+        .chunks_exact(w.max(1))
+        .zip(out.chunks_exact_mut(w.max(1)))
+        .take(h)
+    {
+        let mut d = none;
+        for (o, &p) in dst.iter_mut().zip(row) {
+            d = if (p != 0) == target {
+                0
+            } else {
+                d.saturating_add(1)
             };
+            *o = d;
         }
-        let mut next: Option<usize> = None;
-        for x in (0..w).rev() {
-            if (row[x] != 0) == target {
-                next = Some(x);
-            }
-            let d = match next {
-                Some(n) => (n - x) as u32,
-                None if outside => (w - x) as u32,
-                None => u32::MAX,
+        let mut d = none;
+        for (o, &p) in dst.iter_mut().zip(row).rev() {
+            d = if (p != 0) == target {
+                0
+            } else {
+                d.saturating_add(1)
             };
-            dst[x] = dst[x].min(d);
+            *o = (*o).min(d);
+        }
+        if !outside {
+            dst.iter_mut()
+                .filter(|o| **o >= u32::MAX / 2)
+                .for_each(|o| *o = u32::MAX);
         }
     }
     out
