@@ -1,6 +1,6 @@
 //! Doors: narrow borders between two basins become door spaces.
 
-use std::collections::{BTreeMap, HashSet, VecDeque};
+use std::collections::{BTreeMap, HashMap, HashSet, VecDeque};
 
 use crate::imaging::Labels;
 
@@ -16,26 +16,25 @@ pub(crate) struct Border {
 }
 
 /// Every border between two labels with its passage width (twice the
-/// largest distance to an obstacle along it, plus one pixel).
+/// largest distance to an obstacle along it). Two regions may meet in
+/// several places (a room with two doorways onto one corridor): each
+/// separate stretch of border (pixels more than 2 px apart) is a border of
+/// its own.
 pub(crate) fn borders(labels: &Labels, dist: &[f32]) -> Vec<Border> {
     let (w, h) = (labels.width as usize, labels.height as usize);
     let d = &labels.data;
-    let mut map: BTreeMap<(u32, u32), Border> = BTreeMap::new();
+    // Per pair: (pixel on one side, pixel on the other, half width there).
+    let mut crossings: BTreeMap<(u32, u32), Vec<(u32, u32, f32)>> = BTreeMap::new();
     let mut add = |i: usize, j: usize| {
         let (a, b) = (d[i], d[j]);
         if a == 0 || b == 0 || a == b {
             return;
         }
-        let pair = (a.min(b), a.max(b));
-        let e = map.entry(pair).or_insert_with(|| Border {
-            pair,
-            width_px: 0.0,
-            pixels: Vec::new(),
-        });
-        let half = f64::from(dist[i].min(dist[j]));
-        e.width_px = e.width_px.max(2.0 * half + 1.0);
-        e.pixels.push(i as u32);
-        e.pixels.push(j as u32);
+        crossings.entry((a.min(b), a.max(b))).or_default().push((
+            i as u32,
+            j as u32,
+            dist[i].min(dist[j]),
+        ));
     };
     for y in 0..h {
         for x in 0..w {
@@ -48,7 +47,60 @@ pub(crate) fn borders(labels: &Labels, dist: &[f32]) -> Vec<Border> {
             }
         }
     }
-    map.into_values().collect()
+    let mut out = Vec::new();
+    for (pair, list) in crossings {
+        for stretch in stretches(&list, w) {
+            let half = stretch.iter().map(|&k| list[k].2).fold(0.0f32, f32::max);
+            out.push(Border {
+                pair,
+                width_px: 2.0 * f64::from(half),
+                pixels: stretch
+                    .iter()
+                    .flat_map(|&k| [list[k].0, list[k].1])
+                    .collect(),
+            });
+        }
+    }
+    out
+}
+
+/// Groups crossings whose first pixels lie within 2 px (Chebyshev) of each
+/// other, transitively; returns index lists, in order of first crossing.
+fn stretches(list: &[(u32, u32, f32)], w: usize) -> Vec<Vec<usize>> {
+    let at: HashMap<u32, usize> = list.iter().enumerate().map(|(k, c)| (c.0, k)).collect();
+    let mut group = vec![usize::MAX; list.len()];
+    let mut out: Vec<Vec<usize>> = Vec::new();
+    for start in 0..list.len() {
+        if group[start] != usize::MAX {
+            continue;
+        }
+        let g = out.len();
+        group[start] = g;
+        let mut members = vec![start];
+        let mut next = 0;
+        while next < members.len() {
+            let p = list[members[next]].0 as i64;
+            next += 1;
+            let (x, y) = (p % w as i64, p / w as i64);
+            for dy in -2..=2i64 {
+                for dx in -2..=2i64 {
+                    let (nx, ny) = (x + dx, y + dy);
+                    if nx < 0 || ny < 0 || nx >= w as i64 {
+                        continue;
+                    }
+                    if let Some(&k) = at.get(&((ny * w as i64 + nx) as u32)) {
+                        if group[k] == usize::MAX {
+                            group[k] = g;
+                            members.push(k);
+                        }
+                    }
+                }
+            }
+        }
+        members.sort_unstable();
+        out.push(members);
+    }
+    out
 }
 
 /// Cuts a door space of thickness `depth_px` across each border in `doors`,
@@ -126,9 +178,23 @@ mod tests {
         let b = borders(&labels, &dist);
         assert_eq!(b.len(), 1);
         assert_eq!(b[0].pair, (1, 2));
-        assert_eq!(b[0].width_px, 5.0);
+        assert_eq!(b[0].width_px, 4.0);
         let cut = cut_doors(&labels, &[&b[0]], 2.0);
         assert_eq!(cut.count, 3);
         assert_eq!(cut.data[..6], [1, 1, 3, 3, 2, 2]);
+    }
+
+    #[test]
+    fn two_doorways_between_the_same_regions_are_two_borders() {
+        // Region 1 above, 2 below, joined at columns 0-1 and 6-7 only.
+        let labels = Labels {
+            width: 8,
+            height: 2,
+            data: vec![1, 1, 1, 1, 1, 1, 1, 1, 2, 2, 0, 0, 0, 0, 2, 2],
+            count: 2,
+        };
+        let b = borders(&labels, &[1.0; 16]);
+        assert_eq!(b.len(), 2);
+        assert!(b.iter().all(|b| b.pair == (1, 2) && b.pixels.len() == 4));
     }
 }
