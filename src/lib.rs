@@ -26,4 +26,6 @@ pub mod query;
 pub mod render;
 pub mod route;
 pub mod sim;
+#[cfg(feature = "server")]
+pub mod server;
 pub mod store;
