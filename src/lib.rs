@@ -25,7 +25,7 @@ pub mod model;
 pub mod query;
 pub mod render;
 pub mod route;
-pub mod sim;
 #[cfg(feature = "server")]
 pub mod server;
+pub mod sim;
 pub mod store;

@@ -22,8 +22,8 @@ mod maps;
 mod model_file;
 mod name;
 pub mod query;
-mod serve;
 pub mod repl;
+mod serve;
 mod simulate;
 
 pub use model_file::{load_model, write_model};

@@ -18,7 +18,12 @@ pub struct Args {
     pub addr: SocketAddr,
     /// Bearer token that uploads and NAME queries must present; without one
     /// the server is read-only (writes get 403).
-    #[arg(long, env = "NRGDB_TOKEN", value_name = "TOKEN", hide_env_values = true)]
+    #[arg(
+        long,
+        env = "NRGDB_TOKEN",
+        value_name = "TOKEN",
+        hide_env_values = true
+    )]
     pub token: Option<String>,
     /// Allow browsers on this origin (repeatable; `*` for any). CORS is off
     /// unless given.
@@ -81,5 +86,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
 /// Without the `server` feature the subcommand only explains itself.
 #[cfg(not(feature = "server"))]
 pub fn run(_args: Args, _out: &mut dyn Write) -> miette::Result<ExitCode> {
-    miette::bail!("this nrgdb was built without the `server` feature (rebuild with --features server)")
+    miette::bail!(
+        "this nrgdb was built without the `server` feature (rebuild with --features server)"
+    )
 }

@@ -143,6 +143,10 @@ mod tests {
         assert_eq!(cache.stats(), (2, 3));
         cache.get_or_load("a", 1, || load(2)).unwrap();
         assert_eq!(cache.stats(), (3, 3));
-        assert!(cache.get_or_load("c", 1, || Err::<IndexedRevision, _>(())).is_err());
+        assert!(
+            cache
+                .get_or_load("c", 1, || Err::<IndexedRevision, _>(()))
+                .is_err()
+        );
     }
 }

@@ -197,9 +197,10 @@ impl From<RouteError> for ApiError {
     fn from(e: RouteError) -> ApiError {
         match e {
             RouteError::Timeout(ms) => ApiError::Timeout(ms),
-            RouteError::NotNavigable(id) => {
-                ApiError::not_found("from", format!("space {id} does not exist in this revision"))
-            }
+            RouteError::NotNavigable(id) => ApiError::not_found(
+                "from",
+                format!("space {id} does not exist in this revision"),
+            ),
             RouteError::AvoidedEndpoint(_) => ApiError::bad("avoid", e.to_string()),
             RouteError::AlternativesWithVia => ApiError::bad("alternatives", e.to_string()),
         }
@@ -236,6 +237,9 @@ mod tests {
             known: "(none)".into(),
         }
         .into();
-        assert_eq!((e.status(), e.parameter()), (StatusCode::NOT_FOUND, Some("map")));
+        assert_eq!(
+            (e.status(), e.parameter()),
+            (StatusCode::NOT_FOUND, Some("map"))
+        );
     }
 }

@@ -70,7 +70,10 @@ impl Metrics {
         let routes = self.routes.lock().unwrap_or_else(|p| p.into_inner());
         let mut names: Vec<&String> = routes.keys().collect();
         names.sort();
-        let _ = writeln!(out, "# HELP nrgdb_http_requests_total HTTP requests served.");
+        let _ = writeln!(
+            out,
+            "# HELP nrgdb_http_requests_total HTTP requests served."
+        );
         let _ = writeln!(out, "# TYPE nrgdb_http_requests_total counter");
         for name in &names {
             for ((method, status), n) in &routes[*name].by_status {
@@ -115,13 +118,36 @@ impl Metrics {
         }
         let (hits, misses) = cache.stats();
         let gauges = [
-            ("nrgdb_cache_hits_total", "counter", "Revision cache hits.", hits as f64),
-            ("nrgdb_cache_misses_total", "counter", "Revision cache misses (revision loaded and indexed).", misses as f64),
-            ("nrgdb_cache_revisions", "gauge", "Revisions held in the cache.", cache.len() as f64),
-            ("nrgdb_uptime_seconds", "gauge", "Seconds since the server started.", self.started.elapsed().as_secs_f64()),
+            (
+                "nrgdb_cache_hits_total",
+                "counter",
+                "Revision cache hits.",
+                hits as f64,
+            ),
+            (
+                "nrgdb_cache_misses_total",
+                "counter",
+                "Revision cache misses (revision loaded and indexed).",
+                misses as f64,
+            ),
+            (
+                "nrgdb_cache_revisions",
+                "gauge",
+                "Revisions held in the cache.",
+                cache.len() as f64,
+            ),
+            (
+                "nrgdb_uptime_seconds",
+                "gauge",
+                "Seconds since the server started.",
+                self.started.elapsed().as_secs_f64(),
+            ),
         ];
         for (name, kind, help, value) in gauges {
-            let _ = writeln!(out, "# HELP {name} {help}\n# TYPE {name} {kind}\n{name} {value}");
+            let _ = writeln!(
+                out,
+                "# HELP {name} {help}\n# TYPE {name} {kind}\n{name} {value}"
+            );
         }
         out
     }

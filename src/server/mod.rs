@@ -60,7 +60,8 @@ pub fn router(state: AppState) -> Router {
     let mut app = Router::new();
     for e in routes::endpoints() {
         let handler = if e.timed {
-            e.handler.layer(from_fn_with_state(state.clone(), timeout::limit))
+            e.handler
+                .layer(from_fn_with_state(state.clone(), timeout::limit))
         } else {
             e.handler
         };

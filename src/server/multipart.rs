@@ -63,8 +63,8 @@ pub fn parse<'a>(body: &'a [u8], boundary: &str) -> Result<Vec<Part<'a>>, String
         let rest = rest
             .strip_prefix(b"\r\n")
             .ok_or("multipart boundary not followed by a line break")?;
-        let header_end =
-            memmem::find(rest, b"\r\n\r\n").ok_or("multipart part without a blank line after its headers")?;
+        let header_end = memmem::find(rest, b"\r\n\r\n")
+            .ok_or("multipart part without a blank line after its headers")?;
         let headers = std::str::from_utf8(&rest[..header_end])
             .map_err(|_| "multipart part headers are not UTF-8")?;
         let data_start = header_end + 4;

@@ -27,7 +27,11 @@ fn query_param(p: &ParamDoc) -> utoipa::openapi::path::Parameter {
     ParameterBuilder::new()
         .name(p.name)
         .parameter_in(ParameterIn::Query)
-        .required(if p.required { Required::True } else { Required::False })
+        .required(if p.required {
+            Required::True
+        } else {
+            Required::False
+        })
         .description(Some(p.doc))
         .schema(Some(schema(p.kind)))
         .build()
@@ -48,7 +52,11 @@ fn operation(e: &Endpoint) -> utoipa::openapi::path::Operation {
                 .parameter_in(ParameterIn::Path)
                 .required(Required::True)
                 .description(Some(path_param_doc(name)))
-                .schema(Some(schema(if name == "id" { "integer" } else { "string" }))),
+                .schema(Some(schema(if name == "id" {
+                    "integer"
+                } else {
+                    "string"
+                }))),
         );
     }
     for p in e.params {
@@ -56,14 +64,32 @@ fn operation(e: &Endpoint) -> utoipa::openapi::path::Operation {
     }
     op = op
         .response("200", ResponseBuilder::new().description("success"))
-        .response("400", ResponseBuilder::new().description("bad parameter: {code, message, parameter}"))
-        .response("404", ResponseBuilder::new().description("unknown map, revision or space"));
+        .response(
+            "400",
+            ResponseBuilder::new().description("bad parameter: {code, message, parameter}"),
+        )
+        .response(
+            "404",
+            ResponseBuilder::new().description("unknown map, revision or space"),
+        );
     if e.method == axum::http::Method::POST && e.path != "/query" {
         op = op
-            .response("201", ResponseBuilder::new().description("revision created"))
-            .response("401", ResponseBuilder::new().description("missing or wrong bearer token"))
-            .response("403", ResponseBuilder::new().description("server is read-only (no token configured)"))
-            .response("413", ResponseBuilder::new().description("upload too large"))
+            .response(
+                "201",
+                ResponseBuilder::new().description("revision created"),
+            )
+            .response(
+                "401",
+                ResponseBuilder::new().description("missing or wrong bearer token"),
+            )
+            .response(
+                "403",
+                ResponseBuilder::new().description("server is read-only (no token configured)"),
+            )
+            .response(
+                "413",
+                ResponseBuilder::new().description("upload too large"),
+            )
             .security(SecurityRequirement::new("bearer", Vec::<String>::new()));
     }
     op.build()
@@ -98,7 +124,10 @@ fn build() -> Value {
         .paths(paths)
         .components(Some(
             ComponentsBuilder::new()
-                .security_scheme("bearer", SecurityScheme::Http(Http::new(HttpAuthScheme::Bearer)))
+                .security_scheme(
+                    "bearer",
+                    SecurityScheme::Http(Http::new(HttpAuthScheme::Bearer)),
+                )
                 .build(),
         ))
         .build();

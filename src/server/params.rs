@@ -19,8 +19,8 @@ impl Params {
     /// and parameters given twice.
     pub fn parse(uri: &Uri, known: &[&str]) -> Result<Params, ApiError> {
         let raw = uri.query().unwrap_or("");
-        let pairs: Vec<(String, String)> =
-            serde_urlencoded::from_str(raw).map_err(|e| ApiError::bad("query string", e.to_string()))?;
+        let pairs: Vec<(String, String)> = serde_urlencoded::from_str(raw)
+            .map_err(|e| ApiError::bad("query string", e.to_string()))?;
         for (i, (k, _)) in pairs.iter().enumerate() {
             if !known.contains(&k.as_str()) {
                 let hint = if known.is_empty() {
@@ -31,7 +31,10 @@ impl Params {
                 return Err(ApiError::bad(k, format!("unknown parameter ({hint})")));
             }
             if pairs[..i].iter().any(|(p, _)| p == k) {
-                return Err(ApiError::bad(k, "given twice (give it once; lists are comma separated)"));
+                return Err(ApiError::bad(
+                    k,
+                    "given twice (give it once; lists are comma separated)",
+                ));
             }
         }
         Ok(Params { pairs })
@@ -67,7 +70,10 @@ impl Params {
 
     /// The `rev` parameter: a revision number ≥ 1 or `latest` (`None`).
     pub fn rev(&self) -> Result<Option<u32>, ApiError> {
-        self.get("rev").map(|v| parse_rev("rev", v)).transpose().map(Option::flatten)
+        self.get("rev")
+            .map(|v| parse_rev("rev", v))
+            .transpose()
+            .map(Option::flatten)
     }
 }
 
@@ -122,7 +128,10 @@ mod tests {
         let e = Params::parse(&uri("/x?depth=2&depth=3"), &["depth"]).unwrap_err();
         assert_eq!(e.parameter(), Some("depth"));
         let p = Params::parse(&uri("/x?depth=two&rev=0"), &["depth", "rev"]).unwrap();
-        assert_eq!(p.opt::<u32>("depth", "a number").unwrap_err().parameter(), Some("depth"));
+        assert_eq!(
+            p.opt::<u32>("depth", "a number").unwrap_err().parameter(),
+            Some("depth")
+        );
         assert_eq!(p.rev().unwrap_err().parameter(), Some("rev"));
         assert_eq!(p.required("from").unwrap_err().parameter(), Some("from"));
         assert!(parse_metres("x", "NaN").is_err());

@@ -120,7 +120,11 @@ impl Ctx<'_> {
     /// Revision `rev` of `map` (the latest when `None`), indexed, from the
     /// cache when there. The latest revision is looked up on every call,
     /// so a new revision is served by the next request.
-    pub fn revision(&mut self, map: &str, rev: Option<u32>) -> Result<Arc<IndexedRevision>, ApiError> {
+    pub fn revision(
+        &mut self,
+        map: &str,
+        rev: Option<u32>,
+    ) -> Result<Arc<IndexedRevision>, ApiError> {
         if let Some(r) = rev
             && let Some(hit) = self.shared.cache.get(map, r)
         {

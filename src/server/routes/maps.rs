@@ -27,7 +27,9 @@ pub async fn list_revisions(
     Params::parse(&uri, &[])?;
     let revisions = {
         let map = map.clone();
-        state.blocking(move |ctx| Ok(ctx.store.revisions(&map)?)).await?
+        state
+            .blocking(move |ctx| Ok(ctx.store.revisions(&map)?))
+            .await?
     };
     Ok(Json(json!({ "map": map, "revisions": revisions })))
 }
@@ -56,10 +58,16 @@ pub async fn indoorgml(
     let xml = state
         .blocking(move |ctx| {
             let r = ctx.revision(&map, rev)?;
-            Ok(crate::indoorgml::write_string(&crate::indoorgml::from_nrg(&r.nrg)))
+            Ok(crate::indoorgml::write_string(&crate::indoorgml::from_nrg(
+                &r.nrg,
+            )))
         })
         .await?;
-    let response = ([(header::CONTENT_TYPE, "application/gml+xml; charset=utf-8")], xml).into_response();
+    let response = (
+        [(header::CONTENT_TYPE, "application/gml+xml; charset=utf-8")],
+        xml,
+    )
+        .into_response();
     Ok(with_caching(response, rev.is_some()))
 }
 

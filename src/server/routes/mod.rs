@@ -41,7 +41,12 @@ pub struct ParamDoc {
 }
 
 /// A query-string parameter.
-pub const fn q(name: &'static str, kind: &'static str, required: bool, doc: &'static str) -> ParamDoc {
+pub const fn q(
+    name: &'static str,
+    kind: &'static str,
+    required: bool,
+    doc: &'static str,
+) -> ParamDoc {
     ParamDoc {
         name,
         kind,
@@ -50,7 +55,12 @@ pub const fn q(name: &'static str, kind: &'static str, required: bool, doc: &'st
     }
 }
 
-const REV: ParamDoc = q("rev", "string", false, "revision number, or 'latest' (default)");
+const REV: ParamDoc = q(
+    "rev",
+    "string",
+    false,
+    "revision number, or 'latest' (default)",
+);
 
 /// One endpoint of the API.
 pub struct Endpoint {
@@ -141,7 +151,9 @@ mod tests {
         for (i, e) in eps.iter().enumerate() {
             assert!(e.path.starts_with('/'));
             assert!(
-                !eps[..i].iter().any(|o| o.path == e.path && o.method == e.method),
+                !eps[..i]
+                    .iter()
+                    .any(|o| o.path == e.path && o.method == e.method),
                 "{e:?} twice"
             );
         }

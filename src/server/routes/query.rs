@@ -24,7 +24,12 @@ use crate::store::Store;
 
 /// Query parameters of `POST /query` (the JSON body may give them too).
 pub const PARAMS: [ParamDoc; 2] = [
-    q("map", "string", false, "map to USE first (default: the first map by name)"),
+    q(
+        "map",
+        "string",
+        false,
+        "map to USE first (default: the first map by name)",
+    ),
     REV,
 ];
 
@@ -98,8 +103,12 @@ pub async fn query(
         .and_then(|v| v.to_str().ok())
         .is_some_and(|v| v.starts_with("application/json"));
     let (text, mut map, mut rev) = if is_json {
-        let b: QueryBody = serde_json::from_slice(&bytes)
-            .map_err(|e| ApiError::bad("body", format!("{e} (expected {{\"query\": \"…\", \"map\"?, \"rev\"?}})")))?;
+        let b: QueryBody = serde_json::from_slice(&bytes).map_err(|e| {
+            ApiError::bad(
+                "body",
+                format!("{e} (expected {{\"query\": \"…\", \"map\"?, \"rev\"?}})"),
+            )
+        })?;
         let rev = match b.rev {
             None | Some(Value::Null) => None,
             Some(Value::String(s)) => parse_rev("rev", &s)?,
@@ -118,7 +127,10 @@ pub async fn query(
         rev = p.rev()?;
     }
     if text.trim().is_empty() {
-        return Err(ApiError::bad("query", "empty (send statements such as FIND rooms;)"));
+        return Err(ApiError::bad(
+            "query",
+            "empty (send statements such as FIND rooms;)",
+        ));
     }
     let writable = has_token(state.config(), &headers);
     let limits = Limits {
@@ -148,8 +160,14 @@ pub async fn query(
                 None => Session::with_default_map(source)?,
             };
             session.set_limits(limits);
-            let results: Vec<Value> = session.execute(&text)?.into_iter().map(result_json).collect();
-            let current = session.current().map(|c| json!({"map": c.map, "revision": c.revision}));
+            let results: Vec<Value> = session
+                .execute(&text)?
+                .into_iter()
+                .map(result_json)
+                .collect();
+            let current = session
+                .current()
+                .map(|c| json!({"map": c.map, "revision": c.revision}));
             Ok(Json(json!({"using": current, "results": results})))
         })
         .await

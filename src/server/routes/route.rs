@@ -19,11 +19,36 @@ pub const MAX_ALTERNATIVES: usize = 10;
 
 /// Query parameters of the route endpoint.
 pub const PARAMS: [ParamDoc; 6] = [
-    q("from", "string", true, "start: space id, name, or point 'x,y' in metres"),
-    q("to", "string", true, "goal: space id, name, or point 'x,y' in metres"),
-    q("via", "string", false, "waypoints in order: comma-separated ids or names"),
-    q("avoid", "string", false, "spaces not to enter: comma-separated ids or names"),
-    q("alternatives", "string", false, "true (3 routes), false, or a number of routes 1 to 10"),
+    q(
+        "from",
+        "string",
+        true,
+        "start: space id, name, or point 'x,y' in metres",
+    ),
+    q(
+        "to",
+        "string",
+        true,
+        "goal: space id, name, or point 'x,y' in metres",
+    ),
+    q(
+        "via",
+        "string",
+        false,
+        "waypoints in order: comma-separated ids or names",
+    ),
+    q(
+        "avoid",
+        "string",
+        false,
+        "spaces not to enter: comma-separated ids or names",
+    ),
+    q(
+        "alternatives",
+        "string",
+        false,
+        "true (3 routes), false, or a number of routes 1 to 10",
+    ),
     REV,
 ];
 
@@ -31,7 +56,10 @@ pub const PARAMS: [ParamDoc; 6] = [
 fn reference(raw: &str) -> SpaceRef {
     let raw = raw.trim();
     if let Ok(id) = raw.parse::<u32>() {
-        return SpaceRef::Id { kind: None, id: SpaceId(id) };
+        return SpaceRef::Id {
+            kind: None,
+            id: SpaceId(id),
+        };
     }
     if let Some((x, y)) = raw.split_once(',')
         && let (Ok(x), Ok(y)) = (x.trim().parse::<f64>(), y.trim().parse::<f64>())
@@ -47,9 +75,9 @@ fn reference(raw: &str) -> SpaceRef {
 /// naming the parameter.
 fn resolve(name: &str, raw: &str, rev: &IndexedRevision) -> Result<SpaceId, ApiError> {
     rev.resolve(&reference(raw)).map_err(|e| match e {
-        QueryError::UnknownId(_) | QueryError::UnknownName { .. } | QueryError::NoSpaceAt { .. } => {
-            ApiError::not_found(name, format!("{name}: {e}"))
-        }
+        QueryError::UnknownId(_)
+        | QueryError::UnknownName { .. }
+        | QueryError::NoSpaceAt { .. } => ApiError::not_found(name, format!("{name}: {e}")),
         other => ApiError::bad(name, other.to_string()),
     })
 }
@@ -128,7 +156,13 @@ mod tests {
 
     #[test]
     fn references_and_alternatives() {
-        assert_eq!(reference("12"), SpaceRef::Id { kind: None, id: SpaceId(12) });
+        assert_eq!(
+            reference("12"),
+            SpaceRef::Id {
+                kind: None,
+                id: SpaceId(12)
+            }
+        );
         assert_eq!(reference("1.5, 2"), SpaceRef::Point([1.5, 2.0]));
         assert_eq!(reference("Kitchen"), SpaceRef::Name("Kitchen".into()));
         assert_eq!(alternatives(Some("true")).unwrap(), 3);

@@ -124,7 +124,13 @@ fn legs(nrg: &Nrg, route: &Route, stops: &[SpaceId]) -> Vec<Leg> {
             duration: seconds(route.length_m),
             from: from.unwrap_or(SpaceId(0)),
             to: to.unwrap_or(SpaceId(0)),
-            steps: route.steps.iter().map(|s| Step { instruction: s.clone() }).collect(),
+            steps: route
+                .steps
+                .iter()
+                .map(|s| Step {
+                    instruction: s.clone(),
+                })
+                .collect(),
         }];
     }
     let mut out = Vec::new();
@@ -193,7 +199,11 @@ pub fn route_response<'a>(
         })
         .collect::<Vec<_>>();
     RouteResponse {
-        code: if routes_json.is_empty() { "NoRoute" } else { "Ok" },
+        code: if routes_json.is_empty() {
+            "NoRoute"
+        } else {
+            "Ok"
+        },
         map: &rev.map,
         revision: rev.revision,
         waypoints,
@@ -222,6 +232,10 @@ mod tests {
         let sum: f64 = r.legs.iter().map(|l| l.distance).sum();
         assert!((sum - r.distance).abs() < 0.01);
         assert_eq!(r.geometry.coordinates.len(), r.spaces.len());
-        assert_eq!(r.doors.len(), 4, "in and out of rooms 11 and back out, into 13");
+        assert_eq!(
+            r.doors.len(),
+            4,
+            "in and out of rooms 11 and back out, into 13"
+        );
     }
 }

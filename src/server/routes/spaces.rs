@@ -16,12 +16,22 @@ use crate::server::state::AppState;
 /// Query parameters of `GET /maps/{map}/spaces`.
 pub const LIST_PARAMS: [ParamDoc; 3] = [
     q("kind", "string", false, "room, corridor, door or other"),
-    q("name", "string", false, "name or label, case-insensitive; % and _ are wildcards"),
+    q(
+        "name",
+        "string",
+        false,
+        "name or label, case-insensitive; % and _ are wildcards",
+    ),
     REV,
 ];
 /// Query parameters of `GET /maps/{map}/neighbours/{id}`.
 pub const NEIGHBOUR_PARAMS: [ParamDoc; 2] = [
-    q("depth", "integer", false, "navigable hops, 1 to 64 (default 1)"),
+    q(
+        "depth",
+        "integer",
+        false,
+        "navigable hops, 1 to 64 (default 1)",
+    ),
     REV,
 ];
 /// Query parameters of `GET /maps/{map}/locate`.
@@ -140,9 +150,14 @@ pub async fn neighbours(
     uri: Uri,
 ) -> Result<Json<Value>, ApiError> {
     let p = Params::parse(&uri, &["depth", "rev"])?;
-    let depth: u32 = p.opt("depth", "a number of hops from 1 to 64")?.unwrap_or(1);
+    let depth: u32 = p
+        .opt("depth", "a number of hops from 1 to 64")?
+        .unwrap_or(1);
     if !(1..=64).contains(&depth) {
-        return Err(ApiError::bad("depth", format!("{depth} is out of range (1 to 64)")));
+        return Err(ApiError::bad(
+            "depth",
+            format!("{depth} is out of range (1 to 64)"),
+        ));
     }
     let rev = p.rev()?;
     let limits = Limits {

@@ -27,7 +27,10 @@ pub async fn metrics(State(state): State<AppState>) -> Response {
     let shared = state.shared();
     let text = shared.metrics.render(&shared.cache);
     (
-        [(header::CONTENT_TYPE, "text/plain; version=0.0.4; charset=utf-8")],
+        [(
+            header::CONTENT_TYPE,
+            "text/plain; version=0.0.4; charset=utf-8",
+        )],
         text,
     )
         .into_response()

@@ -28,7 +28,12 @@ use crate::store::{ImportMeta, sha256_hex};
 /// Query parameters of the upload (multipart fields of the same names win).
 pub const PARAMS: [ParamDoc; 2] = [
     q("message", "string", false, "commit message of the revision"),
-    q("author", "string", false, "author of the revision (default 'nrgdb serve')"),
+    q(
+        "author",
+        "string",
+        false,
+        "author of the revision (default 'nrgdb serve')",
+    ),
 ];
 
 /// What an uploaded file is.
@@ -67,22 +72,24 @@ fn kind_of_type(content_type: &str) -> Option<Kind> {
 
 /// A part's kind: by file name, then content type, then field name.
 fn kind_of_part(p: &Part<'_>) -> Option<Kind> {
+    let by_field = match p.name.as_deref() {
+        Some("yaml") => Some(Kind::MapYaml),
+        Some("image") => Some(Kind::Image),
+        Some("indoorgml" | "gml") => Some(Kind::IndoorGml),
+        Some("geojson") => Some(Kind::GeoJson),
+        Some("model" | "json") => Some(Kind::Json),
+        _ => None,
+    };
     p.filename
         .as_deref()
         .and_then(kind_of_name)
         .or_else(|| p.content_type.as_deref().and_then(kind_of_type))
-        .or_else(|| match p.name.as_deref() {
-            Some("yaml") => Some(Kind::MapYaml),
-            Some("image") => Some(Kind::Image),
-            Some("indoorgml" | "gml") => Some(Kind::IndoorGml),
-            Some("geojson") => Some(Kind::GeoJson),
-            Some("model" | "json") => Some(Kind::Json),
-            _ => None,
-        })
+        .or(by_field)
 }
 
 fn utf8(bytes: &[u8], what: &str) -> Result<String, ApiError> {
-    String::from_utf8(bytes.to_vec()).map_err(|_| ApiError::BadUpload(format!("{what} is not UTF-8 text")))
+    String::from_utf8(bytes.to_vec())
+        .map_err(|_| ApiError::BadUpload(format!("{what} is not UTF-8 text")))
 }
 
 /// Reads a model file of `kind`.
@@ -103,17 +110,29 @@ fn read_model(kind: Kind, bytes: &[u8], name: &str) -> Result<Nrg, ApiError> {
 
 /// Extracts a model from a map YAML and its image (written to a temporary
 /// directory; the YAML's `image:` is pointed at the uploaded image).
-fn extract_map(yaml: &[u8], image: &[u8], image_name: &str) -> Result<(Nrg, serde_json::Value), ApiError> {
+fn extract_map(
+    yaml: &[u8],
+    image: &[u8],
+    image_name: &str,
+) -> Result<(Nrg, serde_json::Value), ApiError> {
     let bad = |e: String| ApiError::BadUpload(e);
     let mut doc: serde_yaml_ng::Value =
         serde_yaml_ng::from_slice(yaml).map_err(|e| bad(format!("map YAML: {e}")))?;
-    let ext = if image_name.to_ascii_lowercase().ends_with(".png") { "png" } else { "pgm" };
+    let ext = if image_name.to_ascii_lowercase().ends_with(".png") {
+        "png"
+    } else {
+        "pgm"
+    };
     let file = format!("image.{ext}");
     match &mut doc {
         serde_yaml_ng::Value::Mapping(m) => {
             m.insert("image".into(), file.as_str().into());
         }
-        _ => return Err(bad("map YAML: expected a mapping with image, resolution, origin".into())),
+        _ => {
+            return Err(bad(
+                "map YAML: expected a mapping with image, resolution, origin".into(),
+            ));
+        }
     }
     let dir = tempfile::tempdir().map_err(|e| ApiError::Internal(format!("temp dir: {e}")))?;
     let text = serde_yaml_ng::to_string(&doc).map_err(|e| bad(format!("map YAML: {e}")))?;
@@ -123,7 +142,11 @@ fn extract_map(yaml: &[u8], image: &[u8], image_name: &str) -> Result<(Nrg, serd
         .map_err(|e| ApiError::Internal(format!("temp files: {e}")))?;
     let grid = load_map(&yaml_path, &LoadOptions::default()).map_err(|e| {
         // Paths in the message are our temporary files; name the upload.
-        bad(format!("map: {}", e.to_string().replace(&dir.path().display().to_string(), "upload")))
+        bad(format!(
+            "map: {}",
+            e.to_string()
+                .replace(&dir.path().display().to_string(), "upload")
+        ))
     })?;
     let params = ExtractParams::default();
     let extraction = extract(&grid, &params).map_err(|e| bad(format!("extraction: {e}")))?;
@@ -154,7 +177,8 @@ fn from_multipart(body: &[u8], boundary: &str, meta: &mut ImportMeta) -> Result<
             },
         }
     }
-    let name = |p: &Part<'_>, default: &str| p.filename.clone().unwrap_or_else(|| default.to_string());
+    let name =
+        |p: &Part<'_>, default: &str| p.filename.clone().unwrap_or_else(|| default.to_string());
     match (yaml, image, model) {
         (Some(y), Some(i), None) => {
             let image_name = name(i, "map.pgm");
@@ -172,10 +196,18 @@ fn from_multipart(body: &[u8], boundary: &str, meta: &mut ImportMeta) -> Result<
             *meta = std::mem::take(meta).with_source(file, p.data);
             Ok(nrg)
         }
-        (Some(_), None, _) => Err(ApiError::BadUpload("a map YAML needs its image (a PGM or PNG part)".into())),
-        (None, Some(_), _) => Err(ApiError::BadUpload("an image needs its map YAML (a .yaml part)".into())),
-        (None, None, None) => Err(ApiError::BadUpload("no file part (send a map YAML + image, or one model file)".into())),
-        _ => Err(ApiError::BadUpload("send either a map YAML + image or one model file, not both".into())),
+        (Some(_), None, _) => Err(ApiError::BadUpload(
+            "a map YAML needs its image (a PGM or PNG part)".into(),
+        )),
+        (None, Some(_), _) => Err(ApiError::BadUpload(
+            "an image needs its map YAML (a .yaml part)".into(),
+        )),
+        (None, None, None) => Err(ApiError::BadUpload(
+            "no file part (send a map YAML + image, or one model file)".into(),
+        )),
+        _ => Err(ApiError::BadUpload(
+            "send either a map YAML + image or one model file, not both".into(),
+        )),
     }
 }
 
@@ -199,7 +231,7 @@ pub async fn upload(
         p.get("message").unwrap_or(""),
         p.get("author").unwrap_or("nrgdb serve"),
     );
-    let info = state
+    let done = state
         .blocking(move |ctx| {
             let nrg = if let Some(b) = multipart::boundary(&content_type) {
                 from_multipart(&bytes, &b, &mut meta)?
@@ -214,12 +246,24 @@ pub async fn upload(
                 meta = std::mem::take(&mut meta).with_source("upload", &bytes);
                 nrg
             };
-            Ok(ctx.store.import(&map, &nrg, meta)?.revision)
+            Ok(ctx.store.import(&map, &nrg, meta)?)
         })
         .await?;
+    let info = &done.revision;
+    // Stable ids: a space continuing one of the parent keeps its id, new
+    // spaces get fresh ones; clients map their ids with this.
+    let ids: serde_json::Map<String, serde_json::Value> = done
+        .ids
+        .iter()
+        .map(|(from, to)| (from.to_string(), json!(to)))
+        .collect();
     tracing::info!(map = %info.map, revision = info.seq, spaces = info.spaces, "revision uploaded");
     let location = format!("/maps/{}/revisions/{}/geojson", info.map, info.seq);
-    let mut response = (StatusCode::CREATED, Json(json!({ "revision": info }))).into_response();
+    let mut response = (
+        StatusCode::CREATED,
+        Json(json!({ "revision": info, "ids": ids })),
+    )
+        .into_response();
     if let Ok(v) = HeaderValue::from_str(&location) {
         response.headers_mut().insert(header::LOCATION, v);
     }
@@ -235,9 +279,15 @@ mod tests {
         assert_eq!(kind_of_name("a.YAML"), Some(Kind::MapYaml));
         assert_eq!(kind_of_name("a.gml"), Some(Kind::IndoorGml));
         assert_eq!(kind_of_name("a"), None);
-        assert_eq!(kind_of_type("application/json; charset=utf-8"), Some(Kind::Json));
+        assert_eq!(
+            kind_of_type("application/json; charset=utf-8"),
+            Some(Kind::Json)
+        );
         let nrg = crate::fixtures::corridor_building(2);
-        assert_eq!(read_model(Kind::Json, nrg.to_json().as_bytes(), "x").unwrap(), nrg);
+        assert_eq!(
+            read_model(Kind::Json, nrg.to_json().as_bytes(), "x").unwrap(),
+            nrg
+        );
         assert!(read_model(Kind::Json, b"{", "x").is_err());
     }
 }
