@@ -4,9 +4,18 @@
 //! `Store` (rusqlite) is not `Sync`, so every request borrows a connection
 //! of its own inside `spawn_blocking`; SQLite's WAL lets readers run while
 //! one writer imports.
+//!
+//! Each pooled connection remembers the latest revision of the maps it has
+//! looked up, valid while SQLite's `PRAGMA data_version` (which changes
+//! whenever any other connection or process commits) stays the same: the
+//! per-request "which revision is latest" check costs one pragma, and a
+//! new revision is still seen by the next request.
 
+use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
+
+use rusqlite::{Connection, OpenFlags};
 
 use super::cache::RevisionCache;
 use super::config::ServerConfig;
@@ -15,18 +24,66 @@ use super::metrics::Metrics;
 use crate::query::IndexedRevision;
 use crate::store::{Store, StoreError};
 
+/// A pooled connection: the store, a read-only probe connection for
+/// `PRAGMA data_version`, and the latest revisions seen at that version.
+#[derive(Debug)]
+pub struct Slot {
+    /// The store.
+    pub store: Store,
+    probe: Connection,
+    data_version: i64,
+    latest: HashMap<String, u32>,
+}
+
+impl Slot {
+    fn open(path: &Path) -> Result<Slot, StoreError> {
+        let store = Store::open(path)?;
+        let probe = Connection::open_with_flags(
+            path,
+            OpenFlags::SQLITE_OPEN_READ_ONLY | OpenFlags::SQLITE_OPEN_NO_MUTEX,
+        )?;
+        Ok(Slot {
+            store,
+            probe,
+            data_version: -1,
+            latest: HashMap::new(),
+        })
+    }
+
+    /// The latest revision of `map`, from the memo while the database is
+    /// unchanged, else from the store.
+    fn latest(&mut self, map: &str) -> Result<u32, StoreError> {
+        let version: i64 = self
+            .probe
+            .prepare_cached("PRAGMA data_version")?
+            .query_row([], |r| r.get(0))?;
+        // The probe never writes, so every commit (any connection, any
+        // process) changes its data_version and clears the memo.
+        if version != self.data_version {
+            self.latest.clear();
+            self.data_version = version;
+        }
+        if let Some(seq) = self.latest.get(map) {
+            return Ok(*seq);
+        }
+        let seq = self.store.revision(map, None)?.seq;
+        self.latest.insert(map.to_string(), seq);
+        Ok(seq)
+    }
+}
+
 /// Idle store connections, opened on demand and kept for reuse.
 #[derive(Debug)]
 pub struct StorePool {
     path: PathBuf,
-    idle: Mutex<Vec<Store>>,
+    idle: Mutex<Vec<Slot>>,
     max_idle: usize,
 }
 
 impl StorePool {
     /// Opens the database once (creating it and its schema if needed).
     pub fn open(path: &Path, max_idle: usize) -> Result<StorePool, StoreError> {
-        let first = Store::open(path)?;
+        let first = Slot::open(path)?;
         Ok(StorePool {
             path: path.to_path_buf(),
             idle: Mutex::new(vec![first]),
@@ -36,16 +93,16 @@ impl StorePool {
 
     /// Runs `f` with a connection of its own (blocking: call it off the
     /// async workers).
-    pub fn with<R>(&self, f: impl FnOnce(&mut Store) -> R) -> Result<R, StoreError> {
+    pub fn with<R>(&self, f: impl FnOnce(&mut Slot) -> R) -> Result<R, StoreError> {
         let taken = self.idle.lock().unwrap_or_else(|p| p.into_inner()).pop();
-        let mut store = match taken {
+        let mut slot = match taken {
             Some(s) => s,
-            None => Store::open(&self.path)?,
+            None => Slot::open(&self.path)?,
         };
-        let out = f(&mut store);
+        let out = f(&mut slot);
         let mut idle = self.idle.lock().unwrap_or_else(|p| p.into_inner());
         if idle.len() < self.max_idle {
-            idle.push(store);
+            idle.push(slot);
         }
         Ok(out)
     }
@@ -68,8 +125,7 @@ pub(crate) struct Shared {
 /// A request's view inside a blocking task: its store connection and the
 /// shared cache.
 pub struct Ctx<'a> {
-    /// The connection lent to this request.
-    pub store: &'a mut Store,
+    slot: &'a mut Slot,
     pub(crate) shared: &'a Shared,
 }
 
@@ -104,9 +160,9 @@ impl AppState {
     {
         let shared = Arc::clone(&self.inner);
         tokio::task::spawn_blocking(move || {
-            shared.pool.with(|store| {
+            shared.pool.with(|slot| {
                 f(&mut Ctx {
-                    store,
+                    slot,
                     shared: &shared,
                 })
             })?
@@ -117,6 +173,11 @@ impl AppState {
 }
 
 impl Ctx<'_> {
+    /// The store connection lent to this request.
+    pub fn store(&mut self) -> &mut Store {
+        &mut self.slot.store
+    }
+
     /// Revision `rev` of `map` (the latest when `None`), indexed, from the
     /// cache when there. The latest revision is looked up on every call,
     /// so a new revision is served by the next request.
@@ -130,8 +191,11 @@ impl Ctx<'_> {
         {
             return Ok(hit);
         }
-        let seq = self.store.revision(map, rev)?.seq;
-        let store = &*self.store;
+        let seq = match rev {
+            Some(r) => self.slot.store.revision(map, Some(r))?.seq,
+            None => self.slot.latest(map)?,
+        };
+        let store = &self.slot.store;
         self.shared.cache.get_or_load(map, seq, || {
             let nrg = store.load(map, Some(seq))?;
             Ok::<_, ApiError>(IndexedRevision::new(map, u64::from(seq), nrg))

@@ -337,3 +337,25 @@ async fn shutdown_lets_in_flight_requests_finish() {
             .is_err()
     );
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn revision_written_by_another_process_is_served_next() {
+    let s = TestServer::read_only().await;
+    for _ in 0..3 {
+        let r = s.get("/maps/building/spaces?kind=room").await.json();
+        assert_eq!(r["revision"], 1);
+    }
+    // As `nrgdb import` would, from outside the server.
+    let mut store = nrgdb::store::Store::open(&s.db).unwrap();
+    store
+        .import(
+            "building",
+            &nrgdb::fixtures::corridor_building(8),
+            nrgdb::store::ImportMeta::new("cli", "test"),
+        )
+        .unwrap();
+    let r = s.get("/maps/building/spaces?kind=room").await.json();
+    assert_eq!(r["revision"], 2);
+    assert_eq!(r["spaces"].as_array().unwrap().len(), 8);
+    s.stop().await;
+}

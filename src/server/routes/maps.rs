@@ -14,7 +14,7 @@ use crate::server::state::AppState;
 /// `GET /maps`.
 pub async fn list_maps(State(state): State<AppState>, uri: Uri) -> Result<Json<Value>, ApiError> {
     Params::parse(&uri, &[])?;
-    let maps = state.blocking(|ctx| Ok(ctx.store.maps()?)).await?;
+    let maps = state.blocking(|ctx| Ok(ctx.store().maps()?)).await?;
     Ok(Json(json!({ "maps": maps })))
 }
 
@@ -28,7 +28,7 @@ pub async fn list_revisions(
     let revisions = {
         let map = map.clone();
         state
-            .blocking(move |ctx| Ok(ctx.store.revisions(&map)?))
+            .blocking(move |ctx| Ok(ctx.store().revisions(&map)?))
             .await?
     };
     Ok(Json(json!({ "map": map, "revisions": revisions })))

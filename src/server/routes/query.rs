@@ -140,7 +140,7 @@ pub async fn query(
     state
         .blocking(move |ctx| {
             let source = QuerySource {
-                store: ctx.store,
+                store: ctx.store(),
                 writable,
             };
             let mut session = match &map {

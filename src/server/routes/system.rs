@@ -13,7 +13,7 @@ use crate::server::state::AppState;
 
 /// `GET /health`: `{"status":"ok"}` when a database query succeeds.
 pub async fn health(State(state): State<AppState>) -> Result<Json<Value>, ApiError> {
-    let maps = state.blocking(|ctx| Ok(ctx.store.maps()?.len())).await?;
+    let maps = state.blocking(|ctx| Ok(ctx.store().maps()?.len())).await?;
     Ok(Json(json!({
         "status": "ok",
         "version": env!("CARGO_PKG_VERSION"),

@@ -246,7 +246,7 @@ pub async fn upload(
                 meta = std::mem::take(&mut meta).with_source("upload", &bytes);
                 nrg
             };
-            Ok(ctx.store.import(&map, &nrg, meta)?)
+            Ok(ctx.store().import(&map, &nrg, meta)?)
         })
         .await?;
     let info = &done.revision;
