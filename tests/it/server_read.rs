@@ -251,3 +251,46 @@ async fn exports_query_metrics_and_unknown_paths() {
     assert_eq!(wrong.json()["code"], "MethodNotAllowed");
     s.stop().await;
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn cors_is_opt_in() {
+    let s = TestServer::read_only().await;
+    let r = super::server_client::request(
+        s.addr,
+        "GET",
+        "/maps",
+        &[("Origin", "http://viewer.example")],
+        b"",
+    )
+    .await;
+    assert!(r.header("access-control-allow-origin").is_none());
+    s.stop().await;
+
+    let s = TestServer::start(|c| c.cors_origins = vec!["http://viewer.example".into()]).await;
+    let preflight = super::server_client::request(
+        s.addr,
+        "OPTIONS",
+        "/maps/building/route",
+        &[
+            ("Origin", "http://viewer.example"),
+            ("Access-Control-Request-Method", "GET"),
+        ],
+        b"",
+    )
+    .await;
+    assert_eq!(
+        preflight.header("access-control-allow-origin"),
+        Some("http://viewer.example")
+    );
+    let other = super::server_client::request(
+        s.addr,
+        "GET",
+        "/maps",
+        &[("Origin", "http://elsewhere.example")],
+        b"",
+    )
+    .await;
+    assert_eq!(other.status, 200);
+    assert!(other.header("access-control-allow-origin").is_none());
+    s.stop().await;
+}
