@@ -12,7 +12,7 @@ use crate::query::{IndexedRevision, QueryError, SpaceRef};
 use crate::route::{Budget, RouteRequest, shortest_route};
 use crate::server::error::ApiError;
 use crate::server::params::{Params, parse_value};
-use crate::server::state::AppState;
+use crate::server::state::{AppState, Ctx};
 
 /// Most routes `alternatives` may ask for.
 pub const MAX_ALTERNATIVES: usize = 10;
@@ -129,24 +129,29 @@ pub async fn route(
     }
     let rev = p.rev()?;
     let timeout = state.config().timeout;
-    let body = state
-        .blocking(move |ctx| {
-            let r = ctx.revision(&map, rev)?;
-            let request = RouteRequest {
-                from: resolve("from", &from, &r)?,
-                to: resolve("to", &to, &r)?,
-                via: list("via", via.as_deref(), &r)?,
-                avoid: list("avoid", avoid.as_deref(), &r)?,
-                alternatives: k,
-            };
-            let routes = shortest_route(&r.graph, &r.nrg, &request, &Budget::new(timeout))?;
-            let mut stops = vec![request.from];
-            stops.extend(&request.via);
-            stops.push(request.to);
-            serde_json::to_vec(&route_response(&r, &stops, &routes))
-                .map_err(|e| ApiError::Internal(e.to_string()))
-        })
-        .await?;
+    let work = move |ctx: &mut Ctx<'_>| {
+        let r = ctx.revision(&map, rev)?;
+        let request = RouteRequest {
+            from: resolve("from", &from, &r)?,
+            to: resolve("to", &to, &r)?,
+            via: list("via", via.as_deref(), &r)?,
+            avoid: list("avoid", avoid.as_deref(), &r)?,
+            alternatives: k,
+        };
+        let routes = shortest_route(&r.graph, &r.nrg, &request, &Budget::new(timeout))?;
+        let mut stops = vec![request.from];
+        stops.extend(&request.via);
+        stops.push(request.to);
+        serde_json::to_vec(&route_response(&r, &stops, &routes))
+            .map_err(|e| ApiError::Internal(e.to_string()))
+    };
+    // One shortest route is a Dijkstra: cheap enough for the async worker
+    // when the revision is cached. Alternatives (Yen) go to the blocking pool.
+    let body = if k == 1 {
+        state.quick(work).await?
+    } else {
+        state.blocking(work).await?
+    };
     Ok(([(header::CONTENT_TYPE, "application/json")], body).into_response())
 }
 

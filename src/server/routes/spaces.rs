@@ -100,7 +100,7 @@ pub async fn list_spaces(
     let name = p.get("name").map(str::to_string);
     let rev = p.rev()?;
     state
-        .blocking(move |ctx| {
+        .quick(move |ctx| {
             let r = ctx.revision(&map, rev)?;
             let spaces: Vec<Value> = r
                 .nrg
@@ -123,7 +123,7 @@ pub async fn space(
 ) -> Result<Json<Value>, ApiError> {
     let rev = Params::parse(&uri, &["rev"])?.rev()?;
     state
-        .blocking(move |ctx| {
+        .quick(move |ctx| {
             let r = ctx.revision(&map, rev)?;
             let id = space_id(&id, &r)?;
             let s = r.nrg.space(id).ok_or_else(|| ApiError::not_found("id", "no such space"))?;
@@ -165,7 +165,7 @@ pub async fn neighbours(
         ..Limits::default()
     };
     state
-        .blocking(move |ctx| {
+        .quick(move |ctx| {
             let r = ctx.revision(&map, rev)?;
             let of = space_id(&id, &r)?;
             let rows = match execute(&Plan::Neighbours { of, depth }, &r, &limits)? {
@@ -192,7 +192,7 @@ pub async fn locate(
     let y = parse_metres("y", p.required("y")?)?;
     let rev = p.rev()?;
     state
-        .blocking(move |ctx| {
+        .quick(move |ctx| {
             let r = ctx.revision(&map, rev)?;
             let found = r.locate([x, y]).map(|s| space_summary(s, &r));
             let mut v = envelope(&r, "space", found.unwrap_or(Value::Null));
