@@ -23,6 +23,7 @@ mod model_file;
 mod name;
 pub mod query;
 pub mod repl;
+mod serve;
 mod simulate;
 
 pub use model_file::{load_model, write_model};
@@ -80,6 +81,8 @@ pub enum Command {
     Name(name::Args),
     /// Show the history of a map with messages.
     Log(maps::LogArgs),
+    /// Serve the database as an HTTP JSON navigation API.
+    Serve(serve::Args),
 }
 
 /// Runs one subcommand, writing its report to `out`.
@@ -100,6 +103,7 @@ pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
         Command::Export(args) => export::run(args, out),
         Command::Name(args) => name::run(args, out),
         Command::Log(args) => maps::run_log(args, out),
+        Command::Serve(args) => serve::run(args, out),
     }
 }
 

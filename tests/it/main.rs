@@ -20,3 +20,8 @@ mod route_props;
 mod store;
 mod store_building;
 mod store_cli;
+
+mod server_client;
+mod server_openapi;
+mod server_read;
+mod server_write;
