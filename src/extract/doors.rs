@@ -15,6 +15,10 @@ pub(crate) struct Border {
     pub pixels: Vec<u32>,
 }
 
+/// A 4-neighbour pair across a border: (pixel on one side, pixel on the
+/// other, half the passage width there).
+type Crossing = (u32, u32, f32);
+
 /// Every border between two labels with its passage width (twice the
 /// largest distance to an obstacle along it). Two regions may meet in
 /// several places (a room with two doorways onto one corridor): each
@@ -24,7 +28,7 @@ pub(crate) fn borders(labels: &Labels, dist: &[f32]) -> Vec<Border> {
     let (w, h) = (labels.width as usize, labels.height as usize);
     let d = &labels.data;
     // Per pair: (pixel on one side, pixel on the other, half width there).
-    let mut crossings: BTreeMap<(u32, u32), Vec<(u32, u32, f32)>> = BTreeMap::new();
+    let mut crossings: BTreeMap<(u32, u32), Vec<Crossing>> = BTreeMap::new();
     let mut add = |i: usize, j: usize| {
         let (a, b) = (d[i], d[j]);
         if a == 0 || b == 0 || a == b {
@@ -66,7 +70,7 @@ pub(crate) fn borders(labels: &Labels, dist: &[f32]) -> Vec<Border> {
 
 /// Groups crossings whose first pixels lie within 2 px (Chebyshev) of each
 /// other, transitively; returns index lists, in order of first crossing.
-fn stretches(list: &[(u32, u32, f32)], w: usize) -> Vec<Vec<usize>> {
+fn stretches(list: &[Crossing], w: usize) -> Vec<Vec<usize>> {
     let at: HashMap<u32, usize> = list.iter().enumerate().map(|(k, c)| (c.0, k)).collect();
     let mut group = vec![usize::MAX; list.len()];
     let mut out: Vec<Vec<usize>> = Vec::new();
@@ -88,11 +92,10 @@ fn stretches(list: &[(u32, u32, f32)], w: usize) -> Vec<Vec<usize>> {
                     if nx < 0 || ny < 0 || nx >= w as i64 {
                         continue;
                     }
-                    if let Some(&k) = at.get(&((ny * w as i64 + nx) as u32)) {
-                        if group[k] == usize::MAX {
-                            group[k] = g;
-                            members.push(k);
-                        }
+                    let near = at.get(&((ny * w as i64 + nx) as u32));
+                    if let Some(&k) = near.filter(|&&k| group[k] == usize::MAX) {
+                        group[k] = g;
+                        members.push(k);
                     }
                 }
             }

@@ -66,7 +66,7 @@ pub fn extract(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extractio
         .validate()
         .map_err(|(name, value)| ExtractError::BadParam { name, value })?;
     let k = (params.working_resolution_m / grid.resolution + 1e-9).floor();
-    if !(k >= 2.0 && k <= 64.0) {
+    if !(2.0..=64.0).contains(&k) {
         return extract_at(grid, params);
     }
     let k = k as u32;

@@ -72,10 +72,11 @@ pub(crate) fn refine(coarse: &Labels, grid: &OccupancyGrid, k: u32) -> Labels {
     // First ring: open pixels beside a labelled one (few: along walls).
     let mut queue: VecDeque<(usize, usize)> = VecDeque::new();
     for i in 0..w * h {
-        if open(i, &fine) {
-            if let Some(l) = neighbours(i, w, h).map(|j| fine.data[j]).find(|&l| l != 0) {
-                queue.push_back((i, l as usize));
-            }
+        let beside = open(i, &fine)
+            .then(|| neighbours(i, w, h).map(|j| fine.data[j]).find(|&l| l != 0))
+            .flatten();
+        if let Some(l) = beside {
+            queue.push_back((i, l as usize));
         }
     }
     for &(i, l) in &queue {

@@ -115,13 +115,17 @@ pub fn label_components(mask: &Mask, eight: bool) -> Labels {
     let mut count = 0u32;
     let mut data = vec![0u32; w * h];
     for y in 0..h {
-        for id in row_first[y]..row_first[y + 1] {
+        for (id, &(x0, x1)) in runs
+            .iter()
+            .enumerate()
+            .take(row_first[y + 1])
+            .skip(row_first[y])
+        {
             let root = sets.find(id);
             if label_of_root[root] == 0 {
                 count += 1;
                 label_of_root[root] = count;
             }
-            let (x0, x1) = runs[id];
             data[y * w + x0 as usize..y * w + x1 as usize].fill(label_of_root[root]);
         }
     }
@@ -197,7 +201,11 @@ mod tests {
                 seed = seed
                     .wrapping_mul(6364136223846793005)
                     .wrapping_add(1442695040888963407);
-                image::Luma([if (seed >> 33) % 3 == 0 { 0 } else { 255 }])
+                image::Luma([if (seed >> 33).is_multiple_of(3) {
+                    0
+                } else {
+                    255
+                }])
             });
             for (eight, conn) in [(true, Connectivity::Eight), (false, Connectivity::Four)] {
                 let ours = label_components(&m, eight);

@@ -194,7 +194,11 @@ mod tests {
                 seed = seed
                     .wrapping_mul(6364136223846793005)
                     .wrapping_add(1442695040888963407);
-                image::Luma([if (seed >> 33) % 4 == 0 { 0 } else { 255 }])
+                image::Luma([if (seed >> 33).is_multiple_of(4) {
+                    0
+                } else {
+                    255
+                }])
             });
             for r in [0.5, 1.0, 1.5, 2.3, 3.0, 4.7] {
                 assert_eq!(erode(&m, r), reference(&m, r, true), "erode {w}x{h} r={r}");
