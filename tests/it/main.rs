@@ -7,6 +7,7 @@ mod indoorgml_fuzz;
 mod indoorgml_roundtrip;
 mod indoorgml_samples;
 mod sim;
+mod sim_accuracy;
 mod support;
 
 mod demo;
