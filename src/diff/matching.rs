@@ -64,11 +64,44 @@ pub struct SpaceMatch {
 /// # Ok::<(), nrgdb::model::ModelError>(())
 /// ```
 pub fn match_spaces(old: &Nrg, new: &Nrg, params: &MatchParams) -> Vec<SpaceMatch> {
+    match_overlaps(&overlaps(old, new), params)
+}
+
+/// The positive-area overlaps between the spaces of two models: every pair
+/// whose polygons share area, with both areas (holes excluded).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Overlaps {
+    /// Ids of the old model's spaces (in its order).
+    pub old_ids: Vec<SpaceId>,
+    /// Ids of the new model's spaces (in its order).
+    pub new_ids: Vec<SpaceId>,
+    /// Area in m² of each old space.
+    pub old_area: Vec<f64>,
+    /// Area in m² of each new space.
+    pub new_area: Vec<f64>,
+    /// `(old index, new index, intersection area m²)`, intersection > 0.
+    pub pairs: Vec<(usize, usize, f64)>,
+}
+
+impl Overlaps {
+    /// Intersection over union of pair `(i, j, inter)`.
+    pub fn iou(&self, i: usize, j: usize, inter: f64) -> f64 {
+        let union = self.old_area[i] + self.new_area[j] - inter;
+        if union > 0.0 && inter.is_finite() {
+            (inter / union).clamp(0.0, 1.0)
+        } else {
+            0.0
+        }
+    }
+}
+
+/// Every overlapping pair of spaces of `old` and `new`, found through a
+/// grid of bounding boxes and measured exactly.
+pub fn overlaps(old: &Nrg, new: &Nrg) -> Overlaps {
     let old_shapes: Vec<Shape> = old.spaces().iter().map(Shape::new).collect();
     let new_shapes: Vec<Shape> = new.spaces().iter().map(Shape::new).collect();
-    // Candidate edges (old index, new index, iou).
     let grid = BoxGrid::new(&old_shapes);
-    let mut edges: Vec<(usize, usize, f64)> = Vec::new();
+    let mut pairs: Vec<(usize, usize, f64)> = Vec::new();
     let mut candidates = Vec::new();
     for (j, n) in new_shapes.iter().enumerate() {
         grid.candidates(n, &mut candidates);
@@ -77,18 +110,36 @@ pub fn match_spaces(old: &Nrg, new: &Nrg, params: &MatchParams) -> Vec<SpaceMatc
             if !o.bbox_meets(n) {
                 continue;
             }
-            let iou = o.iou(n);
-            if iou >= params.min_iou && iou > 0.0 {
-                edges.push((i, j, iou));
+            let inter = o.intersection_area(n);
+            if inter > 0.0 && inter.is_finite() {
+                pairs.push((i, j, inter));
             }
         }
     }
+    Overlaps {
+        old_ids: old_shapes.iter().map(|s| s.id).collect(),
+        new_ids: new_shapes.iter().map(|s| s.id).collect(),
+        old_area: old_shapes.iter().map(|s| s.area).collect(),
+        new_area: new_shapes.iter().map(|s| s.area).collect(),
+        pairs,
+    }
+}
+
+/// The optimal one-to-one matching over precomputed overlaps (see
+/// [`match_spaces`]).
+pub fn match_overlaps(ov: &Overlaps, params: &MatchParams) -> Vec<SpaceMatch> {
+    let edges: Vec<(usize, usize, f64)> = ov
+        .pairs
+        .iter()
+        .map(|&(i, j, inter)| (i, j, ov.iou(i, j, inter)))
+        .filter(|&(_, _, iou)| iou >= params.min_iou && iou > 0.0)
+        .collect();
     let mut matches = Vec::new();
-    for component in components(&edges, old_shapes.len(), new_shapes.len()) {
+    for component in components(&edges, ov.old_ids.len(), ov.new_ids.len()) {
         for (i, j, iou) in assign(&component) {
             matches.push(SpaceMatch {
-                old: old_shapes[i].id,
-                new: new_shapes[j].id,
+                old: ov.old_ids[i],
+                new: ov.new_ids[j],
                 iou,
             });
         }
@@ -150,14 +201,18 @@ impl Shape {
         (0..2).all(|k| self.min[k] < other.max[k] && other.min[k] < self.max[k])
     }
 
-    fn iou(&self, other: &Shape) -> f64 {
+    fn intersection_area(&self, other: &Shape) -> f64 {
         if !self.bbox_meets(other) {
             return 0.0;
         }
-        let inter = match (&self.convex, &other.convex) {
+        match (&self.convex, &other.convex) {
             (Some(a), Some(b)) => clipped_area(a, b),
             _ => self.polygon.intersection(&other.polygon).unsigned_area(),
-        };
+        }
+    }
+
+    fn iou(&self, other: &Shape) -> f64 {
+        let inter = self.intersection_area(other);
         let union = self.area + other.area - inter;
         if union > 0.0 && inter.is_finite() {
             (inter / union).clamp(0.0, 1.0)
