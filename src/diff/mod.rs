@@ -26,6 +26,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod align;
 mod apply;
 mod change_set;
 mod detect;
@@ -35,6 +36,7 @@ mod matching;
 mod report;
 mod transform;
 
+pub use align::{AlignParams, Alignment, align_grids, alignment_quality, wall_points};
 pub use apply::{apply, with_base_ids};
 pub use change_set::{
     CHANGESET_FORMAT, ChangeSet, ConnectionChange, ConnectionChangeKind, Merge, Part, SpaceChange,
