@@ -29,6 +29,7 @@
 mod align;
 mod apply;
 mod change_set;
+mod compare;
 mod detect;
 mod door_width;
 mod error;
@@ -42,6 +43,7 @@ pub use change_set::{
     CHANGESET_FORMAT, ChangeSet, ConnectionChange, ConnectionChangeKind, Merge, Part, SpaceChange,
     SpaceChangeKind, Split, Summary,
 };
+pub use compare::{AlignMode, Comparison, MODEL_GRID_M, Revision, compare, model_grid};
 pub use detect::{DiffParams, diff};
 pub use door_width::door_width;
 pub use error::DiffError;

@@ -37,7 +37,17 @@ impl Store {
                 "SELECT width, height, resolution, origin_x, origin_y, origin_yaw, png
                  FROM revision_grids WHERE map_id = ?1 AND seq = ?2",
                 params![id, seq],
-                |r| Ok((r.get(0)?, r.get(1)?, r.get(2)?, r.get(3)?, r.get(4)?, r.get(5)?, r.get(6)?)),
+                |r| {
+                    Ok((
+                        r.get(0)?,
+                        r.get(1)?,
+                        r.get(2)?,
+                        r.get(3)?,
+                        r.get(4)?,
+                        r.get(5)?,
+                        r.get(6)?,
+                    ))
+                },
             )
             .optional()?;
         let Some((width, height, resolution, ox, oy, yaw, png)) = row else {
