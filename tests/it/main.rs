@@ -17,6 +17,8 @@ mod query_golden;
 mod query_props;
 mod route_props;
 
+mod diff_edits;
+mod diff_support;
 mod store;
 mod store_building;
 mod store_cli;
