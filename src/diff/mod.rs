@@ -34,6 +34,7 @@ mod detect;
 mod door_width;
 mod error;
 mod matching;
+mod overlap_area;
 mod report;
 mod transform;
 

@@ -20,6 +20,7 @@ mod route_props;
 mod diff_cli;
 mod diff_edits;
 mod diff_props;
+mod diff_shared;
 mod diff_support;
 mod store;
 mod store_building;
