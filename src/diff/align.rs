@@ -291,10 +291,10 @@ fn direction_histogram(points: &[Point], tree: &RTree<Point>, radius: f64) -> Ve
         let bin = (angle.to_degrees().rem_euclid(180.0) as usize).min(179);
         h[bin] += linearity;
     }
-    (0..180)
+    (0..180i32)
         .map(|k| {
             (-2i32..=2)
-                .map(|d| h[(k as i32 + d).rem_euclid(180) as usize])
+                .map(|d| h[(k + d).rem_euclid(180) as usize])
                 .sum()
         })
         .collect()
@@ -375,8 +375,10 @@ impl Field {
     }
 }
 
-/// Best translation for rotation `deg` over a grid around the centroid
-/// fit: (mean truncated distance, transform).
+/// Best translation for rotation `deg` around the centroid fit, coarse to
+/// fine: a 0.4 m grid over ±`search_m` on a sparse point subset, then a
+/// grid one field cell apart over ±0.4 m around the best coarse cell:
+/// (mean truncated distance, transform).
 fn chamfer_search(
     field: &Field,
     pts: &[Point],
@@ -387,40 +389,55 @@ fn chamfer_search(
 ) -> (f64, RigidTransform) {
     let rot = RigidTransform::from_degrees(deg, 0.0, 0.0);
     let rotated: Vec<Point> = pts.iter().map(|p| rot.apply(*p)).collect();
+    let sparse = subsample(&rotated, 150);
     let rc = rot.apply(c_mov);
     let t0 = [c_ref[0] - rc[0], c_ref[1] - rc[1]];
-    let step = (2.0 * field.cell).max(0.2);
-    let n = (search_m / step).ceil() as i32;
-    let mut best = (f64::MAX, RigidTransform::from_degrees(deg, t0[0], t0[1]));
-    for i in -n..=n {
-        for j in -n..=n {
-            let t = [t0[0] + f64::from(i) * step, t0[1] + f64::from(j) * step];
-            let sum: f32 = rotated
-                .iter()
-                .map(|p| field.at([p[0] + t[0], p[1] + t[1]]))
-                .sum();
-            let score = f64::from(sum) / rotated.len().max(1) as f64;
-            if score < best.0 {
-                best = (score, RigidTransform::from_degrees(deg, t[0], t[1]));
+    let score = |set: &[Point], t: Point| {
+        let sum: f32 = set
+            .iter()
+            .map(|p| field.at([p[0] + t[0], p[1] + t[1]]))
+            .sum();
+        f64::from(sum) / set.len().max(1) as f64
+    };
+    let grid_best = |set: &[Point], centre: Point, step: f64, half: f64| {
+        let n = (half / step).ceil() as i32;
+        let mut best = (f64::MAX, centre);
+        for i in -n..=n {
+            for j in -n..=n {
+                let t = [
+                    centre[0] + f64::from(i) * step,
+                    centre[1] + f64::from(j) * step,
+                ];
+                let s = score(set, t);
+                if s < best.0 {
+                    best = (s, t);
+                }
             }
         }
-    }
-    best
+        best
+    };
+    let coarse = grid_best(&sparse, t0, 0.4, search_m);
+    let fine = grid_best(&rotated, coarse.1, field.cell.max(0.05), 0.4);
+    (
+        fine.0,
+        RigidTransform::from_degrees(deg, fine.1[0], fine.1[1]),
+    )
 }
 
 /// Trimmed point-to-point ICP from `start`.
 fn icp(tree: &RTree<Point>, pts: &[Point], start: RigidTransform, tol: f64) -> RigidTransform {
     let mut t = start;
-    let icp_pts = subsample(pts, 800);
-    for iter in 0..30 {
-        let max_d = (1.0 - iter as f64 / 30.0).max(0.0) * 1.0 + 2.0 * tol;
+    let icp_pts = subsample(pts, 500);
+    for iter in 0..20 {
+        let max_d = (1.0 - iter as f64 / 20.0).max(0.0) * 1.0 + 2.0 * tol;
         let mut pairs: Vec<(Point, Point)> = Vec::with_capacity(icp_pts.len());
         for p in &icp_pts {
             let q = t.apply(*p);
-            if let Some(n) = tree.nearest_neighbor(&q) {
-                if (n[0] - q[0]).hypot(n[1] - q[1]) <= max_d {
-                    pairs.push((q, *n));
-                }
+            if let Some(n) = tree
+                .nearest_neighbor(&q)
+                .filter(|n| (n[0] - q[0]).hypot(n[1] - q[1]) <= max_d)
+            {
+                pairs.push((q, *n));
             }
         }
         if pairs.len() < 3 {

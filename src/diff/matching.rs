@@ -2,7 +2,11 @@
 //!
 //! Every pair of spaces (one from the old revision, one from the new) whose
 //! bounding boxes meet is scored by the IoU of their polygons (holes
-//! included), computed exactly with `geo`'s boolean operations. Pairs below
+//! included), computed exactly: bit-identical outlines by their area,
+//! convex pairs by Sutherland–Hodgman clipping, all others by a slab sweep
+//! ([`super::overlap_area`]) that measures the intersection without
+//! building it (a general boolean operation, as `geo`'s, cost 10–50×
+//! more on the non-convex outlines extraction produces). Pairs below
 //! [`MatchParams::min_iou`] are dropped. The remaining pairs form a sparse
 //! bipartite graph; each connected component of it is solved as an
 //! assignment problem (Kuhn–Munkres, maximising the summed IoU), so the
@@ -16,9 +20,9 @@
 
 use std::collections::{BTreeMap, HashMap};
 
-use geo::{Area, BooleanOps, Coord, LineString, Polygon};
 use pathfinding::prelude::{Matrix, kuhn_munkres};
 
+use super::overlap_area::intersection_area;
 use crate::model::{Nrg, Point, Ring, Space, SpaceId, polygon_area};
 
 /// Tuning of [`match_spaces`].
@@ -160,7 +164,8 @@ struct Shape {
     /// The exterior ring, counter-clockwise, when the space is convex and
     /// has no holes: then overlaps are clipped directly (fast path).
     convex: Option<Ring>,
-    polygon: Polygon<f64>,
+    /// Exterior ring first, then the holes.
+    rings: Vec<Ring>,
     area: f64,
     min: [f64; 2],
     max: [f64; 2],
@@ -168,10 +173,16 @@ struct Shape {
 
 impl Shape {
     fn new(space: &Space) -> Shape {
-        let polygon = Polygon::new(
-            line_string(&space.polygon),
-            space.holes.iter().map(line_string).collect(),
-        );
+        let mut rings = Vec::with_capacity(1 + space.holes.len());
+        rings.push(space.polygon.clone());
+        rings.extend(space.holes.iter().cloned());
+        let area = (polygon_area(&space.polygon).abs()
+            - space
+                .holes
+                .iter()
+                .map(|h| polygon_area(h).abs())
+                .sum::<f64>())
+        .max(0.0);
         let mut min = [f64::INFINITY; 2];
         let mut max = [f64::NEG_INFINITY; 2];
         for p in &space.polygon {
@@ -190,8 +201,8 @@ impl Shape {
         Shape {
             id: space.id,
             convex,
-            area: polygon.unsigned_area(),
-            polygon,
+            rings,
+            area,
             min,
             max,
         }
@@ -205,9 +216,16 @@ impl Shape {
         if !self.bbox_meets(other) {
             return 0.0;
         }
+        if self.rings == other.rings {
+            return self.area;
+        }
         match (&self.convex, &other.convex) {
             (Some(a), Some(b)) => clipped_area(a, b),
-            _ => self.polygon.intersection(&other.polygon).unsigned_area(),
+            _ => {
+                let a: Vec<&[Point]> = self.rings.iter().map(Vec::as_slice).collect();
+                let b: Vec<&[Point]> = other.rings.iter().map(Vec::as_slice).collect();
+                intersection_area(&a, &b)
+            }
         }
     }
 
@@ -338,10 +356,6 @@ fn clipped_area(subject: &Ring, clip: &Ring) -> f64 {
         }
     }
     polygon_area(&output).abs()
-}
-
-fn line_string(ring: &Ring) -> LineString<f64> {
-    LineString::new(ring.iter().map(|p| Coord { x: p[0], y: p[1] }).collect())
 }
 
 /// Splits the bipartite edge list into connected components (union-find
@@ -509,8 +523,8 @@ mod tests {
                 );
                 let (ca, cb) = (sa.convex.clone().unwrap(), sb.convex.clone().unwrap());
                 let fast = clipped_area(&ca, &cb);
-                let exact = sa.polygon.intersection(&sb.polygon).unsigned_area();
-                // geo's boolean ops snap to a fine grid: agree to 1e-6 m².
+                let exact = intersection_area(&[&sa.rings[0]], &[&sb.rings[0]]);
+                // Clipping and the slab sweep agree to rounding.
                 assert!(
                     (fast - exact).abs() < 1e-6,
                     "{a:?} & {b:?}: {fast} vs {exact}"

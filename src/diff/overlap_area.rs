@@ -133,7 +133,7 @@ pub(crate) fn intersection_area(a: &[&[Point]], b: &[&[Point]]) -> f64 {
     };
     let ((alo, ahi), (blo, bhi)) = (range(&ea), range(&eb));
     let (lo, hi) = (alo.max(blo), ahi.min(bhi));
-    if !(lo < hi) {
+    if lo >= hi || lo.is_nan() || hi.is_nan() {
         return 0.0;
     }
     let mut ys: Vec<f64> = ea
