@@ -22,7 +22,7 @@ use std::collections::{BTreeMap, HashMap};
 
 use pathfinding::prelude::{Matrix, kuhn_munkres};
 
-use super::overlap_area::intersection_area;
+use super::overlap_area::{Edges, intersection_area_of};
 use crate::model::{Nrg, Point, Ring, Space, SpaceId, polygon_area};
 
 /// Tuning of [`match_spaces`].
@@ -166,6 +166,8 @@ struct Shape {
     convex: Option<Ring>,
     /// Exterior ring first, then the holes.
     rings: Vec<Ring>,
+    /// Their edges, for the slab sweep.
+    edges: Edges,
     area: f64,
     min: [f64; 2],
     max: [f64; 2],
@@ -201,6 +203,7 @@ impl Shape {
         Shape {
             id: space.id,
             convex,
+            edges: Edges::new(&rings.iter().map(Vec::as_slice).collect::<Vec<_>>()),
             rings,
             area,
             min,
@@ -221,11 +224,7 @@ impl Shape {
         }
         match (&self.convex, &other.convex) {
             (Some(a), Some(b)) => clipped_area(a, b),
-            _ => {
-                let a: Vec<&[Point]> = self.rings.iter().map(Vec::as_slice).collect();
-                let b: Vec<&[Point]> = other.rings.iter().map(Vec::as_slice).collect();
-                intersection_area(&a, &b)
-            }
+            _ => intersection_area_of(&self.edges, &other.edges),
         }
     }
 
@@ -523,7 +522,7 @@ mod tests {
                 );
                 let (ca, cb) = (sa.convex.clone().unwrap(), sb.convex.clone().unwrap());
                 let fast = clipped_area(&ca, &cb);
-                let exact = intersection_area(&[&sa.rings[0]], &[&sb.rings[0]]);
+                let exact = intersection_area_of(&sa.edges, &sb.edges);
                 // Clipping and the slab sweep agree to rounding.
                 assert!(
                     (fast - exact).abs() < 1e-6,

@@ -33,6 +33,18 @@ impl Edge {
     }
 }
 
+/// A polygon's non-horizontal edges sorted by their lower end, built once
+/// and reused for every pair the polygon is in.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct Edges(Vec<Edge>);
+
+impl Edges {
+    /// The edges of a polygon given as its rings (exterior and holes).
+    pub(crate) fn new(rings: &[&[Point]]) -> Edges {
+        Edges(edges(rings))
+    }
+}
+
 fn edges(rings: &[&[Point]]) -> Vec<Edge> {
     let mut out = Vec::new();
     for ring in rings {
@@ -62,18 +74,32 @@ fn edges(rings: &[&[Point]]) -> Vec<Edge> {
 
 /// The edges active over a slab starting at `y`: added in order of
 /// `y_lo`, dropped once `y_hi <= y`.
-struct Active {
-    edges: Vec<Edge>,
+struct Active<'e> {
+    edges: &'e [Edge],
     next: usize,
     now: Vec<Edge>,
 }
 
-impl Active {
-    fn new(edges: Vec<Edge>) -> Active {
+impl<'e> Active<'e> {
+    fn new(edges: &'e [Edge]) -> Active<'e> {
         Active {
             edges,
             next: 0,
             now: Vec::new(),
+        }
+    }
+
+    /// Starts the sweep at `y`, passing edges that end at or below it
+    /// without collecting them.
+    fn skip_below(&mut self, y: f64) {
+        while let Some(e) = self.edges.get(self.next) {
+            if e.y_lo > y {
+                break;
+            }
+            if e.y_hi > y {
+                self.now.push(*e);
+            }
+            self.next += 1;
         }
     }
 
@@ -124,21 +150,26 @@ fn common_length(a: &[f64], b: &[f64]) -> f64 {
 /// assert_eq!(intersection_area(&[&sq(0.0)], &[&sq(1.0)]), 2.0);
 /// ```
 pub(crate) fn intersection_area(a: &[&[Point]], b: &[&[Point]]) -> f64 {
-    let (ea, eb) = (edges(a), edges(b));
+    intersection_area_of(&Edges::new(a), &Edges::new(b))
+}
+
+/// [`intersection_area`] over prepared edge lists.
+pub(crate) fn intersection_area_of(a: &Edges, b: &Edges) -> f64 {
+    let (ea, eb) = (&a.0, &b.0);
     let range = |e: &[Edge]| {
         e.iter()
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| {
                 (lo.min(x.y_lo), hi.max(x.y_hi))
             })
     };
-    let ((alo, ahi), (blo, bhi)) = (range(&ea), range(&eb));
+    let ((alo, ahi), (blo, bhi)) = (range(ea), range(eb));
     let (lo, hi) = (alo.max(blo), ahi.min(bhi));
     if lo >= hi || lo.is_nan() || hi.is_nan() {
         return 0.0;
     }
     let mut ys: Vec<f64> = ea
         .iter()
-        .chain(&eb)
+        .chain(eb.iter())
         .flat_map(|e| [e.y_lo, e.y_hi])
         .filter(|y| *y > lo && *y < hi)
         .collect();
@@ -147,6 +178,8 @@ pub(crate) fn intersection_area(a: &[&[Point]], b: &[&[Point]]) -> f64 {
     ys.sort_by(f64::total_cmp);
     ys.dedup();
     let (mut act_a, mut act_b) = (Active::new(ea), Active::new(eb));
+    act_a.skip_below(lo);
+    act_b.skip_below(lo);
     let (mut xa, mut xb, mut cuts) = (Vec::new(), Vec::new(), Vec::new());
     let mut area = 0.0;
     for w in ys.windows(2) {

@@ -27,7 +27,7 @@ pub struct Floor {
 pub fn floor() -> Floor {
     let (w, h) = (480u32, 280u32);
     let mut cells = vec![Cell::Unknown; (w * h) as usize];
-    let mut set = |r: Rect, c: Cell, cells: &mut Vec<Cell>| {
+    let set = |r: Rect, c: Cell, cells: &mut Vec<Cell>| {
         for row in r.1..r.3 {
             for col in r.0..r.2 {
                 cells[(row * w + col) as usize] = c;
