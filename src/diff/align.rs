@@ -101,12 +101,12 @@ pub fn align_grids(
     let tree = RTree::bulk_load(ref_walls.clone());
     let moving_pts = subsample(&mov_walls, params.max_points);
     let coarse_pts = subsample(&mov_walls, 400);
-    let field = Field::new(&ref_walls, res.max(0.1), params.search_m + 2.0);
+    let field = Field::new(&ref_walls, res.max(0.2), params.search_m + 2.0);
 
     // Rotation candidates.
     let h_ref = direction_histogram(
         &subsample(&ref_walls, 3000),
-        &tree_of(&ref_walls),
+        &tree,
         4.0 * reference.resolution,
     );
     let h_mov = direction_histogram(

@@ -5,12 +5,8 @@
 //! 2. Identity: the optimal one-to-one matching on IoU ≥ `min_iou`
 //!    (Kuhn–Munkres, [`match_overlaps`]), the same rule the store uses to
 //!    keep ids, so a split room's largest part continues it.
-//! 3. Splits and merges by overlap fractions, independent of the matching:
-//!    a space of A is *split* when at least two spaces of B each lie
-//!    mostly (≥ `part_cover` of their own area) inside it; a space of B is
-//!    a *merge* when at least two spaces of A each lie mostly inside it.
-//!    A part must be unmatched or matched to the whole itself, and overlap
-//!    it by at least `min_part_m2`.
+//! 3. Splits and merges by overlap fractions, independent of the matching
+//!    ([`super::split_merge`]).
 //! 4. Per matched pair: resized (relative and absolute area thresholds,
 //!    not reported for split or merged spaces, whose area change the split
 //!    or merge explains), re-kinded, renamed, door width
@@ -18,17 +14,18 @@
 //! 5. Connections through the matching: removed, added, re-kinded, or a
 //!    length change (carried, not reported).
 
-use std::collections::{BTreeMap, BTreeSet, HashMap};
+use std::collections::{BTreeSet, HashMap};
 
 use serde::{Deserialize, Serialize};
 
 use super::change_set::{
-    CHANGESET_FORMAT, ChangeSet, ConnectionChange, ConnectionChangeKind, Merge, Part, SpaceChange,
+    CHANGESET_FORMAT, ChangeSet, ConnectionChange, ConnectionChangeKind, Merge, SpaceChange,
     SpaceChangeKind, Split, Summary,
 };
 use super::door_width::door_width;
 use super::error::DiffError;
 use super::matching::{MatchParams, Overlaps, match_overlaps, overlaps};
+use super::split_merge::splits_and_merges;
 use crate::model::{Connection, Nrg, Space, SpaceId, SpaceKind};
 
 /// Thresholds of [`diff`].
@@ -288,65 +285,6 @@ pub(crate) fn same_but_id(a: &Space, b: &Space) -> bool {
             .zip(&b.holes)
             .all(|(x, y)| bits(x) == bits(y))
         && a.attributes.iter().eq(b.attributes.iter())
-}
-
-fn splits_and_merges(
-    ov: &Overlaps,
-    old_to_new: &HashMap<SpaceId, (SpaceId, f64)>,
-    new_to_old: &HashMap<SpaceId, SpaceId>,
-    params: &DiffParams,
-) -> (Vec<Split>, Vec<Merge>) {
-    let mut split_parts: BTreeMap<usize, Vec<Part>> = BTreeMap::new();
-    let mut merge_parts: BTreeMap<usize, Vec<Part>> = BTreeMap::new();
-    for &(i, j, inter) in &ov.pairs {
-        let (old, new) = (ov.old_ids[i], ov.new_ids[j]);
-        if inter < params.min_part_m2 {
-            continue;
-        }
-        // `new` is a part of `old` split.
-        let new_free = new_to_old.get(&new).is_none_or(|&o| o == old);
-        if new_free && inter >= params.part_cover * ov.new_area[j] && ov.old_area[i] > 0.0 {
-            split_parts.entry(i).or_default().push(Part {
-                id: new,
-                share: inter / ov.old_area[i],
-            });
-        }
-        // `old` is a part of `new` merged.
-        let old_free = old_to_new.get(&old).is_none_or(|&(n, _)| n == new);
-        if old_free && inter >= params.part_cover * ov.old_area[i] && ov.new_area[j] > 0.0 {
-            merge_parts.entry(j).or_default().push(Part {
-                id: old,
-                share: inter / ov.new_area[j],
-            });
-        }
-    }
-    let by_share = |parts: &mut Vec<Part>| {
-        parts.sort_by(|x, y| y.share.total_cmp(&x.share).then(x.id.cmp(&y.id)));
-    };
-    let splits = split_parts
-        .into_iter()
-        .filter(|(_, p)| p.len() >= 2)
-        .map(|(i, mut parts)| {
-            by_share(&mut parts);
-            Split {
-                old: ov.old_ids[i],
-                parts,
-            }
-        })
-        .collect();
-    let mut merges: Vec<Merge> = merge_parts
-        .into_iter()
-        .filter(|(_, p)| p.len() >= 2)
-        .map(|(j, mut parts)| {
-            by_share(&mut parts);
-            Merge {
-                new: ov.new_ids[j],
-                parts,
-            }
-        })
-        .collect();
-    merges.sort_by_key(|m| m.new);
-    (splits, merges)
 }
 
 fn connection_changes(

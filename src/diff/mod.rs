@@ -36,6 +36,7 @@ mod error;
 mod matching;
 mod overlap_area;
 mod report;
+mod split_merge;
 mod transform;
 
 pub use align::{AlignParams, Alignment, align_grids, alignment_quality, wall_points};
