@@ -138,3 +138,30 @@ fn files_in_other_frames_are_aligned() {
     assert_eq!(code, 0, "{out}{err}");
     assert!(out.contains("aligned: rotation"), "{out}");
 }
+
+#[test]
+fn stored_revisions_from_other_runs_align_on_their_grids() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = tmp.path();
+    let f = floor();
+    write_map(dir, "a", &f.grid);
+    write_map(dir, "c", &turned(&f.grid, 10, [-2.0, 6.0, -0.4]));
+    for m in ["a.yaml", "c.yaml"] {
+        let (code, _, err) = run(dir, &["import", m, "--map", "floor", "--db", "db.sqlite"]);
+        assert_eq!(code, 0, "{err}");
+    }
+    let store = nrgdb::store::Store::open(&dir.join("db.sqlite")).unwrap();
+    assert!(store.grid("floor", Some(2)).unwrap().is_some());
+    drop(store);
+    let (code, out, err) = run(dir, &["diff", "floor", "1", "2", "--db", "db.sqlite"]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(
+        out.contains("aligned: rotation") && out.contains("no changes"),
+        "{out}"
+    );
+    let (code, out, _) = run(
+        dir,
+        &["diff", "floor", "1", "2", "--db", "db.sqlite", "--no-align"],
+    );
+    assert_eq!(code, 1, "{out}");
+}
