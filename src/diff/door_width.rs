@@ -53,7 +53,7 @@ pub fn door_width(space: &Space) -> f64 {
 }
 
 /// Andrew's monotone chain; counter-clockwise, no repeated point.
-fn convex_hull(points: &[Point]) -> Vec<Point> {
+pub(crate) fn convex_hull(points: &[Point]) -> Vec<Point> {
     let mut pts: Vec<Point> = points
         .iter()
         .copied()

@@ -22,6 +22,7 @@ use std::collections::{BTreeMap, HashMap};
 
 use pathfinding::prelude::{Matrix, kuhn_munkres};
 
+use super::door_width::convex_hull;
 use super::overlap_area::{Edges, intersection_area_of};
 use crate::model::{Nrg, Point, Ring, Space, SpaceId, polygon_area};
 
@@ -168,6 +169,9 @@ struct Shape {
     rings: Vec<Ring>,
     /// Their edges, for the slab sweep.
     edges: Edges,
+    /// The exterior's convex hull (counter-clockwise), to reject pairs
+    /// that share no area cheaply.
+    hull: Vec<Point>,
     area: f64,
     min: [f64; 2],
     max: [f64; 2],
@@ -204,6 +208,7 @@ impl Shape {
             id: space.id,
             convex,
             edges: Edges::new(&rings.iter().map(Vec::as_slice).collect::<Vec<_>>()),
+            hull: convex_hull(&space.polygon),
             rings,
             area,
             min,
@@ -222,6 +227,9 @@ impl Shape {
         if self.rings == other.rings {
             return self.area;
         }
+        if hulls_apart(&self.hull, &other.hull) {
+            return 0.0;
+        }
         match (&self.convex, &other.convex) {
             (Some(a), Some(b)) => clipped_area(a, b),
             _ => intersection_area_of(&self.edges, &other.edges),
@@ -237,6 +245,30 @@ impl Shape {
             0.0
         }
     }
+}
+
+/// Whether two convex counter-clockwise hulls have a separating axis (an
+/// edge normal of either along which their projections do not overlap):
+/// then the polygons inside them share no area (separating axis theorem).
+fn hulls_apart(a: &[Point], b: &[Point]) -> bool {
+    if a.len() < 3 || b.len() < 3 {
+        return false;
+    }
+    let project = |poly: &[Point], n: Point| {
+        poly.iter()
+            .map(|p| p[0] * n[0] + p[1] * n[1])
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                (lo.min(v), hi.max(v))
+            })
+    };
+    [a, b].iter().any(|poly| {
+        (0..poly.len()).any(|i| {
+            let (p, q) = (poly[i], poly[(i + 1) % poly.len()]);
+            let n = [q[1] - p[1], p[0] - q[0]];
+            let ((alo, ahi), (blo, bhi)) = (project(a, n), project(b, n));
+            ahi <= blo || bhi <= alo
+        })
+    })
 }
 
 /// A uniform grid over bounding boxes (cell = the mean box size), so
@@ -539,6 +571,19 @@ mod tests {
             [0.0, 2.0],
         ];
         assert!(!is_convex(&l_shape));
+    }
+
+    #[test]
+    fn hulls_apart_only_when_separable() {
+        let sq =
+            |x: f64, y: f64| convex_hull(&[[x, y], [x + 1.0, y], [x + 1.0, y + 1.0], [x, y + 1.0]]);
+        assert!(hulls_apart(&sq(0.0, 0.0), &sq(1.0, 0.0))); // touching
+        assert!(hulls_apart(&sq(0.0, 0.0), &sq(1.5, 1.5)));
+        assert!(!hulls_apart(&sq(0.0, 0.0), &sq(0.5, 0.5)));
+        let tri = convex_hull(&[[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]]);
+        // Inside the triangle's box, beyond its hypotenuse: apart.
+        assert!(hulls_apart(&tri, &sq(2.6, 2.6)));
+        assert!(!hulls_apart(&tri, &sq(1.4, 1.4)));
     }
 
     #[test]
