@@ -18,6 +18,11 @@ mod query_golden;
 mod query_props;
 mod route_props;
 
+mod diff_cli;
+mod diff_edits;
+mod diff_props;
+mod diff_shared;
+mod diff_support;
 mod store;
 mod store_building;
 mod store_cli;
