@@ -74,6 +74,10 @@ pub struct ExtractParams {
     /// A boundary between two spaces whose passage is at most this wide is a
     /// door; wider boundaries are open connections. Default 1.6 m.
     pub door_width_max_m: f64,
+    /// Borders narrower than this are corner contacts, not doorways: no
+    /// door. Default 0.4 m (twice `noise_radius_m`: narrower passages were
+    /// removed as noise anyway).
+    pub door_width_min_m: f64,
     /// A border is a door only where it is a constriction: at most this
     /// fraction of the widest passage of the narrower space on either side
     /// (so a corridor's own width, between two parts of it, is no door).
@@ -112,6 +116,7 @@ impl Default for ExtractParams {
             core_radius_m: 0.5,
             split_min_core_m2: 1.0,
             door_width_max_m: 1.6,
+            door_width_min_m: 0.4,
             door_constriction: 0.8,
             door_join_m: 0.5,
             door_depth_m: 0.3,
@@ -136,6 +141,7 @@ impl ExtractParams {
             ("core_radius_m", self.core_radius_m),
             ("split_min_core_m2", self.split_min_core_m2),
             ("door_width_max_m", self.door_width_max_m),
+            ("door_width_min_m", self.door_width_min_m),
             ("door_constriction", self.door_constriction),
             ("door_join_m", self.door_join_m),
             ("door_depth_m", self.door_depth_m),

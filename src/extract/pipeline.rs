@@ -130,6 +130,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     clock.lap("merge");
     let all = borders(&regions, &dist, (params.door_join_m / res).round() as i64);
     let door_px = params.door_width_max_m / res;
+    let door_min_px = params.door_width_min_m / res;
     let widest = widest_passages(&regions, &dist);
     let constriction = |b: &Border| {
         let (a, c) = (b.pair.0 as usize, b.pair.1 as usize);
@@ -137,7 +138,8 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     };
     let doors: Vec<&Border> = all
         .iter()
-        .filter(|b| b.width_px <= door_px && b.width_px <= constriction(b))
+        .filter(|b| b.width_px >= door_min_px && b.width_px <= door_px)
+        .filter(|b| b.width_px <= constriction(b))
         .collect();
     let door_pairs: Vec<(u32, u32)> = doors.iter().map(|b| b.pair).collect();
     let n_regions = regions.count;
