@@ -51,7 +51,7 @@ pub use metrics::Metrics;
 pub use openapi::document as openapi_document;
 pub use params::Params;
 pub use shutdown::signal as shutdown_signal;
-pub use state::{AppState, Ctx, StorePool};
+pub use state::{AppState, Ctx, Slot, StorePool};
 
 /// The application: every endpoint of [`routes::endpoints`] with the
 /// request timeout, metrics, tracing, JSON 404/405 answers and, when
