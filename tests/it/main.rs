@@ -21,6 +21,7 @@ mod store;
 mod store_building;
 mod store_cli;
 
+mod server_cli;
 mod server_client;
 mod server_openapi;
 mod server_read;
