@@ -17,6 +17,11 @@ async fn health_maps_revisions() {
     assert_eq!(one["map"]["name"], "building");
     assert_eq!(one["latest"]["seq"], 1);
     s.get("/maps/elsewhere").await.assert_error(404, "map");
+    let first = s.get("/maps/building/revisions/1").await.json();
+    assert_eq!(first["revision"]["message"], "first");
+    s.get("/maps/building/revisions/2")
+        .await
+        .assert_error(404, "rev");
     let revs = s.get("/maps/building/revisions").await.json();
     assert_eq!(revs["revisions"][0]["seq"], 1);
     assert_eq!(revs["revisions"][0]["spaces"], 13);

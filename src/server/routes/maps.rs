@@ -50,6 +50,22 @@ pub async fn list_revisions(
     Ok(Json(json!({ "map": map, "revisions": revisions })))
 }
 
+/// `GET /maps/{map}/revisions/{rev}`: one revision's record.
+pub async fn revision(
+    State(state): State<AppState>,
+    Path((map, rev)): Path<(String, String)>,
+    uri: Uri,
+) -> Result<Json<Value>, ApiError> {
+    Params::parse(&uri, &[])?;
+    let rev = parse_rev("rev", &rev)?;
+    state
+        .blocking(move |ctx| {
+            let info = ctx.store().revision(&map, rev)?;
+            Ok(Json(json!({ "revision": info })))
+        })
+        .await
+}
+
 /// Cache headers: a numbered revision never changes; `latest` does.
 fn with_caching(mut response: Response, numbered: bool) -> Response {
     let value = if numbered {
