@@ -42,7 +42,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     meta.params = model.params;
     let mut store = args.db.open()?;
     let done = store
-        .import(&args.map, &model.nrg, meta)
+        .import_with_grid(&args.map, &model.nrg, meta, model.grid.as_ref())
         .into_diagnostic()
         .wrap_err_with(|| format!("importing {} into map '{}'", args.file.display(), args.map))?;
     let r = &done.revision;

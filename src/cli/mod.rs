@@ -3,6 +3,7 @@
 //!
 //! Exit codes: 0 success, 1 "no result" or findings (e.g. `check`), 2 error.
 
+mod apply;
 mod check;
 mod convert;
 mod demo;
@@ -13,6 +14,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 
 mod db;
+mod diff;
 pub mod eval;
 mod export;
 pub mod extract;
@@ -83,6 +85,10 @@ pub enum Command {
     Log(maps::LogArgs),
     /// Serve the database as an HTTP JSON navigation API.
     Serve(serve::Args),
+    /// Compare two revisions (or two files): what was added, removed, split, merged, renamed.
+    Diff(diff::Args),
+    /// Apply a change set from `nrgdb diff --json` to a revision, giving a new revision.
+    Apply(apply::Args),
 }
 
 /// Runs one subcommand, writing its report to `out`.
@@ -104,6 +110,8 @@ pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
         Command::Name(args) => name::run(args, out),
         Command::Log(args) => maps::run_log(args, out),
         Command::Serve(args) => serve::run(args, out),
+        Command::Diff(args) => diff::run(args, out),
+        Command::Apply(args) => apply::run(args, out),
     }
 }
 

@@ -18,6 +18,8 @@ pub struct ModelFile {
     pub bytes: Vec<u8>,
     /// Extraction parameters, when the model was extracted from a map.
     pub params: Option<serde_json::Value>,
+    /// The occupancy grid, when the model was extracted from a map.
+    pub grid: Option<nrgdb::grid::OccupancyGrid>,
 }
 
 /// Reads a model: `.gml`/`.xml` (IndoorGML), `.json` (model JSON),
@@ -43,6 +45,7 @@ pub fn load_model(path: &Path) -> miette::Result<ModelFile> {
             nrg: extraction.nrg,
             bytes,
             params,
+            grid: Some(grid),
         });
     }
     let nrg = nrgdb::format::read_model(path, DEFAULT_MAX_BYTES).into_diagnostic()?;
@@ -50,6 +53,7 @@ pub fn load_model(path: &Path) -> miette::Result<ModelFile> {
         nrg,
         bytes,
         params: None,
+        grid: None,
     })
 }
 

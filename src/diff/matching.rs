@@ -2,7 +2,11 @@
 //!
 //! Every pair of spaces (one from the old revision, one from the new) whose
 //! bounding boxes meet is scored by the IoU of their polygons (holes
-//! included), computed exactly with `geo`'s boolean operations. Pairs below
+//! included), computed exactly: bit-identical outlines by their area,
+//! convex pairs by Sutherland–Hodgman clipping, all others by a slab sweep
+//! ([`super::overlap_area`]) that measures the intersection without
+//! building it (a general boolean operation, as `geo`'s, cost 10–50×
+//! more on the non-convex outlines extraction produces). Pairs below
 //! [`MatchParams::min_iou`] are dropped. The remaining pairs form a sparse
 //! bipartite graph; each connected component of it is solved as an
 //! assignment problem (Kuhn–Munkres, maximising the summed IoU), so the
@@ -16,9 +20,10 @@
 
 use std::collections::{BTreeMap, HashMap};
 
-use geo::{Area, BooleanOps, Coord, LineString, Polygon};
 use pathfinding::prelude::{Matrix, kuhn_munkres};
 
+use super::door_width::convex_hull;
+use super::overlap_area::{Edges, intersection_area_of};
 use crate::model::{Nrg, Point, Ring, Space, SpaceId, polygon_area};
 
 /// Tuning of [`match_spaces`].
@@ -64,11 +69,44 @@ pub struct SpaceMatch {
 /// # Ok::<(), nrgdb::model::ModelError>(())
 /// ```
 pub fn match_spaces(old: &Nrg, new: &Nrg, params: &MatchParams) -> Vec<SpaceMatch> {
+    match_overlaps(&overlaps(old, new), params)
+}
+
+/// The positive-area overlaps between the spaces of two models: every pair
+/// whose polygons share area, with both areas (holes excluded).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Overlaps {
+    /// Ids of the old model's spaces (in its order).
+    pub old_ids: Vec<SpaceId>,
+    /// Ids of the new model's spaces (in its order).
+    pub new_ids: Vec<SpaceId>,
+    /// Area in m² of each old space.
+    pub old_area: Vec<f64>,
+    /// Area in m² of each new space.
+    pub new_area: Vec<f64>,
+    /// `(old index, new index, intersection area m²)`, intersection > 0.
+    pub pairs: Vec<(usize, usize, f64)>,
+}
+
+impl Overlaps {
+    /// Intersection over union of pair `(i, j, inter)`.
+    pub fn iou(&self, i: usize, j: usize, inter: f64) -> f64 {
+        let union = self.old_area[i] + self.new_area[j] - inter;
+        if union > 0.0 && inter.is_finite() {
+            (inter / union).clamp(0.0, 1.0)
+        } else {
+            0.0
+        }
+    }
+}
+
+/// Every overlapping pair of spaces of `old` and `new`, found through a
+/// grid of bounding boxes and measured exactly.
+pub fn overlaps(old: &Nrg, new: &Nrg) -> Overlaps {
     let old_shapes: Vec<Shape> = old.spaces().iter().map(Shape::new).collect();
     let new_shapes: Vec<Shape> = new.spaces().iter().map(Shape::new).collect();
-    // Candidate edges (old index, new index, iou).
     let grid = BoxGrid::new(&old_shapes);
-    let mut edges: Vec<(usize, usize, f64)> = Vec::new();
+    let mut pairs: Vec<(usize, usize, f64)> = Vec::new();
     let mut candidates = Vec::new();
     for (j, n) in new_shapes.iter().enumerate() {
         grid.candidates(n, &mut candidates);
@@ -77,18 +115,36 @@ pub fn match_spaces(old: &Nrg, new: &Nrg, params: &MatchParams) -> Vec<SpaceMatc
             if !o.bbox_meets(n) {
                 continue;
             }
-            let iou = o.iou(n);
-            if iou >= params.min_iou && iou > 0.0 {
-                edges.push((i, j, iou));
+            let inter = o.intersection_area(n);
+            if inter > 0.0 && inter.is_finite() {
+                pairs.push((i, j, inter));
             }
         }
     }
+    Overlaps {
+        old_ids: old_shapes.iter().map(|s| s.id).collect(),
+        new_ids: new_shapes.iter().map(|s| s.id).collect(),
+        old_area: old_shapes.iter().map(|s| s.area).collect(),
+        new_area: new_shapes.iter().map(|s| s.area).collect(),
+        pairs,
+    }
+}
+
+/// The optimal one-to-one matching over precomputed overlaps (see
+/// [`match_spaces`]).
+pub fn match_overlaps(ov: &Overlaps, params: &MatchParams) -> Vec<SpaceMatch> {
+    let edges: Vec<(usize, usize, f64)> = ov
+        .pairs
+        .iter()
+        .map(|&(i, j, inter)| (i, j, ov.iou(i, j, inter)))
+        .filter(|&(_, _, iou)| iou >= params.min_iou && iou > 0.0)
+        .collect();
     let mut matches = Vec::new();
-    for component in components(&edges, old_shapes.len(), new_shapes.len()) {
+    for component in components(&edges, ov.old_ids.len(), ov.new_ids.len()) {
         for (i, j, iou) in assign(&component) {
             matches.push(SpaceMatch {
-                old: old_shapes[i].id,
-                new: new_shapes[j].id,
+                old: ov.old_ids[i],
+                new: ov.new_ids[j],
                 iou,
             });
         }
@@ -109,7 +165,13 @@ struct Shape {
     /// The exterior ring, counter-clockwise, when the space is convex and
     /// has no holes: then overlaps are clipped directly (fast path).
     convex: Option<Ring>,
-    polygon: Polygon<f64>,
+    /// Exterior ring first, then the holes.
+    rings: Vec<Ring>,
+    /// Their edges, for the slab sweep.
+    edges: Edges,
+    /// The exterior's convex hull (counter-clockwise), to reject pairs
+    /// that share no area cheaply.
+    hull: Vec<Point>,
     area: f64,
     min: [f64; 2],
     max: [f64; 2],
@@ -117,10 +179,16 @@ struct Shape {
 
 impl Shape {
     fn new(space: &Space) -> Shape {
-        let polygon = Polygon::new(
-            line_string(&space.polygon),
-            space.holes.iter().map(line_string).collect(),
-        );
+        let mut rings = Vec::with_capacity(1 + space.holes.len());
+        rings.push(space.polygon.clone());
+        rings.extend(space.holes.iter().cloned());
+        let area = (polygon_area(&space.polygon).abs()
+            - space
+                .holes
+                .iter()
+                .map(|h| polygon_area(h).abs())
+                .sum::<f64>())
+        .max(0.0);
         let mut min = [f64::INFINITY; 2];
         let mut max = [f64::NEG_INFINITY; 2];
         for p in &space.polygon {
@@ -139,8 +207,10 @@ impl Shape {
         Shape {
             id: space.id,
             convex,
-            area: polygon.unsigned_area(),
-            polygon,
+            edges: Edges::new(&rings.iter().map(Vec::as_slice).collect::<Vec<_>>()),
+            hull: convex_hull(&space.polygon),
+            rings,
+            area,
             min,
             max,
         }
@@ -150,14 +220,24 @@ impl Shape {
         (0..2).all(|k| self.min[k] < other.max[k] && other.min[k] < self.max[k])
     }
 
-    fn iou(&self, other: &Shape) -> f64 {
+    fn intersection_area(&self, other: &Shape) -> f64 {
         if !self.bbox_meets(other) {
             return 0.0;
         }
-        let inter = match (&self.convex, &other.convex) {
+        if self.rings == other.rings {
+            return self.area;
+        }
+        if hulls_apart(&self.hull, &other.hull) {
+            return 0.0;
+        }
+        match (&self.convex, &other.convex) {
             (Some(a), Some(b)) => clipped_area(a, b),
-            _ => self.polygon.intersection(&other.polygon).unsigned_area(),
-        };
+            _ => intersection_area_of(&self.edges, &other.edges),
+        }
+    }
+
+    fn iou(&self, other: &Shape) -> f64 {
+        let inter = self.intersection_area(other);
         let union = self.area + other.area - inter;
         if union > 0.0 && inter.is_finite() {
             (inter / union).clamp(0.0, 1.0)
@@ -165,6 +245,30 @@ impl Shape {
             0.0
         }
     }
+}
+
+/// Whether two convex counter-clockwise hulls have a separating axis (an
+/// edge normal of either along which their projections do not overlap):
+/// then the polygons inside them share no area (separating axis theorem).
+fn hulls_apart(a: &[Point], b: &[Point]) -> bool {
+    if a.len() < 3 || b.len() < 3 {
+        return false;
+    }
+    let project = |poly: &[Point], n: Point| {
+        poly.iter()
+            .map(|p| p[0] * n[0] + p[1] * n[1])
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                (lo.min(v), hi.max(v))
+            })
+    };
+    [a, b].iter().any(|poly| {
+        (0..poly.len()).any(|i| {
+            let (p, q) = (poly[i], poly[(i + 1) % poly.len()]);
+            let n = [q[1] - p[1], p[0] - q[0]];
+            let ((alo, ahi), (blo, bhi)) = (project(a, n), project(b, n));
+            ahi <= blo || bhi <= alo
+        })
+    })
 }
 
 /// A uniform grid over bounding boxes (cell = the mean box size), so
@@ -283,10 +387,6 @@ fn clipped_area(subject: &Ring, clip: &Ring) -> f64 {
         }
     }
     polygon_area(&output).abs()
-}
-
-fn line_string(ring: &Ring) -> LineString<f64> {
-    LineString::new(ring.iter().map(|p| Coord { x: p[0], y: p[1] }).collect())
 }
 
 /// Splits the bipartite edge list into connected components (union-find
@@ -454,8 +554,8 @@ mod tests {
                 );
                 let (ca, cb) = (sa.convex.clone().unwrap(), sb.convex.clone().unwrap());
                 let fast = clipped_area(&ca, &cb);
-                let exact = sa.polygon.intersection(&sb.polygon).unsigned_area();
-                // geo's boolean ops snap to a fine grid: agree to 1e-6 m².
+                let exact = intersection_area_of(&sa.edges, &sb.edges);
+                // Clipping and the slab sweep agree to rounding.
                 assert!(
                     (fast - exact).abs() < 1e-6,
                     "{a:?} & {b:?}: {fast} vs {exact}"
@@ -471,6 +571,19 @@ mod tests {
             [0.0, 2.0],
         ];
         assert!(!is_convex(&l_shape));
+    }
+
+    #[test]
+    fn hulls_apart_only_when_separable() {
+        let sq =
+            |x: f64, y: f64| convex_hull(&[[x, y], [x + 1.0, y], [x + 1.0, y + 1.0], [x, y + 1.0]]);
+        assert!(hulls_apart(&sq(0.0, 0.0), &sq(1.0, 0.0))); // touching
+        assert!(hulls_apart(&sq(0.0, 0.0), &sq(1.5, 1.5)));
+        assert!(!hulls_apart(&sq(0.0, 0.0), &sq(0.5, 0.5)));
+        let tri = convex_hull(&[[0.0, 0.0], [4.0, 0.0], [0.0, 4.0]]);
+        // Inside the triangle's box, beyond its hypotenuse: apart.
+        assert!(hulls_apart(&tri, &sq(2.6, 2.6)));
+        assert!(!hulls_apart(&tri, &sq(1.4, 1.4)));
     }
 
     #[test]

@@ -1,12 +1,56 @@
 //! Change detection between revisions of an NRG.
 //!
-//! Owns the space matcher ([`match_spaces`]): which space of a new revision
-//! continues which space of its parent, by polygon overlap in the map frame.
-//! The store uses it to keep stable ids and names across re-mapping; the
-//! future change sets (added/removed/moved/renamed) build on it.
-//! Uses `model` and the `geo` crate; must not use store, SQL, XML or the
-//! terminal.
+//! Owns the space matcher ([`match_spaces`]: which space of a new revision
+//! continues which space of its parent, by polygon overlap in the map
+//! frame; the store uses it to keep stable ids), the change detector
+//! ([`diff`] → [`ChangeSet`]: unchanged, added, removed, resized, split,
+//! merged, re-kinded, renamed spaces; connections added, removed and
+//! re-kinded; door width changes), its replay ([`apply`], with
+//! `apply(a, &diff(a, b)) == b`), the IndoorGML update ([`with_base_ids`]:
+//! B under A's identifiers) and the alignment of two maps from different
+//! mapping runs ([`align_grids`] → [`Alignment`], a rigid transform with a
+//! quality score, refused when unreliable).
+//!
+//! Uses `model`, `grid` and `imaging` (alignment) and the `geo` crate; must
+//! not use store, query, SQL, XML or the terminal.
+//!
+//! ```
+//! use nrgdb::diff::{apply, diff, DiffParams};
+//! use nrgdb::fixtures::corridor_building;
+//! let (a, b) = (corridor_building(4), corridor_building(3));
+//! let changes = diff(&a, &b, &DiffParams::default());
+//! println!("{}", changes.table()); // removed room 13, door 10003, links
+//! let json = changes.to_json();
+//! let back = nrgdb::diff::ChangeSet::from_json(&json)?;
+//! assert_eq!(apply(&a, &back)?, b);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
+mod align;
+mod apply;
+mod change_set;
+mod compare;
+mod detect;
+mod door_width;
+mod error;
 mod matching;
+mod overlap_area;
+mod report;
+mod split_merge;
+mod transform;
 
-pub use matching::{MatchParams, SpaceMatch, match_spaces, overlap_iou};
+pub use align::{AlignParams, Alignment, align_grids, alignment_quality, wall_points};
+pub use apply::{apply, with_base_ids};
+pub use change_set::{
+    CHANGESET_FORMAT, ChangeSet, ConnectionChange, ConnectionChangeKind, Merge, Part, SpaceChange,
+    SpaceChangeKind, Split, Summary,
+};
+pub use compare::{AlignMode, Comparison, MODEL_GRID_M, Revision, compare, model_grid};
+pub use detect::{DiffParams, diff};
+pub use door_width::door_width;
+pub use error::DiffError;
+pub use matching::{
+    MatchParams, Overlaps, SpaceMatch, match_overlaps, match_spaces, overlap_iou, overlaps,
+};
+pub use report::ChangeRow;
+pub use transform::RigidTransform;

@@ -43,9 +43,25 @@ impl std::str::FromStr for Method {
 pub struct ExtractParams {
     /// Segmentation method.
     pub method: Method,
+    /// Maps finer than this are segmented on a copy coarsened by a whole
+    /// factor k to about this resolution (k × k cells to one) and the labels
+    /// are brought back to the map's pixels: k² times less work, with
+    /// polygons at the working resolution. 0 turns this off. Default 0.1 m.
+    pub working_resolution_m: f64,
     /// Free space narrower than twice this is noise (LiDAR rays leaking into
     /// unknown space, speckle) and is removed by an opening. Default 0.2 m.
     pub noise_radius_m: f64,
+    /// Obstacle islands (not joined to any wall) whose bounding box is at
+    /// most this long on both sides are furniture: rooms are segmented as if
+    /// they were free, and own the pixels under them. 0 turns this off.
+    /// Default 1.0 m: chair and table legs, boxes and pillars, but not the
+    /// 1.2 m wall pieces left between neighbouring doorways.
+    pub furniture_max_m: f64,
+    /// Unknown pockets inside the building (the insides of furniture, what
+    /// the sensor could not see) of at most this area join the spaces
+    /// around them; unknown joined to the image border is outside and stays
+    /// out. 0 turns this off. Default 4.0 m².
+    pub unknown_pocket_max_m2: f64,
     /// Free components smaller than this are dropped. Default 1.0 m².
     pub min_free_area_m2: f64,
     /// Room cores are the places farther than this from any obstacle; a
@@ -58,6 +74,15 @@ pub struct ExtractParams {
     /// A boundary between two spaces whose passage is at most this wide is a
     /// door; wider boundaries are open connections. Default 1.6 m.
     pub door_width_max_m: f64,
+    /// A border is a door only where it is a constriction: at most this
+    /// fraction of the widest passage of the narrower space on either side
+    /// (so a corridor's own width, between two parts of it, is no door).
+    /// 1 = any border under `door_width_max_m`. Default 0.8.
+    pub door_constriction: f64,
+    /// Stretches of border between the same two spaces closer than this are
+    /// one doorway (a speck of noise does not make two doors); farther apart
+    /// they are separate doors. Default 0.5 m.
+    pub door_join_m: f64,
     /// Thickness of a door space across the doorway. Default 0.3 m.
     pub door_depth_m: f64,
     /// Spaces smaller than this merge into their longest-bordering neighbour
@@ -79,11 +104,16 @@ impl Default for ExtractParams {
     fn default() -> Self {
         ExtractParams {
             method: Method::Watershed,
+            working_resolution_m: 0.1,
             noise_radius_m: 0.2,
+            furniture_max_m: 1.0,
+            unknown_pocket_max_m2: 4.0,
             min_free_area_m2: 1.0,
             core_radius_m: 0.5,
             split_min_core_m2: 1.0,
             door_width_max_m: 1.6,
+            door_constriction: 0.8,
+            door_join_m: 0.5,
             door_depth_m: 0.3,
             min_room_area_m2: 1.0,
             corridor_min_elongation: 2.5,
@@ -98,11 +128,16 @@ impl ExtractParams {
     /// Checks that every length is finite and non-negative; returns the bad field.
     pub fn validate(&self) -> Result<(), (&'static str, f64)> {
         let fields = [
+            ("working_resolution_m", self.working_resolution_m),
             ("noise_radius_m", self.noise_radius_m),
+            ("furniture_max_m", self.furniture_max_m),
+            ("unknown_pocket_max_m2", self.unknown_pocket_max_m2),
             ("min_free_area_m2", self.min_free_area_m2),
             ("core_radius_m", self.core_radius_m),
             ("split_min_core_m2", self.split_min_core_m2),
             ("door_width_max_m", self.door_width_max_m),
+            ("door_constriction", self.door_constriction),
+            ("door_join_m", self.door_join_m),
             ("door_depth_m", self.door_depth_m),
             ("min_room_area_m2", self.min_room_area_m2),
             ("corridor_min_elongation", self.corridor_min_elongation),

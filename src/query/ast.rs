@@ -72,7 +72,7 @@ pub enum Statement {
         /// The new name.
         name: String,
     },
-    /// `DIFF r1 r2` (answered "not available yet").
+    /// `DIFF r1 r2`: the changes from revision r1 to r2 of the selected map.
     Diff {
         /// Old revision.
         from: u64,

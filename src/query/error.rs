@@ -125,6 +125,9 @@ pub enum QueryError {
     /// Routing failed (a missing route is not an error).
     #[error(transparent)]
     Route(#[from] RouteError),
+    /// `DIFF` could not compare the two revisions (e.g. no reliable alignment).
+    #[error(transparent)]
+    Diff(#[from] crate::diff::DiffError),
 }
 
 impl QueryError {

@@ -11,7 +11,7 @@
 //! `NEIGHBOURS OF a [DEPTH n]`, `FIND rooms|corridors|doors|others|spaces
 //! [WHERE …] [ORDER BY …] [LIMIT n]`, `LOCATE (x, y)`, `REACHABLE FROM a
 //! WITHIN d`, `SHOW MAPS`, `SHOW REVISIONS [OF m]`, `USE m [AT REVISION n]`,
-//! `NAME a AS "…"`, `DIFF r1 r2` (not available yet), `EXPLAIN <statement>`.
+//! `NAME a AS "…"`, `DIFF r1 r2` (changes between two revisions), `EXPLAIN <statement>`.
 //! A reference is an id (`12`, `space 12`, `room 12`), a name
 //! (`"Kitchen"`, case-insensitive) or a point (`(3.5, 7.25)`, metres).
 //!

@@ -49,7 +49,7 @@ pub enum Plan {
     Use(String, Option<u64>),
     /// Rename a space, writing a revision.
     Name(SpaceId, String),
-    /// Not available yet.
+    /// Compare two revisions of the selected map (`crate::diff::compare`).
     Diff(u64, u64),
     /// Print the inner plan instead of running it.
     Explain(Box<Plan>),
@@ -206,7 +206,11 @@ impl fmt::Display for Plan {
                 None => write!(f, "Select map '{m}' latest revision"),
             },
             Plan::Name(id, name) => write!(f, "RenameSpace {id} to '{name}' (new revision)"),
-            Plan::Diff(a, b) => write!(f, "Diff {a} {b} (not available yet)"),
+            Plan::Diff(a, b) => write!(
+                f,
+                "Diff revision {a} -> {b}\n  AlignIfFramesDiffer (walls of the space polygons)\n  \
+                 MatchSpaces IoU, Kuhn-Munkres; split/merge by overlap shares"
+            ),
             Plan::Explain(inner) => write!(f, "Explain\n  {inner}"),
         }
     }

@@ -142,7 +142,12 @@ impl<S: Source> Session<S> {
                     "named space {id} '{name}' in map '{map}': revision {revision} (was {old})"
                 )))
             }
-            Plan::Diff(..) => Err(QueryError::NotAvailable("DIFF")),
+            Plan::Diff(from, to) => {
+                let current = self.current.as_ref().ok_or(QueryError::NoMapSelected)?;
+                let map = current.map.clone();
+                let (a, b) = (self.source.load(&map, *from)?, self.source.load(&map, *to)?);
+                diff_result(&a, &b)
+            }
             data => {
                 let current = self.current.as_ref().ok_or(QueryError::NoMapSelected)?;
                 execute(data, current, &self.limits)
@@ -177,6 +182,45 @@ impl<S: Source> Session<S> {
         }
         Ok(out)
     }
+}
+
+/// `DIFF A B`: one row per reported change (see `ChangeSet::rows`), and a
+/// first row giving the alignment when the frames differed.
+fn diff_result(a: &crate::model::Nrg, b: &crate::model::Nrg) -> Result<QueryResult, QueryError> {
+    use crate::diff::{AlignMode, AlignParams, DiffParams, Revision, compare};
+    let side = |nrg| Revision { nrg, grid: None };
+    let done = compare(
+        side(a),
+        side(b),
+        AlignMode::Auto,
+        &DiffParams::default(),
+        &AlignParams::default(),
+    )?;
+    let mut rows = Vec::new();
+    if let Some(t) = done.changes.alignment {
+        rows.push(vec![
+            Cell::Text("aligned".into()),
+            Cell::Null,
+            Cell::Null,
+            Cell::Null,
+            Cell::Text(format!(
+                "rotation {:.2}°, translation ({:.3}, {:.3}) m",
+                t.rotation_deg(),
+                t.tx_m,
+                t.ty_m
+            )),
+        ]);
+    }
+    for r in done.changes.rows() {
+        rows.push(vec![
+            Cell::Text(r.change),
+            Cell::Text(r.old),
+            Cell::Text(r.new),
+            Cell::Text(r.space),
+            Cell::Text(r.detail),
+        ]);
+    }
+    Ok(table(&["change", "old", "new", "space", "detail"], rows))
 }
 
 fn table(names: &[&str], rows: Vec<Vec<Cell>>) -> QueryResult {

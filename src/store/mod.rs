@@ -28,6 +28,7 @@
 
 mod error;
 mod geometry_blob;
+mod grids;
 mod read;
 mod schema;
 mod source;

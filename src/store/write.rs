@@ -29,6 +29,18 @@ impl Store {
         nrg: &Nrg,
         meta: ImportMeta,
     ) -> Result<Imported, StoreError> {
+        self.import_with_grid(map, nrg, meta, None)
+    }
+
+    /// [`Store::import`], also keeping the occupancy grid the model was
+    /// extracted from (see [`Store::grid`]), in the same transaction.
+    pub fn import_with_grid(
+        &mut self,
+        map: &str,
+        nrg: &Nrg,
+        meta: ImportMeta,
+        grid: Option<&crate::grid::OccupancyGrid>,
+    ) -> Result<Imported, StoreError> {
         check_map_name(map)?;
         let params = self.match_params;
         let tx = self
@@ -58,6 +70,9 @@ impl Store {
             (stable, ids, Some((parent_seq, parent)))
         };
         let revision = commit_revision(&tx, map_id, map, parent.as_ref(), &stable, &meta)?;
+        if let Some(grid) = grid {
+            super::grids::insert_grid(&tx, map_id, revision.seq, grid)?;
+        }
         tx.commit()?;
         Ok(Imported { revision, ids })
     }

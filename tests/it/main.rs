@@ -7,6 +7,7 @@ mod indoorgml_fuzz;
 mod indoorgml_roundtrip;
 mod indoorgml_samples;
 mod sim;
+mod sim_accuracy;
 mod support;
 
 mod demo;
@@ -17,12 +18,18 @@ mod query_golden;
 mod query_props;
 mod route_props;
 
+mod diff_cli;
+mod diff_edits;
+mod diff_props;
+mod diff_shared;
+mod diff_support;
 mod store;
 mod store_building;
 mod store_cli;
 
 mod server_cli;
 mod server_client;
+mod server_diff;
 mod server_openapi;
 mod server_read;
 mod server_write;

@@ -190,8 +190,13 @@ fn show_use_name_diff_explain() {
         e,
         "no map named 'dmeo'; did you mean 'demo'? (see SHOW MAPS)"
     );
-    let e = one(&mut s, "DIFF 1 2").unwrap_err().to_string();
-    assert!(e.contains("not available yet"), "{e}");
+    // Revision 2 only named space 8 (issue 6: DIFF answers).
+    let QueryResult::Table(t) = one(&mut s, "DIFF 1 2").unwrap() else {
+        panic!()
+    };
+    assert_eq!(t.rows.len(), 1, "{t:?}");
+    assert_eq!(t.rows[0][0], Cell::Text("renamed".into()));
+    assert_eq!(t.rows[0][2], Cell::Text("8".into()));
     let QueryResult::Plan(p) = one(&mut s, "EXPLAIN FIND rooms WHERE area > 3 LIMIT 2").unwrap()
     else {
         panic!()

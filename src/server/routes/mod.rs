@@ -3,6 +3,7 @@
 //! document are both built from [`endpoints`], so adding a route is one
 //! line here (plus its handler).
 
+mod diff;
 mod maps;
 mod query;
 mod route;
@@ -122,6 +123,7 @@ pub fn endpoints() -> Vec<Endpoint> {
         ep(M::GET, "/maps/{map}/neighbours/{id}", "Spaces within a number of navigable hops", &spaces::NEIGHBOUR_PARAMS, get(spaces::neighbours)),
         ep(M::GET, "/maps/{map}/locate", "The space containing a point (metres, map frame)", &spaces::LOCATE_PARAMS, get(spaces::locate)),
         ep(M::GET, "/maps/{map}/route", "Shortest route (or alternatives) between spaces, OSRM-shaped", &route::PARAMS, get(route::route)),
+        ep(M::GET, "/maps/{map}/diff", "What changed between two revisions (spaces, connections, door widths), aligned when the frames differ", &diff::PARAMS, get(diff::diff)),
         ep(M::POST, "/query", "Run query-language statements; JSON results", &query::PARAMS, post(query::query)),
     ]
 }

@@ -1,0 +1,70 @@
+//! `nrgdb apply`: replay a change set on a stored revision, as a new
+//! revision.
+
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use miette::{IntoDiagnostic, WrapErr};
+use nrgdb::diff::{ChangeSet, apply};
+use nrgdb::store::ImportMeta;
+
+use super::db::{DbArg, author, parse_map_rev};
+
+/// Apply a change set (from `nrgdb diff --json`) to a revision of a map
+/// (the latest unless NAME@REV), storing the result as the next revision.
+/// The change set must have been computed from that revision's model.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// The map, optionally with the revision to apply to: `willow` or `willow@3`.
+    #[arg(value_name = "NAME[@REV]")]
+    pub map: String,
+    /// The change set (JSON written by `nrgdb diff --json` or `--output`).
+    #[arg(value_name = "CHANGESET.json")]
+    pub changes: PathBuf,
+    /// Commit message recorded with the revision.
+    #[arg(short, long, default_value = "applied a change set")]
+    pub message: String,
+    /// Author recorded with the revision [default: $USER].
+    #[arg(long, env = "NRGDB_AUTHOR")]
+    pub author: Option<String>,
+    #[command(flatten)]
+    pub db: DbArg,
+}
+
+/// Runs `nrgdb apply`.
+pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
+    let (map, rev) = parse_map_rev(&args.map)?;
+    let text = std::fs::read_to_string(&args.changes)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("reading {}", args.changes.display()))?;
+    let changes = ChangeSet::from_json(&text)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("{}: not a change set", args.changes.display()))?;
+    let mut store = args.db.open()?;
+    let base = store
+        .load(&map, rev)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("loading {}", args.map))?;
+    let result = apply(&base, &changes)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("applying {} to {}", args.changes.display(), args.map))?;
+    let name = args.changes.file_name().map_or_else(
+        || args.changes.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    );
+    let meta =
+        ImportMeta::new(args.message, author(args.author)).with_source(name, text.as_bytes());
+    let done = store
+        .import(&map, &result, meta)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("storing the result in map '{map}'"))?;
+    let r = &done.revision;
+    writeln!(
+        out,
+        "{}@{}: {} spaces ({} new, {} changed, {} gone), {} connections",
+        r.map, r.seq, r.spaces, r.spaces_added, r.spaces_changed, r.spaces_removed, r.connections
+    )
+    .into_diagnostic()?;
+    Ok(ExitCode::SUCCESS)
+}

@@ -1,0 +1,233 @@
+//! Comparing two revisions end to end: decide whether their frames differ,
+//! align when needed, then [`diff`]. The CLI, the query language and the
+//! server all call [`compare`].
+//!
+//! Frames differ when, at the identity transform, fewer than
+//! `AlignParams::min_inliers` of B's wall points lie within the inlier
+//! tolerance of A's walls ([`alignment_quality`]). Walls come from the
+//! occupancy grids the revisions were extracted from, or, for models
+//! without one, from the boundary of the union of their space polygons
+//! rasterised at 0.1 m ([`model_grid`]).
+
+use serde::Serialize;
+
+use super::align::{AlignParams, Alignment, align_grids, alignment_quality};
+use super::change_set::ChangeSet;
+use super::detect::{DiffParams, diff};
+use super::error::DiffError;
+use super::transform::RigidTransform;
+use crate::grid::{Cell, OccupancyGrid};
+use crate::model::{Nrg, point_in_ring};
+
+/// When to align B to A before comparing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum AlignMode {
+    /// Never: the two share a frame.
+    Never,
+    /// When their frames differ (see the module doc).
+    #[default]
+    Auto,
+    /// Always.
+    Always,
+}
+
+/// One side of a comparison: a model and, when known, the occupancy grid
+/// it was extracted from.
+#[derive(Debug, Clone, Copy)]
+pub struct Revision<'a> {
+    /// The model.
+    pub nrg: &'a Nrg,
+    /// Its source grid, if any.
+    pub grid: Option<&'a OccupancyGrid>,
+}
+
+/// The result of [`compare`].
+#[derive(Debug, Clone)]
+pub struct Comparison {
+    /// The changes from A to B (B moved into A's frame when aligned).
+    pub changes: ChangeSet,
+    /// B in A's frame (B itself when not aligned): `apply(A, changes)`.
+    pub moved: Nrg,
+    /// The alignment used, if any.
+    pub alignment: Option<Alignment>,
+    /// How well the frames agreed before aligning (share of B's walls on
+    /// A's walls at the identity).
+    pub identity_inliers: Option<f64>,
+}
+
+/// Compares B with the base A: aligns B to A as `mode` says (refusing with
+/// [`DiffError::Unreliable`] when no reliable alignment exists), then
+/// diffs. The change set records the transform in `alignment`.
+pub fn compare(
+    a: Revision<'_>,
+    b: Revision<'_>,
+    mode: AlignMode,
+    params: &DiffParams,
+    align: &AlignParams,
+) -> Result<Comparison, DiffError> {
+    params.validate()?;
+    let mut identity_inliers = None;
+    let mut alignment = None;
+    if mode != AlignMode::Never {
+        let own;
+        let (ga, gb) = match (a.grid, b.grid) {
+            (Some(ga), Some(gb)) => (ga, gb),
+            _ => {
+                own = (
+                    model_grid(a.nrg, MODEL_GRID_M),
+                    model_grid(b.nrg, MODEL_GRID_M),
+                );
+                (&own.0, &own.1)
+            }
+        };
+        let needed = mode == AlignMode::Always || {
+            let q = alignment_quality(ga, gb, RigidTransform::IDENTITY, align);
+            identity_inliers = Some(q.inliers);
+            q.inliers < align.min_inliers
+        };
+        if needed {
+            alignment = Some(align_grids(ga, gb, align)?);
+        }
+    }
+    let moved = match &alignment {
+        Some(al) => al.transform.apply_to_nrg(b.nrg)?,
+        None => b.nrg.clone(),
+    };
+    let mut changes = diff(a.nrg, &moved, params);
+    changes.alignment = alignment.map(|al| al.transform);
+    Ok(Comparison {
+        changes,
+        moved,
+        alignment,
+        identity_inliers,
+    })
+}
+
+/// Cell size of [`model_grid`], metres.
+pub const MODEL_GRID_M: f64 = 0.1;
+
+/// A stand-in occupancy grid for a model without one: cells whose centre
+/// lies in a space are free, cells next to them occupied (the walls are
+/// the boundary of the union of the spaces), the rest unknown.
+pub fn model_grid(nrg: &Nrg, cell_m: f64) -> OccupancyGrid {
+    let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
+    for p in nrg.spaces().iter().flat_map(|s| &s.polygon) {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    if nrg.spaces().is_empty() || !(lo[0].is_finite() && hi[0].is_finite()) || cell_m <= 0.0 {
+        return OccupancyGrid::from_cells(0, 0, cell_m.max(1e-3), [0.0; 3], Vec::new());
+    }
+    let margin = 2.0 * cell_m;
+    let (x0, y0) = (lo[0] - margin, lo[1] - margin);
+    let w = (((hi[0] + margin - x0) / cell_m).ceil() as usize).clamp(1, 20_000);
+    let h = (((hi[1] + margin - y0) / cell_m).ceil() as usize).clamp(1, 20_000);
+    let mut free = vec![false; w * h];
+    for s in nrg.spaces() {
+        let (mut slo, mut shi) = ([f64::MAX; 2], [f64::MIN; 2]);
+        for p in &s.polygon {
+            for k in 0..2 {
+                slo[k] = slo[k].min(p[k]);
+                shi[k] = shi[k].max(p[k]);
+            }
+        }
+        let c0 = ((slo[0] - x0) / cell_m).floor().max(0.0) as usize;
+        let c1 = (((shi[0] - x0) / cell_m).ceil() as usize).min(w);
+        // Row 0 is the top (largest y).
+        let r0 = ((y0 + h as f64 * cell_m - shi[1]) / cell_m)
+            .floor()
+            .max(0.0) as usize;
+        let r1 = (((y0 + h as f64 * cell_m - slo[1]) / cell_m).ceil() as usize).min(h);
+        for r in r0..r1 {
+            let y = y0 + (h - r) as f64 * cell_m - cell_m / 2.0;
+            for c in c0..c1 {
+                let x = x0 + (c as f64 + 0.5) * cell_m;
+                if !free[r * w + c]
+                    && point_in_ring([x, y], &s.polygon)
+                    && !s.holes.iter().any(|hole| point_in_ring([x, y], hole))
+                {
+                    free[r * w + c] = true;
+                }
+            }
+        }
+    }
+    let mut cells = vec![Cell::Unknown; w * h];
+    for r in 0..h {
+        for c in 0..w {
+            let i = r * w + c;
+            if free[i] {
+                cells[i] = Cell::Free;
+            } else {
+                let near = [(0i64, 1i64), (0, -1), (1, 0), (-1, 0)]
+                    .iter()
+                    .any(|(dc, dr)| {
+                        let (cc, rr) = (c as i64 + dc, r as i64 + dr);
+                        cc >= 0
+                            && rr >= 0
+                            && (cc as usize) < w
+                            && (rr as usize) < h
+                            && free[rr as usize * w + cc as usize]
+                    });
+                if near {
+                    cells[i] = Cell::Occupied;
+                }
+            }
+        }
+    }
+    OccupancyGrid::from_cells(w as u32, h as u32, cell_m, [x0, y0, 0.0], cells)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diff::apply;
+    use crate::fixtures::corridor_building;
+
+    #[test]
+    fn model_grids_make_walls_where_spaces_end() {
+        let g = model_grid(&corridor_building(2), 0.1);
+        assert!(g.free_count() > 0);
+        // (0.05, 1.0) is inside the corridor; (-0.05, 1.0) is its wall.
+        let inside = g.metres_to_pixel([0.05, 1.0]);
+        let wall = g.metres_to_pixel([-0.05, 1.0]);
+        assert_eq!(g.cell(inside[0] as u32, inside[1] as u32), Some(Cell::Free));
+        assert_eq!(g.cell(wall[0] as u32, wall[1] as u32), Some(Cell::Occupied));
+    }
+
+    #[test]
+    fn auto_aligns_moved_models_and_not_others() {
+        let a = corridor_building(6);
+        let rev = |nrg| Revision { nrg, grid: None };
+        let same = compare(
+            rev(&a),
+            rev(&a),
+            AlignMode::Auto,
+            &DiffParams::default(),
+            &AlignParams::default(),
+        )
+        .unwrap();
+        assert!(same.alignment.is_none() && same.changes.is_empty());
+        let t = RigidTransform::from_degrees(20.0, 3.0, -2.0);
+        let b = t.apply_to_nrg(&a).unwrap();
+        let moved = compare(
+            rev(&a),
+            rev(&b),
+            AlignMode::Auto,
+            &DiffParams::default(),
+            &AlignParams::default(),
+        )
+        .unwrap();
+        let al = moved.alignment.unwrap();
+        assert!(moved.identity_inliers.unwrap() < 0.5);
+        assert!(moved.changes.is_empty(), "{}", moved.changes.table());
+        let back = al.transform.after(&t);
+        assert!(
+            back.rotation_deg().abs() < 0.5 && back.tx_m.hypot(back.ty_m) < 0.15,
+            "{back:?}"
+        );
+        assert_eq!(apply(&a, &moved.changes).unwrap(), moved.moved);
+    }
+}

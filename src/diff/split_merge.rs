@@ -1,0 +1,73 @@
+//! Splits and merges by overlap shares, independent of the one-to-one
+//! matching: a space of A is split when at least two spaces of B each lie
+//! mostly (≥ `part_cover` of their own area) inside it; a space of B is a
+//! merge when at least two spaces of A each lie mostly inside it. A part
+//! must be unmatched or matched to the whole itself, and overlap it by at
+//! least `min_part_m2`.
+
+use std::collections::{BTreeMap, HashMap};
+
+use super::change_set::{Merge, Part, Split};
+use super::detect::DiffParams;
+use super::matching::Overlaps;
+use crate::model::SpaceId;
+
+/// The splits (by old id) and merges (by new id) that the overlaps show.
+pub(crate) fn splits_and_merges(
+    ov: &Overlaps,
+    old_to_new: &HashMap<SpaceId, (SpaceId, f64)>,
+    new_to_old: &HashMap<SpaceId, SpaceId>,
+    params: &DiffParams,
+) -> (Vec<Split>, Vec<Merge>) {
+    let mut split_parts: BTreeMap<usize, Vec<Part>> = BTreeMap::new();
+    let mut merge_parts: BTreeMap<usize, Vec<Part>> = BTreeMap::new();
+    for &(i, j, inter) in &ov.pairs {
+        let (old, new) = (ov.old_ids[i], ov.new_ids[j]);
+        if inter < params.min_part_m2 {
+            continue;
+        }
+        // `new` is a part of `old` split.
+        let new_free = new_to_old.get(&new).is_none_or(|&o| o == old);
+        if new_free && inter >= params.part_cover * ov.new_area[j] && ov.old_area[i] > 0.0 {
+            split_parts.entry(i).or_default().push(Part {
+                id: new,
+                share: inter / ov.old_area[i],
+            });
+        }
+        // `old` is a part of `new` merged.
+        let old_free = old_to_new.get(&old).is_none_or(|&(n, _)| n == new);
+        if old_free && inter >= params.part_cover * ov.old_area[i] && ov.new_area[j] > 0.0 {
+            merge_parts.entry(j).or_default().push(Part {
+                id: old,
+                share: inter / ov.new_area[j],
+            });
+        }
+    }
+    let by_share = |parts: &mut Vec<Part>| {
+        parts.sort_by(|x, y| y.share.total_cmp(&x.share).then(x.id.cmp(&y.id)));
+    };
+    let splits = split_parts
+        .into_iter()
+        .filter(|(_, p)| p.len() >= 2)
+        .map(|(i, mut parts)| {
+            by_share(&mut parts);
+            Split {
+                old: ov.old_ids[i],
+                parts,
+            }
+        })
+        .collect();
+    let mut merges: Vec<Merge> = merge_parts
+        .into_iter()
+        .filter(|(_, p)| p.len() >= 2)
+        .map(|(j, mut parts)| {
+            by_share(&mut parts);
+            Merge {
+                new: ov.new_ids[j],
+                parts,
+            }
+        })
+        .collect();
+    merges.sort_by_key(|m| m.new);
+    (splits, merges)
+}
