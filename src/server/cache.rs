@@ -17,6 +17,9 @@ struct Entry {
 /// spatial index), shared by all requests.
 pub struct RevisionCache {
     entries: Mutex<HashMap<String, HashMap<u32, Entry>>>,
+    /// Held while a revision is loaded, so the requests that all miss on a
+    /// new revision load it once (the others wait, then hit).
+    loading: Mutex<()>,
     capacity: usize,
     clock: AtomicU64,
     hits: AtomicU64,
@@ -37,6 +40,7 @@ impl RevisionCache {
     pub fn new(capacity: usize) -> RevisionCache {
         RevisionCache {
             entries: Mutex::new(HashMap::new()),
+            loading: Mutex::new(()),
             capacity: capacity.max(1),
             clock: AtomicU64::new(0),
             hits: AtomicU64::new(0),
@@ -44,8 +48,9 @@ impl RevisionCache {
         }
     }
 
-    /// The cached revision, or the one `load` builds (then cached). `load`
-    /// runs without the lock held, so two first requests may both build it.
+    /// The cached revision, or the one `load` builds (then cached). Loads
+    /// are one at a time: requests missing on the same revision wait for
+    /// the first one's load instead of repeating it.
     pub fn get_or_load<E>(
         &self,
         map: &str,
@@ -53,6 +58,11 @@ impl RevisionCache {
         load: impl FnOnce() -> Result<IndexedRevision, E>,
     ) -> Result<Arc<IndexedRevision>, E> {
         let now = self.clock.fetch_add(1, Ordering::Relaxed);
+        if let Some(found) = self.lookup(map, rev, now) {
+            self.hits.fetch_add(1, Ordering::Relaxed);
+            return Ok(found);
+        }
+        let _loading = self.loading.lock().unwrap_or_else(|p| p.into_inner());
         if let Some(found) = self.lookup(map, rev, now) {
             self.hits.fetch_add(1, Ordering::Relaxed);
             return Ok(found);
@@ -148,5 +158,30 @@ mod tests {
                 .get_or_load("c", 1, || Err::<IndexedRevision, _>(()))
                 .is_err()
         );
+    }
+
+    #[test]
+    fn concurrent_misses_load_once() {
+        let cache = std::sync::Arc::new(RevisionCache::new(4));
+        let loads = std::sync::Arc::new(AtomicU64::new(0));
+        let threads: Vec<_> = (0..8)
+            .map(|_| {
+                let (cache, loads) = (cache.clone(), loads.clone());
+                std::thread::spawn(move || {
+                    cache
+                        .get_or_load("m", 1, || {
+                            loads.fetch_add(1, Ordering::Relaxed);
+                            std::thread::sleep(std::time::Duration::from_millis(20));
+                            load(3)
+                        })
+                        .unwrap()
+                })
+            })
+            .collect();
+        for t in threads {
+            t.join().unwrap();
+        }
+        assert_eq!(loads.load(Ordering::Relaxed), 1);
+        assert_eq!(cache.stats(), (7, 1));
     }
 }

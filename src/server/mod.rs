@@ -42,7 +42,8 @@ use axum::http::{HeaderValue, Method, header};
 use axum::middleware::from_fn_with_state;
 use tokio::net::TcpListener;
 use tower_http::cors::{AllowOrigin, CorsLayer};
-use tower_http::trace::TraceLayer;
+use tower_http::trace::{DefaultMakeSpan, DefaultOnResponse, TraceLayer};
+use tracing::Level;
 
 pub use cache::RevisionCache;
 pub use config::{DEFAULT_ADDR, ServerConfig};
@@ -51,7 +52,7 @@ pub use metrics::Metrics;
 pub use openapi::document as openapi_document;
 pub use params::Params;
 pub use shutdown::signal as shutdown_signal;
-pub use state::{AppState, Ctx, StorePool};
+pub use state::{AppState, Ctx, Slot, StorePool};
 
 /// The application: every endpoint of [`routes::endpoints`] with the
 /// request timeout, metrics, tracing, JSON 404/405 answers and, when
@@ -71,7 +72,13 @@ pub fn router(state: AppState) -> Router {
         .route_layer(from_fn_with_state(state.clone(), metrics::track))
         .fallback(routes::fallback)
         .method_not_allowed_fallback(routes::method_not_allowed)
-        .layer(TraceLayer::new_for_http());
+        .layer(
+            // One span and one "finished processing request" event per
+            // request at INFO (shown with `nrgdb -v serve`).
+            TraceLayer::new_for_http()
+                .make_span_with(DefaultMakeSpan::new().level(Level::INFO))
+                .on_response(DefaultOnResponse::new().level(Level::INFO)),
+        );
     if let Some(cors) = cors(&state.config().cors_origins) {
         app = app.layer(cors);
     }

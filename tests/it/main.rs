@@ -27,7 +27,9 @@ mod store;
 mod store_building;
 mod store_cli;
 
+mod server_cli;
 mod server_client;
+mod server_diff;
 mod server_openapi;
 mod server_read;
 mod server_write;

@@ -13,6 +13,15 @@ async fn health_maps_revisions() {
     let maps = s.get("/maps").await.json();
     assert_eq!(maps["maps"][0]["name"], "building");
     assert_eq!(maps["maps"][0]["latest"], 1);
+    let one = s.get("/maps/building").await.json();
+    assert_eq!(one["map"]["name"], "building");
+    assert_eq!(one["latest"]["seq"], 1);
+    s.get("/maps/elsewhere").await.assert_error(404, "map");
+    let first = s.get("/maps/building/revisions/1").await.json();
+    assert_eq!(first["revision"]["message"], "first");
+    s.get("/maps/building/revisions/2")
+        .await
+        .assert_error(404, "rev");
     let revs = s.get("/maps/building/revisions").await.json();
     assert_eq!(revs["revisions"][0]["seq"], 1);
     assert_eq!(revs["revisions"][0]["spaces"], 13);

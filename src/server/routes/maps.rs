@@ -18,6 +18,22 @@ pub async fn list_maps(State(state): State<AppState>, uri: Uri) -> Result<Json<V
     Ok(Json(json!({ "maps": maps })))
 }
 
+/// `GET /maps/{map}`: the map and its latest revision.
+pub async fn map(
+    State(state): State<AppState>,
+    Path(map): Path<String>,
+    uri: Uri,
+) -> Result<Json<Value>, ApiError> {
+    Params::parse(&uri, &[])?;
+    state
+        .blocking(move |ctx| {
+            let latest = ctx.store().revision(&map, None)?;
+            let info = ctx.store().maps()?.into_iter().find(|m| m.name == map);
+            Ok(Json(json!({ "map": info, "latest": latest })))
+        })
+        .await
+}
+
 /// `GET /maps/{map}/revisions`.
 pub async fn list_revisions(
     State(state): State<AppState>,
@@ -32,6 +48,22 @@ pub async fn list_revisions(
             .await?
     };
     Ok(Json(json!({ "map": map, "revisions": revisions })))
+}
+
+/// `GET /maps/{map}/revisions/{rev}`: one revision's record.
+pub async fn revision(
+    State(state): State<AppState>,
+    Path((map, rev)): Path<(String, String)>,
+    uri: Uri,
+) -> Result<Json<Value>, ApiError> {
+    Params::parse(&uri, &[])?;
+    let rev = parse_rev("rev", &rev)?;
+    state
+        .blocking(move |ctx| {
+            let info = ctx.store().revision(&map, rev)?;
+            Ok(Json(json!({ "revision": info })))
+        })
+        .await
 }
 
 /// Cache headers: a numbered revision never changes; `latest` does.

@@ -3,6 +3,7 @@
 //! document are both built from [`endpoints`], so adding a route is one
 //! line here (plus its handler).
 
+mod diff;
 mod maps;
 mod query;
 mod route;
@@ -111,8 +112,10 @@ pub fn endpoints() -> Vec<Endpoint> {
         ep(M::GET, "/metrics", "Prometheus metrics (text format 0.0.4)", &[], get(system::metrics)),
         ep(M::GET, "/openapi.json", "This API as OpenAPI 3.1", &[], get(system::openapi)),
         ep(M::GET, "/maps", "Every map with its latest revision", &[], get(maps::list_maps)),
+        ep(M::GET, "/maps/{map}", "A map and its latest revision", &[], get(maps::map)),
         ep(M::GET, "/maps/{map}/revisions", "The revisions of a map, oldest first", &[], get(maps::list_revisions)),
         Endpoint { timed: false, ..ep(M::POST, "/maps/{map}/revisions", "Upload a revision: multipart (map YAML + image, extracted; or an IndoorGML/JSON/GeoJSON file) or a raw IndoorGML/JSON body; needs the bearer token", &upload::PARAMS, post(upload::upload)) },
+        ep(M::GET, "/maps/{map}/revisions/{rev}", "One revision's record (message, author, counts of changes)", &[], get(maps::revision)),
         ep(M::GET, "/maps/{map}/revisions/{rev}/indoorgml", "A revision as IndoorGML 1.0.3", &[], get(maps::indoorgml)),
         ep(M::GET, "/maps/{map}/revisions/{rev}/geojson", "A revision as a GeoJSON FeatureCollection", &[], get(maps::geojson)),
         ep(M::GET, "/maps/{map}/spaces", "Spaces of a revision, filtered by kind and name", &spaces::LIST_PARAMS, get(spaces::list_spaces)),
@@ -120,6 +123,7 @@ pub fn endpoints() -> Vec<Endpoint> {
         ep(M::GET, "/maps/{map}/neighbours/{id}", "Spaces within a number of navigable hops", &spaces::NEIGHBOUR_PARAMS, get(spaces::neighbours)),
         ep(M::GET, "/maps/{map}/locate", "The space containing a point (metres, map frame)", &spaces::LOCATE_PARAMS, get(spaces::locate)),
         ep(M::GET, "/maps/{map}/route", "Shortest route (or alternatives) between spaces, OSRM-shaped", &route::PARAMS, get(route::route)),
+        ep(M::GET, "/maps/{map}/diff", "What changed between two revisions (spaces, connections, door widths), aligned when the frames differ", &diff::PARAMS, get(diff::diff)),
         ep(M::POST, "/query", "Run query-language statements; JSON results", &query::PARAMS, post(query::query)),
     ]
 }

@@ -1,0 +1,123 @@
+//! `GET /maps/{map}/diff?from=&to=&align=`: what changed between two
+//! revisions of a map ([`crate::diff::compare`]: spaces added, removed,
+//! resized, split, merged, re-kinded, renamed; connections; door widths),
+//! aligning the two when their frames differ.
+
+use axum::Json;
+use axum::extract::{Path, State};
+use axum::http::Uri;
+use serde_json::{Value, json};
+
+use super::{ParamDoc, q};
+use crate::diff::{AlignMode, AlignParams, DiffError, DiffParams, Revision, compare};
+use crate::server::error::ApiError;
+use crate::server::params::{Params, parse_rev};
+use crate::server::state::AppState;
+use crate::store::StoreError;
+
+/// Query parameters of the diff endpoint.
+pub const PARAMS: [ParamDoc; 3] = [
+    q(
+        "from",
+        "string",
+        true,
+        "base revision: a number or 'latest'",
+    ),
+    q(
+        "to",
+        "string",
+        true,
+        "revision compared with the base: a number or 'latest'",
+    ),
+    q(
+        "align",
+        "string",
+        false,
+        "auto (default: align when the frames differ), always or never",
+    ),
+];
+
+fn align_mode(raw: Option<&str>) -> Result<AlignMode, ApiError> {
+    match raw.map(str::trim) {
+        None | Some("auto") => Ok(AlignMode::Auto),
+        Some("always") => Ok(AlignMode::Always),
+        Some("never") => Ok(AlignMode::Never),
+        Some(other) => Err(ApiError::bad(
+            "align",
+            format!("'{other}' is not auto, always or never"),
+        )),
+    }
+}
+
+/// A store error on revision `name` ("from" or "to"), naming it.
+fn named(name: &str, e: StoreError) -> ApiError {
+    match e {
+        StoreError::NoSuchRevision { .. } => ApiError::not_found(name, e.to_string()),
+        other => other.into(),
+    }
+}
+
+/// `GET /maps/{map}/diff`.
+pub async fn diff(
+    State(state): State<AppState>,
+    Path(map): Path<String>,
+    uri: Uri,
+) -> Result<Json<Value>, ApiError> {
+    let p = Params::parse(&uri, &["from", "to", "align"])?;
+    let from = parse_rev("from", p.required("from")?)?;
+    let to = parse_rev("to", p.required("to")?)?;
+    let mode = align_mode(p.get("align"))?;
+    state
+        .blocking(move |ctx| {
+            let a_seq = ctx
+                .store()
+                .revision(&map, from)
+                .map_err(|e| named("from", e))?
+                .seq;
+            let b_seq = ctx
+                .store()
+                .revision(&map, to)
+                .map_err(|e| named("to", e))?
+                .seq;
+            let a = ctx.revision(&map, Some(a_seq))?;
+            let b = ctx.revision(&map, Some(b_seq))?;
+            let ga = ctx.store().grid(&map, Some(a_seq))?;
+            let gb = ctx.store().grid(&map, Some(b_seq))?;
+            let done = compare(
+                Revision {
+                    nrg: &a.nrg,
+                    grid: ga.as_ref(),
+                },
+                Revision {
+                    nrg: &b.nrg,
+                    grid: gb.as_ref(),
+                },
+                mode,
+                &DiffParams::default(),
+                &AlignParams::default(),
+            )
+            .map_err(|e| match e {
+                DiffError::Unreliable { .. } | DiffError::TooFewWalls { .. } => ApiError::bad(
+                    "align",
+                    format!("{e} (align=never compares the revisions as they are)"),
+                ),
+                other => ApiError::Internal(other.to_string()),
+            })?;
+            let mut changes = done.changes;
+            changes.from = Some(format!("{map}@{a_seq}"));
+            changes.to = Some(format!("{map}@{b_seq}"));
+            // The transform itself is in `changes.alignment`; this is its quality.
+            let alignment = done.alignment.map(|al| {
+                json!({"inliers": al.inliers, "tolerance_m": al.tolerance_m, "rms_m": al.rms_m})
+            });
+            Ok(Json(json!({
+                "map": map,
+                "from": a_seq,
+                "to": b_seq,
+                "unchanged": changes.is_empty(),
+                "alignment": alignment,
+                "changes": changes,
+            })))
+        })
+        .await
+}
