@@ -21,7 +21,9 @@ mod map_log;
 mod maps;
 mod model_file;
 mod name;
+mod progress;
 pub mod query;
+pub mod render;
 pub mod repl;
 mod simulate;
 
@@ -80,6 +82,8 @@ pub enum Command {
     Name(name::Args),
     /// Show the history of a map with messages.
     Log(maps::LogArgs),
+    /// Draw a model as a picture (PNG or SVG): spaces by kind over the map, graph, route, diff.
+    Render(render::Args),
 }
 
 /// Runs one subcommand, writing its report to `out`.
@@ -100,6 +104,7 @@ pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
         Command::Export(args) => export::run(args, out),
         Command::Name(args) => name::run(args, out),
         Command::Log(args) => maps::run_log(args, out),
+        Command::Render(args) => render::run(args, out),
     }
 }
 
