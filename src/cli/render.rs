@@ -65,7 +65,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
             let old = resolve(a, Some(&base), &args.db)?;
             let new = resolve(b, Some(&base), &args.db)?;
             let overlay = diff_overlay(&old.nrg, &new.nrg);
-            let title = format!("{} → {}", old.title, new.title);
+            let title = format!("{} -> {}", old.title, new.title);
             (new.nrg, title, Some(overlay))
         }
         None => (base.nrg, base.title, None),

@@ -17,6 +17,9 @@ mod query_golden;
 mod query_props;
 mod route_props;
 
+mod render_cli;
+mod render_golden;
+
 mod store;
 mod store_building;
 mod store_cli;
