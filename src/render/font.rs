@@ -87,9 +87,9 @@ fn put(pixmap: &mut Pixmap, x: i64, y: i64, c: Rgba) {
         return;
     };
     let a = u32::from(c.0[3]);
-    for k in 0..3 {
-        let src = u32::from(c.0[k]) * a / 255;
-        px[k] = (src + u32::from(px[k]) * (255 - a) / 255) as u8;
+    for (dst, src) in px.iter_mut().zip(c.0).take(3) {
+        let src = u32::from(src) * a / 255;
+        *dst = (src + u32::from(*dst) * (255 - a) / 255) as u8;
     }
     px[3] = (a + u32::from(px[3]) * (255 - a) / 255) as u8;
 }

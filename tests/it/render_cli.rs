@@ -128,7 +128,7 @@ fn write_map(dir: &std::path::Path, stem: &str) {
     let (w, h) = (rows[0].len(), rows.len());
     let mut pgm = format!("P5\n{w} {h}\n255\n").into_bytes();
     for r in rows {
-        pgm.extend(r.bytes().map(|c| if c == '#' as u8 { 0 } else { 254 }));
+        pgm.extend(r.bytes().map(|c| if c == b'#' { 0 } else { 254 }));
     }
     std::fs::write(dir.join(format!("{stem}.pgm")), pgm).unwrap();
     std::fs::write(
