@@ -7,12 +7,9 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr};
-use nrgdb::diff::{MatchParams, match_spaces};
 use nrgdb::grid::{LoadOptions, OccupancyGrid, load_map};
 use nrgdb::model::{Nrg, SpaceId};
-use nrgdb::render::{
-    DiffOverlay, LabelMode, OverlaySpace, RenderOptions, RouteOverlay, Scene, render_svg,
-};
+use nrgdb::render::{LabelMode, RenderOptions, RouteOverlay, Scene, diff_overlay, render_svg};
 use nrgdb::route::{Budget, RouteGraph, RouteRequest, shortest_route};
 
 use super::db::{DbArg, parse_map_rev};
@@ -280,29 +277,4 @@ fn route_overlay(nrg: &Nrg, from: &str, to: &str) -> miette::Result<Option<Route
         waypoints: r.waypoints,
         length_m: r.length_m,
     }))
-}
-
-/// What changed from `old` to `new`, by space matching: unmatched old
-/// spaces were removed, unmatched new ones added, and matched ones whose
-/// outline (IoU < 0.999), kind or name differ changed.
-fn diff_overlay(old: &Nrg, new: &Nrg) -> DiffOverlay {
-    let matches = match_spaces(old, new, &MatchParams::default());
-    let mut overlay = DiffOverlay::default();
-    for s in old.spaces() {
-        if !matches.iter().any(|m| m.old == s.id) {
-            overlay.removed.push(OverlaySpace::of(s));
-        }
-    }
-    for s in new.spaces() {
-        match matches.iter().find(|m| m.new == s.id) {
-            None => overlay.added.push(OverlaySpace::of(s)),
-            Some(m) => {
-                let before = old.space(m.old);
-                if m.iou < 0.999 || before.is_some_and(|b| b.kind != s.kind || b.name != s.name) {
-                    overlay.changed.push(OverlaySpace::of(s));
-                }
-            }
-        }
-    }
-    overlay
 }

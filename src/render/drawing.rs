@@ -182,4 +182,7 @@ pub struct Drawing {
     pub background: Rgba,
     /// Items, back to front.
     pub items: Vec<Item>,
+    /// The map-frame → pixel transform of the map area (written into the
+    /// SVG so a page can place things given in metres).
+    pub transform: Option<super::transform::MapTransform>,
 }

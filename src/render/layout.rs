@@ -123,6 +123,7 @@ pub fn layout(scene: &Scene<'_>) -> Result<Drawing, RenderError> {
         height: height.ceil() as u32,
         background: Rgba::rgb(255, 255, 255),
         items,
+        transform: Some(t),
     })
 }
 

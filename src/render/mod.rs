@@ -8,8 +8,8 @@
 //! only draws that display list, so SVG and PNG show the same picture.
 //! [`kind_picture`] is the older label-image picture used by the demo.
 //!
-//! Uses grid, model and (for the demo picture) imaging labels; takes routes
-//! and diffs as plain overlays, so it needs neither route nor diff. Knows
+//! Uses grid, model, diff's space matcher ([`diff_overlay`]) and (for the
+//! demo picture) imaging labels; takes routes as a plain overlay. Knows
 //! nothing of SQL, HTTP or the terminal.
 
 mod data_uri;
@@ -19,6 +19,7 @@ mod error;
 mod font;
 mod layout;
 mod legend;
+mod overlay;
 mod picture;
 #[cfg(feature = "render")]
 mod png;
@@ -32,6 +33,7 @@ pub use drawing::{Anchor, Drawing, Hatch, Item, Rgba, Stroke, Tag};
 pub use error::RenderError;
 pub use layout::layout;
 pub use legend::nice_length_m;
+pub use overlay::diff_overlay;
 pub use picture::{PALETTE, kind_picture, kind_picture_png};
 #[cfg(feature = "render")]
 pub use png::{drawing_pixmap, render_png};

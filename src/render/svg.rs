@@ -28,10 +28,17 @@ pub fn render_svg(scene: &Scene<'_>) -> Result<String, RenderError> {
 /// Writes a laid-out drawing as SVG.
 pub fn drawing_svg(d: &Drawing) -> Result<String, RenderError> {
     let mut s = String::new();
+    // The transform as data attributes: x_min, y_max, px/m, offset (see MapTransform).
+    let transform = d.transform.map_or_else(String::new, |t| {
+        format!(
+            " data-x-min=\"{}\" data-y-max=\"{}\" data-px-per-m=\"{}\" data-offset=\"{} {}\"",
+            t.x_min, t.y_max, t.px_per_m, t.offset[0], t.offset[1]
+        )
+    });
     let _ = writeln!(
         s,
         "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"{w}\" height=\"{h}\" \
-         viewBox=\"0 0 {w} {h}\" font-family=\"DejaVu Sans Mono, monospace\">",
+         viewBox=\"0 0 {w} {h}\" font-family=\"DejaVu Sans Mono, monospace\"{transform}>",
         w = d.width,
         h = d.height
     );
@@ -278,6 +285,32 @@ mod tests {
             options: &options,
         })
         .unwrap()
+    }
+
+    #[test]
+    fn the_root_carries_the_transform_so_metres_can_be_placed() {
+        let nrg = crate::fixtures::corridor_building(2);
+        let options = RenderOptions {
+            px_per_m: Some(25.0),
+            ..RenderOptions::default()
+        };
+        let svg = render_svg(&Scene {
+            nrg: &nrg,
+            map: None,
+            route: None,
+            diff: None,
+            options: &options,
+        })
+        .unwrap();
+        let attr = |name: &str| {
+            let rest = svg.split(&format!(" {name}=\"")).nth(1).unwrap();
+            rest.split('"').next().unwrap().to_string()
+        };
+        assert_eq!(attr("data-px-per-m"), "25");
+        assert_eq!(attr("data-x-min"), "0");
+        assert_eq!(attr("data-y-max"), "7");
+        // Room 10's anchor (2, 4.6) → (20 + 2·25, 20 + 2.4·25) = (70, 80): its node is there.
+        assert!(svg.contains("class=\"node\" data-space=\"10\" cx=\"70\" cy=\"80\""));
     }
 
     #[test]
