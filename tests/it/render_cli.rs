@@ -111,31 +111,34 @@ fn render_cli_bad_inputs_are_errors_not_panics() {
     assert!(!dir.path().join("nrgdb.sqlite").exists());
 }
 
-/// A small map: two rooms joined by a door gap, as a PGM + YAML.
+/// A small map: two 1.8 m rooms joined by a door gap, as a PGM + YAML.
 fn write_map(dir: &std::path::Path, stem: &str) {
-    let rows = [
-        "####################",
-        "#........#.........#",
-        "#........#.........#",
-        "#........#.........#",
-        "#..................#",
-        "#..................#",
-        "#........#.........#",
-        "#........#.........#",
-        "#........#.........#",
-        "####################",
-    ];
-    let (w, h) = (rows[0].len(), rows.len());
+    let (w, h) = (40usize, 20usize);
     let mut pgm = format!("P5\n{w} {h}\n255\n").into_bytes();
-    for r in rows {
-        pgm.extend(r.bytes().map(|c| if c == b'#' { 0 } else { 254 }));
+    for y in 0..h {
+        for x in 0..w {
+            pgm.push(
+                if is_wall(x, y, w, h) && !(x == 19 && (8..12).contains(&y)) {
+                    0
+                } else {
+                    254
+                },
+            );
+        }
     }
     std::fs::write(dir.join(format!("{stem}.pgm")), pgm).unwrap();
     std::fs::write(
         dir.join(format!("{stem}.yaml")),
-        format!("image: {stem}.pgm\nresolution: 0.25\norigin: [0.0, 0.0, 0.0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n"),
+        format!(
+            "image: {stem}.pgm\nresolution: 0.1\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n\
+             occupied_thresh: 0.65\nfree_thresh: 0.196\n"
+        ),
     )
     .unwrap();
+}
+
+fn is_wall(x: usize, y: usize, w: usize, h: usize) -> bool {
+    x == 0 || y == 0 || x == w - 1 || y == h - 1 || x == 19
 }
 
 #[test]
@@ -178,4 +181,53 @@ fn extract_png_shortcut_and_batch_into_out_dir() {
     }
     // Piped: no progress bar escape codes on stderr.
     assert!(!String::from_utf8_lossy(&out.stderr).contains('\u{1b}'));
+}
+
+#[test]
+fn eval_over_a_folder_scores_maps_with_a_ground_truth_and_skips_the_rest() {
+    let dir = tempfile::tempdir().unwrap();
+    let maps = dir.path().join("maps");
+    std::fs::create_dir(&maps).unwrap();
+    write_map(&maps, "a");
+    write_map(&maps, "b");
+    // a's ground truth: the two rooms, the doorway (column 19) closed by a dark line.
+    let gt = image::GrayImage::from_fn(40, 20, |x, y| {
+        image::Luma([if is_wall(x as usize, y as usize, 40, 20) {
+            0
+        } else {
+            255
+        }])
+    });
+    gt.save(maps.join("a_gt.png")).unwrap();
+    let out = nrgdb(dir.path(), &["eval", "maps"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{text}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let row = text.lines().find(|l| l.starts_with("a ")).unwrap();
+    let numbers: Vec<f64> = row
+        .split_whitespace()
+        .filter_map(|w| w.parse().ok())
+        .collect();
+    assert_eq!(numbers.len(), 8, "{row}");
+    assert!(numbers[0] > 50.0, "room recall {row}");
+    assert!(text.contains("mean of 1"), "{text}");
+    assert!(text.contains("b: skipped, no b_gt.png"), "{text}");
+    let out = nrgdb(dir.path(), &["eval", "maps", "--json"]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v.as_array().map(Vec::len), Some(1));
+    // --gt names one file: refused with several maps.
+    let out = nrgdb(
+        dir.path(),
+        &[
+            "eval",
+            "maps/a.yaml",
+            "maps/b.yaml",
+            "--gt",
+            "maps/a_gt.png",
+        ],
+    );
+    assert_eq!(out.status.code(), Some(2));
 }
