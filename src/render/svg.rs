@@ -52,7 +52,7 @@ pub fn drawing_svg(d: &Drawing) -> Result<String, RenderError> {
                  patternTransform=\"rotate({a})\"><line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"{sp}\" \
                  stroke=\"{c}\" stroke-opacity=\"{o}\" stroke-width=\"{w}\"/></pattern>",
                 sp = num(h.spacing),
-                a = num(h.angle_deg - 90.0),
+                a = num(90.0 - h.angle_deg),
                 c = h.colour.hex(),
                 o = num(h.colour.opacity()),
                 w = num(h.width),
