@@ -268,13 +268,7 @@ fn route_overlay(nrg: &Nrg, from: &str, to: &str) -> miette::Result<Option<Route
     let routes = shortest_route(&RouteGraph::new(nrg), nrg, &request, &Budget::unlimited())
         .into_diagnostic()
         .wrap_err_with(|| format!("--route {from} {to}"))?;
-    Ok(routes.into_iter().next().map(|r| RouteOverlay {
-        doors: r
-            .doors
-            .iter()
-            .filter_map(|id| nrg.space(*id).map(|s| s.anchor))
-            .collect(),
-        waypoints: r.waypoints,
-        length_m: r.length_m,
-    }))
+    Ok(routes
+        .first()
+        .map(|r| RouteOverlay::along(nrg, &r.spaces, r.length_m)))
 }

@@ -76,6 +76,31 @@ pub struct RouteOverlay {
     pub length_m: f64,
 }
 
+impl RouteOverlay {
+    /// The overlay of a path of spaces: waypoints at their anchors, the door
+    /// spaces among them marked; unknown ids are skipped.
+    ///
+    /// ```
+    /// use nrgdb::model::SpaceId;
+    /// let nrg = nrgdb::fixtures::corridor_building(2);
+    /// let r = nrgdb::render::RouteOverlay::along(&nrg, &[SpaceId(10), SpaceId(10_000), SpaceId(1)], 3.6);
+    /// assert_eq!((r.waypoints.len(), r.doors.len()), (3, 1));
+    /// ```
+    pub fn along(nrg: &Nrg, path: &[SpaceId], length_m: f64) -> RouteOverlay {
+        let spaces: Vec<&crate::model::Space> =
+            path.iter().filter_map(|id| nrg.space(*id)).collect();
+        RouteOverlay {
+            waypoints: spaces.iter().map(|s| s.anchor).collect(),
+            doors: spaces
+                .iter()
+                .filter(|s| s.kind == SpaceKind::Door)
+                .map(|s| s.anchor)
+                .collect(),
+            length_m,
+        }
+    }
+}
+
 /// One space of a diff overlay: its outline and where to put its label.
 #[derive(Debug, Clone, PartialEq)]
 pub struct OverlaySpace {

@@ -1,0 +1,124 @@
+//! The web viewer end to end: the server in-process on an ephemeral port,
+//! headless Chromium loading `/?map=building&from=10&to=12`, which makes
+//! the page fetch the SVG and the route and draw it; the DOM Chromium
+//! dumps must hold the route polyline. Skips with a notice when Chromium
+//! is missing (scripts/install-test-tools.sh installs it), unless
+//! NRGDB_REQUIRE_SHARED=1.
+
+use std::path::Path;
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use crate::server_client::TestServer;
+
+const CHROMIUM: &str = "/usr/bin/chromium";
+
+fn chromium_or_skip() -> Option<&'static str> {
+    if Path::new(CHROMIUM).exists() {
+        return Some(CHROMIUM);
+    }
+    if std::env::var("NRGDB_REQUIRE_SHARED").as_deref() == Ok("1") {
+        panic!("NRGDB_REQUIRE_SHARED=1 but {CHROMIUM} is missing (run scripts/install-test-tools.sh)");
+    }
+    eprintln!("notice: skipping the viewer test, {CHROMIUM} not found (run scripts/install-test-tools.sh)");
+    None
+}
+
+/// Runs headless Chromium on `url` and returns the DOM it dumps after the
+/// page's requests settle (virtual time budget), killing it after 90 s.
+fn dump_dom(chromium: &str, url: &str) -> String {
+    let profile = tempfile::tempdir().unwrap();
+    let mut child = Command::new(chromium)
+        .args([
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--disable-quic",
+            "--no-first-run",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--disable-sync",
+            "--disable-dev-shm-usage",
+            "--virtual-time-budget=15000",
+            "--window-size=1200,900",
+        ])
+        .arg(format!("--user-data-dir={}", profile.path().display()))
+        .arg("--dump-dom")
+        .arg(url)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let started = Instant::now();
+    loop {
+        if child.try_wait().unwrap().is_some() {
+            break;
+        }
+        if started.elapsed() > Duration::from_secs(90) {
+            let _ = child.kill();
+            break;
+        }
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    let out = child.wait_with_output().unwrap();
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// The `points` of the element with id `route`, as pairs.
+fn route_points(dom: &str) -> Vec<[f64; 2]> {
+    let Some(at) = dom.find("id=\"route\"") else {
+        return Vec::new();
+    };
+    let start = dom[..at].rfind('<').unwrap_or(0);
+    let end = at + dom[at..].find('>').unwrap_or(0);
+    let element = &dom[start..end];
+    let Some(points) = element.split("points=\"").nth(1).and_then(|p| p.split('"').next()) else {
+        return Vec::new();
+    };
+    points
+        .split_whitespace()
+        .filter_map(|xy| {
+            let (x, y) = xy.split_once(',')?;
+            Some([x.parse().ok()?, y.parse().ok()?])
+        })
+        .collect()
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn viewer_draws_a_requested_route_in_headless_chromium() {
+    let Some(chromium) = chromium_or_skip() else {
+        return;
+    };
+    let server = TestServer::read_only().await;
+    // The page itself and the SVG it loads.
+    let page = server.get("/").await;
+    assert_eq!(page.status, 200);
+    let svg = server.get("/maps/building/revisions/1/svg?route=10,12").await;
+    assert_eq!(svg.status, 200);
+    let url = format!("http://{}/?map=building&from=10&to=12", server.addr);
+    let dom = tokio::task::spawn_blocking({
+        let chromium = chromium.to_string();
+        move || dump_dom(&chromium, &url)
+    })
+    .await
+    .unwrap();
+    assert!(dom.contains("data-state=\"route-drawn\""), "the page did not draw the route:\n{}", &dom[..dom.len().min(3000)]);
+    let points = route_points(&dom);
+    // Room 10 → its door → corridor → door of room 12 → room 12.
+    assert_eq!(points.len(), 5, "{points:?}");
+    // The first point is room 10's anchor (2, 4.6) in the page's SVG pixels:
+    // it sits on room 10's node, which the server drew.
+    let node = dom
+        .split("class=\"node\" data-space=\"10\"")
+        .nth(1)
+        .and_then(|rest| rest.split("/>").next())
+        .unwrap_or_default()
+        .to_string();
+    let attr = |n: &str| -> f64 {
+        node.split(&format!("{n}=\"")).nth(1).and_then(|v| v.split('"').next()).and_then(|v| v.parse().ok()).unwrap_or(f64::NAN)
+    };
+    assert!((points[0][0] - attr("cx")).abs() < 0.01 && (points[0][1] - attr("cy")).abs() < 0.01, "{points:?} vs {node}");
+    // The side panel shows the route's length and steps.
+    assert!(dom.contains("From 10 to 12:"), "no route summary");
+    server.stop().await;
+}
