@@ -154,7 +154,7 @@ pub enum Item {
         /// What it is.
         tag: Tag,
     },
-    /// A line of text (ASCII is drawn in PNG; other characters as `?`).
+    /// A line of text (PNG draws ASCII and Latin-1; other characters as `?`).
     Text {
         /// Baseline position.
         at: [f64; 2],

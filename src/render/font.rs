@@ -1,10 +1,10 @@
 //! Text for the PNG back end: the public-domain 8×8 bitmap font of the
-//! `font8x8` crate (basic Latin), scaled by whole pixels, with a one-pixel
+//! `font8x8` crate (ASCII and Latin-1), scaled by whole pixels, with a one-pixel
 //! white halo so labels stay readable over any fill. tiny-skia has no text;
 //! a bitmap font keeps the output identical on every machine (no font
 //! files, no hinting), which the golden-image tests rely on.
 
-use font8x8::legacy::BASIC_LEGACY;
+use font8x8::legacy::{BASIC_LEGACY, LATIN_LEGACY};
 use tiny_skia::Pixmap;
 
 use super::drawing::{Anchor, Rgba};
@@ -19,15 +19,16 @@ pub fn text_width_px(text: &str, size: f64) -> f64 {
     (text.chars().count() as u32 * 8 * font_scale(size)) as f64
 }
 
-/// The glyph rows of `c` (top row first, bit 0 = leftmost pixel); `?`
-/// for anything outside printable ASCII.
+/// The glyph rows of `c` (top row first, bit 0 = leftmost pixel): ASCII
+/// and Latin-1 (ä, é, ß, …); `?` for anything else.
 fn glyph(c: char) -> [u8; 8] {
-    let code = if (' '..='~').contains(&c) {
-        c as usize
-    } else {
-        '?' as usize
-    };
-    BASIC_LEGACY.get(code).copied().unwrap_or([0; 8])
+    let code = c as usize;
+    match c {
+        ' '..='~' => BASIC_LEGACY.get(code).copied(),
+        '\u{a0}'..='\u{ff}' => LATIN_LEGACY.get(code - 0xa0).copied(),
+        _ => BASIC_LEGACY.get('?' as usize).copied(),
+    }
+    .unwrap_or([0; 8])
 }
 
 /// Draws `text` with its baseline at `at`.
@@ -124,5 +125,7 @@ mod tests {
         );
         assert_eq!(text_width_px("abc", 10.0), 24.0);
         assert_eq!(font_scale(16.0), 2);
+        assert_ne!(glyph('ü'), glyph('?'));
+        assert_eq!(glyph('→'), glyph('?'));
     }
 }
