@@ -191,10 +191,12 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     let Some(map) = inputs.first() else {
         miette::bail!("no map given (nrgdb extract MAP.yaml)");
     };
+    let spinner = progress::spinner(format!("extracting {}", map.display()));
     let (grid, params) = args.map.load(map)?;
     let x = extract(&grid, &params)
         .into_diagnostic()
         .wrap_err_with(|| format!("{}: extraction failed", map.display()))?;
+    spinner.finish_and_clear();
     // Encode everything before writing anything, so a failure leaves no half output.
     let gml = args
         .out
