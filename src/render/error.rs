@@ -30,6 +30,14 @@ pub enum RenderError {
     /// A coordinate of the model is not finite.
     #[error("space {0} has a coordinate that is not a finite number (check the model file)")]
     NotFinite(crate::model::SpaceId),
+    /// The picture's memory could not be had.
+    #[error("cannot allocate a {width}×{height} px picture (lower the scale)")]
+    Allocate {
+        /// Width in pixels.
+        width: u32,
+        /// Height in pixels.
+        height: u32,
+    },
     /// PNG encoding failed.
     #[error("cannot encode the PNG: {0}")]
     Encode(String),

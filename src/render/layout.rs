@@ -66,8 +66,10 @@ pub fn layout(scene: &Scene<'_>) -> Result<Drawing, RenderError> {
             width: width as u64,
             height: height as u64,
             limit: opts.max_px,
-            suggest: s * (limit - 2.0 * MARGIN_PX - legend_w - bar_h - TITLE_HEIGHT_PX).max(1.0)
-                / map_w.max(map_h),
+            // The scale at which the map area fits beside the fixed parts.
+            suggest: ((limit - 2.0 * MARGIN_PX - legend_w) / span_w)
+                .min((limit - top - MARGIN_PX - bar_h) / span_h)
+                .max(0.1),
         });
     }
     let t = MapTransform {
@@ -402,7 +404,25 @@ mod tests {
             diff: None,
             options: &o,
         });
-        assert!(matches!(err, Err(RenderError::TooLarge { .. })));
+        let Err(RenderError::TooLarge { suggest, .. }) = err else {
+            panic!("{err:?}")
+        };
+        // The suggested scale fits.
+        let o = opts(suggest);
+        let d = layout(&Scene {
+            nrg: &nrg,
+            map: None,
+            route: None,
+            diff: None,
+            options: &o,
+        })
+        .unwrap();
+        assert!(
+            d.width <= 8_192 && d.height <= 8_192,
+            "{}×{}",
+            d.width,
+            d.height
+        );
         let o = opts(-1.0);
         let err = layout(&Scene {
             nrg: &nrg,

@@ -32,11 +32,9 @@ pub fn render_png(scene: &Scene<'_>) -> Result<Vec<u8>, RenderError> {
 
 /// Rasterises a laid-out drawing.
 pub fn drawing_pixmap(d: &Drawing) -> Result<Pixmap, RenderError> {
-    let mut pixmap = Pixmap::new(d.width, d.height).ok_or(RenderError::TooLarge {
-        width: u64::from(d.width),
-        height: u64::from(d.height),
-        limit: 0,
-        suggest: 0.0,
+    let mut pixmap = Pixmap::new(d.width, d.height).ok_or(RenderError::Allocate {
+        width: d.width,
+        height: d.height,
     })?;
     let [r, g, b, a] = d.background.0;
     pixmap.fill(tiny_skia::Color::from_rgba8(r, g, b, a));

@@ -56,7 +56,7 @@ impl Default for RenderOptions {
         RenderOptions {
             px_per_m: None,
             target_px: 1200.0,
-            max_px: 16_384,
+            max_px: 8_192,
             labels: LabelMode::Names,
             legend: true,
             graph: true,
