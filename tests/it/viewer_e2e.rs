@@ -18,9 +18,13 @@ fn chromium_or_skip() -> Option<&'static str> {
         return Some(CHROMIUM);
     }
     if std::env::var("NRGDB_REQUIRE_SHARED").as_deref() == Ok("1") {
-        panic!("NRGDB_REQUIRE_SHARED=1 but {CHROMIUM} is missing (run scripts/install-test-tools.sh)");
+        panic!(
+            "NRGDB_REQUIRE_SHARED=1 but {CHROMIUM} is missing (run scripts/install-test-tools.sh)"
+        );
     }
-    eprintln!("notice: skipping the viewer test, {CHROMIUM} not found (run scripts/install-test-tools.sh)");
+    eprintln!(
+        "notice: skipping the viewer test, {CHROMIUM} not found (run scripts/install-test-tools.sh)"
+    );
     None
 }
 
@@ -72,7 +76,11 @@ fn route_points(dom: &str) -> Vec<[f64; 2]> {
     let start = dom[..at].rfind('<').unwrap_or(0);
     let end = at + dom[at..].find('>').unwrap_or(0);
     let element = &dom[start..end];
-    let Some(points) = element.split("points=\"").nth(1).and_then(|p| p.split('"').next()) else {
+    let Some(points) = element
+        .split("points=\"")
+        .nth(1)
+        .and_then(|p| p.split('"').next())
+    else {
         return Vec::new();
     };
     points
@@ -93,7 +101,9 @@ async fn viewer_draws_a_requested_route_in_headless_chromium() {
     // The page itself and the SVG it loads.
     let page = server.get("/").await;
     assert_eq!(page.status, 200);
-    let svg = server.get("/maps/building/revisions/1/svg?route=10,12").await;
+    let svg = server
+        .get("/maps/building/revisions/1/svg?route=10,12")
+        .await;
     assert_eq!(svg.status, 200);
     let url = format!("http://{}/?map=building&from=10&to=12", server.addr);
     let dom = tokio::task::spawn_blocking({
@@ -102,7 +112,11 @@ async fn viewer_draws_a_requested_route_in_headless_chromium() {
     })
     .await
     .unwrap();
-    assert!(dom.contains("data-state=\"route-drawn\""), "the page did not draw the route:\n{}", &dom[..dom.len().min(3000)]);
+    assert!(
+        dom.contains("data-state=\"route-drawn\""),
+        "the page did not draw the route:\n{}",
+        &dom[..dom.len().min(3000)]
+    );
     let points = route_points(&dom);
     // Room 10 → its door → corridor → door of room 12 → room 12.
     assert_eq!(points.len(), 5, "{points:?}");
@@ -115,10 +129,70 @@ async fn viewer_draws_a_requested_route_in_headless_chromium() {
         .unwrap_or_default()
         .to_string();
     let attr = |n: &str| -> f64 {
-        node.split(&format!("{n}=\"")).nth(1).and_then(|v| v.split('"').next()).and_then(|v| v.parse().ok()).unwrap_or(f64::NAN)
+        node.split(&format!("{n}=\""))
+            .nth(1)
+            .and_then(|v| v.split('"').next())
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(f64::NAN)
     };
-    assert!((points[0][0] - attr("cx")).abs() < 0.01 && (points[0][1] - attr("cy")).abs() < 0.01, "{points:?} vs {node}");
+    assert!(
+        (points[0][0] - attr("cx")).abs() < 0.01 && (points[0][1] - attr("cy")).abs() < 0.01,
+        "{points:?} vs {node}"
+    );
     // The side panel shows the route's length and steps.
     assert!(dom.contains("From 10 to 12:"), "no route summary");
+    server.stop().await;
+}
+
+/// The page's client coordinates of the centre of a space's polygon.
+fn centre_of(browser: &mut crate::viewer_cdp::Browser, id: u32) -> (f64, f64) {
+    let v = browser.eval(&format!(
+        "(() => {{ const r = document.querySelector('#stage .space[data-space=\"{id}\"]').getBoundingClientRect(); \
+         return [r.left + r.width / 2, r.top + r.height / 2]; }})()"
+    ));
+    (v[0].as_f64().unwrap(), v[1].as_f64().unwrap())
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn viewer_clicks_show_details_then_a_route() {
+    let Some(chromium) = chromium_or_skip() else {
+        return;
+    };
+    let server = TestServer::read_only().await;
+    let url = format!("http://{}/?map=building", server.addr);
+    let chromium = chromium.to_string();
+    let outcome = tokio::task::spawn_blocking(move || {
+        let mut b = crate::viewer_cdp::Browser::start(&chromium);
+        b.call("Page.enable", serde_json::json!({}));
+        b.call("Page.navigate", serde_json::json!({ "url": url }));
+        let ready = b.wait_for("document.body && document.body.dataset.state === 'ready'", Duration::from_secs(30));
+        assert!(ready, "the page never became ready: {}", b.eval("document.body.outerHTML.slice(0, 2000)"));
+        // Click room 10: its details appear.
+        let (x, y) = centre_of(&mut b, 10);
+        b.click(x, y);
+        let shown = b.wait_for("document.getElementById('details').textContent.includes('Office 1')", Duration::from_secs(10));
+        let details = b.eval("document.getElementById('details').textContent");
+        // Then room 12: the route is drawn.
+        let (x, y) = centre_of(&mut b, 12);
+        b.click(x, y);
+        let drawn = b.wait_for("document.body.dataset.state === 'route-drawn'", Duration::from_secs(10));
+        let points = b.eval("document.getElementById('route') && document.getElementById('route').getAttribute('points')");
+        let summary = b.eval("document.getElementById('route-info').textContent");
+        (shown, details, drawn, points, summary)
+    })
+    .await
+    .unwrap();
+    let (shown, details, drawn, points, summary) = outcome;
+    assert!(shown, "no details after clicking room 10: {details}");
+    assert!(drawn, "no route after clicking rooms 10 and 12: {summary}");
+    assert_eq!(
+        points.as_str().unwrap_or("").split(' ').count(),
+        5,
+        "{points}"
+    );
+    assert!(
+        summary.as_str().unwrap_or("").starts_with("From 10 to 12:"),
+        "{summary}"
+    );
     server.stop().await;
 }
