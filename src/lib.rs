@@ -25,5 +25,7 @@ pub mod model;
 pub mod query;
 pub mod render;
 pub mod route;
+#[cfg(feature = "server")]
+pub mod server;
 pub mod sim;
 pub mod store;

@@ -25,6 +25,7 @@ mod progress;
 pub mod query;
 pub mod render;
 pub mod repl;
+mod serve;
 mod simulate;
 
 pub use model_file::{load_model, write_model};
@@ -84,6 +85,8 @@ pub enum Command {
     Log(maps::LogArgs),
     /// Draw a model as a picture (PNG or SVG): spaces by kind over the map, graph, route, diff.
     Render(render::Args),
+    /// Serve the database as an HTTP JSON navigation API.
+    Serve(serve::Args),
 }
 
 /// Runs one subcommand, writing its report to `out`.
@@ -105,6 +108,7 @@ pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
         Command::Name(args) => name::run(args, out),
         Command::Log(args) => maps::run_log(args, out),
         Command::Render(args) => render::run(args, out),
+        Command::Serve(args) => serve::run(args, out),
     }
 }
 

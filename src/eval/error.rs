@@ -15,4 +15,10 @@ pub enum EvalError {
         /// The GT file.
         path: PathBuf,
     },
+    /// The simulation behind [`evaluate_simulated`](super::evaluate_simulated) failed.
+    #[error(transparent)]
+    Sim(#[from] crate::sim::SimError),
+    /// The extraction being scored failed.
+    #[error(transparent)]
+    Extract(#[from] crate::extract::ExtractError),
 }

@@ -1,7 +1,8 @@
 //! Free-space cleaning: the free mask without LiDAR rays leaking into unknown
 //! space, speckle and tiny islands.
 
-use crate::grid::{Cell, OccupancyGrid};
+use super::furniture::free_without_furniture;
+use crate::grid::OccupancyGrid;
 use crate::imaging::{Mask, dilate, label_components, open};
 
 /// The cleaned free space and the free pixels it may grow back into.
@@ -12,17 +13,17 @@ pub(crate) struct FreeSpace {
     pub reachable: Vec<bool>,
 }
 
-/// Opens the free mask with a disk of `noise_radius_m` (rays and speckle are
-/// narrower than its diameter) and drops 8-connected components under
-/// `min_area_m2`.
-pub(crate) fn clean_free(grid: &OccupancyGrid, noise_radius_m: f64, min_area_m2: f64) -> FreeSpace {
-    let data = grid
-        .cells
-        .iter()
-        .map(|c| if *c == Cell::Free { 255 } else { 0 })
-        .collect();
-    let free = Mask::from_raw(grid.width, grid.height, data)
-        .unwrap_or_else(|| Mask::new(grid.width, grid.height));
+/// Fills furniture islands no wider than `furniture_m` (see
+/// [`free_without_furniture`]), opens the free mask with a disk of
+/// `noise_radius_m` (rays and speckle are narrower than its diameter) and
+/// drops 8-connected components under `min_area_m2`.
+pub(crate) fn clean_free(
+    grid: &OccupancyGrid,
+    noise_radius_m: f64,
+    min_area_m2: f64,
+    furniture_m: f64,
+) -> FreeSpace {
+    let free = free_without_furniture(grid, furniture_m / grid.resolution);
     let r = noise_radius_m / grid.resolution;
     let mut clean = if r >= 0.5 {
         open(&free, r)
@@ -64,7 +65,7 @@ mod tests {
              ##########????",
             0.1,
         );
-        let f = clean_free(&g, 0.1, 0.05);
+        let f = clean_free(&g, 0.1, 0.05, 0.0);
         let w = g.width as usize;
         assert_eq!(f.clean.as_raw()[2 * w + 10], 0, "ray removed");
         assert_eq!(f.clean.as_raw()[4 * w + 11], 0, "island removed");

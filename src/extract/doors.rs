@@ -1,8 +1,8 @@
 //! Doors: narrow borders between two basins become door spaces.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap, HashSet, VecDeque};
 
-use crate::imaging::{Labels, Mask, squared_distance_to_foreground, watershed};
+use crate::imaging::Labels;
 
 /// One border between two regions.
 #[derive(Debug, Clone)]
@@ -15,27 +15,30 @@ pub(crate) struct Border {
     pub pixels: Vec<u32>,
 }
 
+/// A 4-neighbour pair across a border: (pixel on one side, pixel on the
+/// other, half the passage width there).
+type Crossing = (u32, u32, f32);
+
 /// Every border between two labels with its passage width (twice the
-/// largest distance to an obstacle along it, plus one pixel).
+/// largest distance to an obstacle along it). Two regions may meet in
+/// several places (a room with two doorways onto one corridor): each
+/// separate stretch of border (pixels more than 2 px apart) is a border of
+/// its own.
 pub(crate) fn borders(labels: &Labels, dist: &[f32]) -> Vec<Border> {
     let (w, h) = (labels.width as usize, labels.height as usize);
     let d = &labels.data;
-    let mut map: BTreeMap<(u32, u32), Border> = BTreeMap::new();
+    // Per pair: (pixel on one side, pixel on the other, half width there).
+    let mut crossings: BTreeMap<(u32, u32), Vec<Crossing>> = BTreeMap::new();
     let mut add = |i: usize, j: usize| {
         let (a, b) = (d[i], d[j]);
         if a == 0 || b == 0 || a == b {
             return;
         }
-        let pair = (a.min(b), a.max(b));
-        let e = map.entry(pair).or_insert_with(|| Border {
-            pair,
-            width_px: 0.0,
-            pixels: Vec::new(),
-        });
-        let half = f64::from(dist[i].min(dist[j]));
-        e.width_px = e.width_px.max(2.0 * half + 1.0);
-        e.pixels.push(i as u32);
-        e.pixels.push(j as u32);
+        crossings.entry((a.min(b), a.max(b))).or_default().push((
+            i as u32,
+            j as u32,
+            dist[i].min(dist[j]),
+        ));
     };
     for y in 0..h {
         for x in 0..w {
@@ -48,36 +51,114 @@ pub(crate) fn borders(labels: &Labels, dist: &[f32]) -> Vec<Border> {
             }
         }
     }
-    map.into_values().collect()
+    let mut out = Vec::new();
+    for (pair, list) in crossings {
+        for stretch in stretches(&list, w) {
+            let half = stretch.iter().map(|&k| list[k].2).fold(0.0f32, f32::max);
+            out.push(Border {
+                pair,
+                width_px: 2.0 * f64::from(half),
+                pixels: stretch
+                    .iter()
+                    .flat_map(|&k| [list[k].0, list[k].1])
+                    .collect(),
+            });
+        }
+    }
+    out
+}
+
+/// Groups crossings whose first pixels lie within 2 px (Chebyshev) of each
+/// other, transitively; returns index lists, in order of first crossing.
+fn stretches(list: &[Crossing], w: usize) -> Vec<Vec<usize>> {
+    let at: HashMap<u32, usize> = list.iter().enumerate().map(|(k, c)| (c.0, k)).collect();
+    let mut group = vec![usize::MAX; list.len()];
+    let mut out: Vec<Vec<usize>> = Vec::new();
+    for start in 0..list.len() {
+        if group[start] != usize::MAX {
+            continue;
+        }
+        let g = out.len();
+        group[start] = g;
+        let mut members = vec![start];
+        let mut next = 0;
+        while next < members.len() {
+            let p = list[members[next]].0 as i64;
+            next += 1;
+            let (x, y) = (p % w as i64, p / w as i64);
+            for dy in -2..=2i64 {
+                for dx in -2..=2i64 {
+                    let (nx, ny) = (x + dx, y + dy);
+                    if nx < 0 || ny < 0 || nx >= w as i64 {
+                        continue;
+                    }
+                    let near = at.get(&((ny * w as i64 + nx) as u32));
+                    if let Some(&k) = near.filter(|&&k| group[k] == usize::MAX) {
+                        group[k] = g;
+                        members.push(k);
+                    }
+                }
+            }
+        }
+        members.sort_unstable();
+        out.push(members);
+    }
+    out
 }
 
 /// Cuts a door space of thickness `depth_px` across each border in `doors`,
 /// labelled `labels.count + 1 + k` for the k-th door; returns the new labels.
+/// The door grows breadth-first from its border pixels over the labelled
+/// pixels within `depth_px / 2 - 0.5` of the border (Euclidean), so two
+/// doors side by side split the band between them. Only the band is
+/// visited: a few thousand pixels, whatever the map's size.
 pub(crate) fn cut_doors(labels: &Labels, doors: &[&Border], depth_px: f64) -> Labels {
-    let (w, h) = (labels.width, labels.height);
-    let n = labels.data.len();
-    let mut seeds = Labels::new(w, h);
-    let mut border_mask = Mask::new(w, h);
+    let (w, h) = (labels.width as i64, labels.height as i64);
+    let r = (depth_px / 2.0 - 0.5).max(0.0);
+    let reach = r.floor() as i64;
+    let mut band: HashSet<u32> = HashSet::new();
+    for door in doors {
+        for &p in &door.pixels {
+            let (x, y) = (i64::from(p) % w, i64::from(p) / w);
+            for dy in -reach..=reach {
+                for dx in -reach..=reach {
+                    let (nx, ny) = (x + dx, y + dy);
+                    let inside = nx >= 0 && ny >= 0 && nx < w && ny < h;
+                    if inside && ((dx * dx + dy * dy) as f64) <= r * r {
+                        let j = (ny * w + nx) as u32;
+                        if labels.data[j as usize] != 0 {
+                            band.insert(j);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    let mut out = labels.clone();
+    let mut queue: VecDeque<u32> = VecDeque::new();
     for (k, door) in doors.iter().enumerate() {
         for &p in &door.pixels {
-            seeds.data[p as usize] = labels.count + 1 + k as u32;
-            border_mask.as_mut()[p as usize] = 255;
+            out.data[p as usize] = labels.count + 1 + k as u32;
+            if band.remove(&p) {
+                queue.push_back(p);
+            }
         }
     }
-    seeds.count = labels.count + doors.len() as u32;
-    let r = (depth_px / 2.0 - 0.5).max(0.0);
-    let sq = squared_distance_to_foreground(&border_mask);
-    let band: Vec<bool> = (0..n)
-        .map(|i| labels.data[i] != 0 && sq[i] <= r * r)
-        .collect();
-    let grown = watershed(&vec![0u16; n], &seeds, &band);
-    let mut out = labels.clone();
-    for (o, &g) in out.data.iter_mut().zip(&grown.data) {
-        if g != 0 {
-            *o = g;
+    while let Some(p) = queue.pop_front() {
+        let (x, y) = (i64::from(p) % w, i64::from(p) / w);
+        for (dx, dy) in [(-1, 0), (1, 0), (0, -1), (0, 1)] {
+            let (nx, ny) = (x + dx, y + dy);
+            if nx < 0 || ny < 0 || nx >= w || ny >= h {
+                continue;
+            }
+            let j = (ny * w + nx) as u32;
+            if band.remove(&j) {
+                out.data[j as usize] = out.data[p as usize];
+                queue.push_back(j);
+            }
         }
     }
-    out.count = seeds.count;
+    out.count = labels.count + doors.len() as u32;
     out
 }
 
@@ -100,9 +181,23 @@ mod tests {
         let b = borders(&labels, &dist);
         assert_eq!(b.len(), 1);
         assert_eq!(b[0].pair, (1, 2));
-        assert_eq!(b[0].width_px, 5.0);
+        assert_eq!(b[0].width_px, 4.0);
         let cut = cut_doors(&labels, &[&b[0]], 2.0);
         assert_eq!(cut.count, 3);
         assert_eq!(cut.data[..6], [1, 1, 3, 3, 2, 2]);
+    }
+
+    #[test]
+    fn two_doorways_between_the_same_regions_are_two_borders() {
+        // Region 1 above, 2 below, joined at columns 0-1 and 6-7 only.
+        let labels = Labels {
+            width: 8,
+            height: 2,
+            data: vec![1, 1, 1, 1, 1, 1, 1, 1, 2, 2, 0, 0, 0, 0, 2, 2],
+            count: 2,
+        };
+        let b = borders(&labels, &[1.0; 16]);
+        assert_eq!(b.len(), 2);
+        assert!(b.iter().all(|b| b.pair == (1, 2) && b.pixels.len() == 4));
     }
 }

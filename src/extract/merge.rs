@@ -1,59 +1,67 @@
 //! Merging regions smaller than a minimum area into a neighbour.
 
+use std::cmp::Reverse;
+use std::collections::{BTreeMap, BinaryHeap};
+
 use crate::imaging::{Labels, region_adjacency};
 
 /// Merges every region under `min_px` pixels into the neighbour it shares
-/// the longest border with (smallest first, repeatedly), then renumbers.
-/// Small regions with no neighbour are removed.
+/// the longest border with (ties: the larger neighbour), smallest first,
+/// until none is left; then renumbers. A merged region that is still small
+/// goes on merging. Small regions with no neighbour are removed. The region
+/// adjacency is computed once and updated as regions merge.
 pub(crate) fn merge_small(labels: &mut Labels, min_px: usize) {
-    loop {
-        let areas = labels.areas();
-        let rag = region_adjacency(labels);
-        let mut small: Vec<u32> = (1..=labels.count)
-            .filter(|&l| areas[l as usize] > 0 && areas[l as usize] < min_px)
-            .collect();
-        small.sort_by_key(|&l| areas[l as usize]);
-        let mut target = vec![0u32; labels.count as usize + 1];
-        let mut changed = false;
-        for l in small {
-            // Skip regions already used as a target or merged this round.
-            if target[l as usize] != 0 {
-                continue;
-            }
-            let best = rag
-                .iter()
-                .filter_map(|(&(a, b), &n)| {
-                    if a == l {
-                        Some((b, n))
-                    } else if b == l {
-                        Some((a, n))
-                    } else {
-                        None
-                    }
-                })
-                .filter(|&(o, _)| target[o as usize] == 0)
-                .max_by_key(|&(o, n)| (n, areas[o as usize]));
-            if let Some((o, _)) = best {
-                target[l as usize] = o;
-                target[o as usize] = o;
-                changed = true;
+    let mut area = labels.areas();
+    let n = area.len();
+    let mut nbrs: Vec<BTreeMap<u32, usize>> = vec![BTreeMap::new(); n];
+    for (&(a, b), &len) in &region_adjacency(labels) {
+        nbrs[a as usize].insert(b, len);
+        nbrs[b as usize].insert(a, len);
+    }
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    let mut heap: BinaryHeap<Reverse<(usize, u32)>> = (1..n as u32)
+        .filter(|&l| area[l as usize] > 0 && area[l as usize] < min_px)
+        .map(|l| Reverse((area[l as usize], l)))
+        .collect();
+    while let Some(Reverse((a, l))) = heap.pop() {
+        let li = l as usize;
+        if parent[li] != l || area[li] != a {
+            continue; // merged away, or grown since it was queued
+        }
+        let best = nbrs[li]
+            .iter()
+            .max_by_key(|&(&o, &len)| (len, area[o as usize]))
+            .map(|(&o, _)| o);
+        let Some(o) = best else {
+            parent[li] = 0;
+            area[li] = 0;
+            continue;
+        };
+        let oi = o as usize;
+        parent[li] = o;
+        area[oi] += area[li];
+        area[li] = 0;
+        for (k, len) in std::mem::take(&mut nbrs[li]) {
+            let ki = k as usize;
+            nbrs[ki].remove(&l);
+            if k != o {
+                *nbrs[ki].entry(o).or_insert(0) += len;
+                *nbrs[oi].entry(k).or_insert(0) += len;
             }
         }
-        if !changed {
-            // What is still small has no neighbour left to join: drop it.
-            for v in &mut labels.data {
-                if *v != 0 && areas[*v as usize] < min_px {
-                    *v = 0;
-                }
-            }
-            break;
+        if area[oi] < min_px {
+            heap.push(Reverse((area[oi], o)));
         }
-        for v in &mut labels.data {
-            let t = target[*v as usize];
-            if *v != 0 && t != 0 && t != *v {
-                *v = t;
-            }
+    }
+    let root = |mut l: u32| {
+        while parent[l as usize] != l {
+            l = parent[l as usize];
         }
+        l
+    };
+    let final_label: Vec<u32> = (0..n as u32).map(root).collect();
+    for v in &mut labels.data {
+        *v = final_label[*v as usize];
     }
     labels.compact();
 }

@@ -15,12 +15,15 @@ mod ccl;
 mod clean;
 mod doors;
 mod error;
+mod furniture;
 mod graph;
+mod interior;
 mod merge;
 mod output;
 mod params;
 mod pipeline;
 mod polygon;
+mod resample;
 mod segment;
 mod simplify;
 

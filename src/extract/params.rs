@@ -43,9 +43,25 @@ impl std::str::FromStr for Method {
 pub struct ExtractParams {
     /// Segmentation method.
     pub method: Method,
+    /// Maps finer than this are segmented on a copy coarsened by a whole
+    /// factor k to about this resolution (k × k cells to one) and the labels
+    /// are brought back to the map's pixels: k² times less work, with
+    /// polygons at the working resolution. 0 turns this off. Default 0.1 m.
+    pub working_resolution_m: f64,
     /// Free space narrower than twice this is noise (LiDAR rays leaking into
     /// unknown space, speckle) and is removed by an opening. Default 0.2 m.
     pub noise_radius_m: f64,
+    /// Obstacle islands (not joined to any wall) whose bounding box is at
+    /// most this long on both sides are furniture: rooms are segmented as if
+    /// they were free, and own the pixels under them. 0 turns this off.
+    /// Default 1.0 m: chair and table legs, boxes and pillars, but not the
+    /// 1.2 m wall pieces left between neighbouring doorways.
+    pub furniture_max_m: f64,
+    /// Unknown pockets inside the building (the insides of furniture, what
+    /// the sensor could not see) of at most this area join the spaces
+    /// around them; unknown joined to the image border is outside and stays
+    /// out. 0 turns this off. Default 4.0 m².
+    pub unknown_pocket_max_m2: f64,
     /// Free components smaller than this are dropped. Default 1.0 m².
     pub min_free_area_m2: f64,
     /// Room cores are the places farther than this from any obstacle; a
@@ -79,7 +95,10 @@ impl Default for ExtractParams {
     fn default() -> Self {
         ExtractParams {
             method: Method::Watershed,
+            working_resolution_m: 0.1,
             noise_radius_m: 0.2,
+            furniture_max_m: 1.0,
+            unknown_pocket_max_m2: 4.0,
             min_free_area_m2: 1.0,
             core_radius_m: 0.5,
             split_min_core_m2: 1.0,
@@ -98,7 +117,10 @@ impl ExtractParams {
     /// Checks that every length is finite and non-negative; returns the bad field.
     pub fn validate(&self) -> Result<(), (&'static str, f64)> {
         let fields = [
+            ("working_resolution_m", self.working_resolution_m),
             ("noise_radius_m", self.noise_radius_m),
+            ("furniture_max_m", self.furniture_max_m),
+            ("unknown_pocket_max_m2", self.unknown_pocket_max_m2),
             ("min_free_area_m2", self.min_free_area_m2),
             ("core_radius_m", self.core_radius_m),
             ("split_min_core_m2", self.split_min_core_m2),

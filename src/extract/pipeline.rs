@@ -8,8 +8,10 @@ use super::ccl::segment_ccl;
 use super::clean::clean_free;
 use super::doors::{Border, borders, cut_doors};
 use super::graph::topology;
+use super::interior::claim_enclosed_unknown;
 use super::merge::merge_small;
 use super::polygon::{bounding_boxes, outline};
+use super::resample::{coarsen, pixel_centroids, refine};
 use super::segment::segment_basins;
 use super::{ExtractError, ExtractParams, Method};
 use crate::grid::OccupancyGrid;
@@ -63,12 +65,36 @@ pub fn extract(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extractio
     params
         .validate()
         .map_err(|(name, value)| ExtractError::BadParam { name, value })?;
+    let k = (params.working_resolution_m / grid.resolution + 1e-9).floor();
+    if !(2.0..=64.0).contains(&k) {
+        return extract_at(grid, params);
+    }
+    let k = k as u32;
+    let started = Instant::now();
+    let coarse = coarsen(grid, k);
+    let coarsen_time = started.elapsed();
+    let mut x = extract_at(&coarse, params)?;
+    let started = Instant::now();
+    x.labels = refine(&x.labels, grid, k);
+    x.pixel_centroids = pixel_centroids(&x.labels);
+    x.timings.insert(0, ("coarsen", coarsen_time));
+    x.timings.push(("refine", started.elapsed()));
+    Ok(x)
+}
+
+/// [`extract`] at the grid's own resolution.
+fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction, ExtractError> {
     let res = grid.resolution;
     let mut clock = Clock {
         last: Instant::now(),
         timings: Vec::new(),
     };
-    let free = clean_free(grid, params.noise_radius_m, params.min_free_area_m2);
+    let free = clean_free(
+        grid,
+        params.noise_radius_m,
+        params.min_free_area_m2,
+        params.furniture_max_m,
+    );
     if free.clean.iter().all(|&p| p == 0) {
         return Err(ExtractError::NoSpace {
             noise_m: params.noise_radius_m,
@@ -107,7 +133,12 @@ pub fn extract(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extractio
     let doors: Vec<&Border> = all.iter().filter(|b| b.width_px <= door_px).collect();
     let door_pairs: Vec<(u32, u32)> = doors.iter().map(|b| b.pair).collect();
     let n_regions = regions.count;
-    let labels = cut_doors(&regions, &doors, (params.door_depth_m / res).max(1.0));
+    let mut labels = cut_doors(&regions, &doors, (params.door_depth_m / res).max(1.0));
+    claim_enclosed_unknown(
+        &mut labels,
+        grid,
+        (params.unknown_pocket_max_m2 / (res * res)).floor() as usize,
+    );
     clock.lap("doors");
     let shape = region_shapes(&labels, &dist);
     let topo = topology(

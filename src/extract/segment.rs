@@ -41,67 +41,36 @@ pub(crate) fn segment_basins(
 /// whose core thins out evenly, stays one marker.
 fn split_markers(mut markers: Labels, dist: &[f32], core_px: f64, split_min_px: usize) -> Labels {
     let (w, h) = (markers.width as usize, markers.height as usize);
+    let max_d = f64::from(dist.iter().copied().fold(0.0f32, f32::max));
     let mut level = core_px.max(1.0) * 1.25;
-    // Pixels above the current level, shrinking as the level rises.
-    let mut above: Vec<u32> = (0..dist.len() as u32)
-        .filter(|&i| f64::from(dist[i as usize]) > level)
-        .collect();
-    let mut stamp = vec![0u32; dist.len()];
-    let mut comp = vec![0u32; dist.len()];
-    let mut round = 0u32;
-    let mut stack = Vec::new();
-    while !above.is_empty() {
-        round += 1;
-        above.retain(|&i| f64::from(dist[i as usize]) > level);
-        // 8-connected components of the pixels above the level.
-        let mut areas: Vec<usize> = vec![0];
-        let mut parent: Vec<u32> = vec![0];
-        for &start in &above {
-            if stamp[start as usize] == round {
-                continue;
-            }
-            let id = areas.len() as u32;
-            areas.push(0);
-            parent.push(markers.data[start as usize]);
-            stamp[start as usize] = round;
-            stack.push(start as usize);
-            while let Some(i) = stack.pop() {
-                comp[i] = id;
-                areas[id as usize] += 1;
-                let (x, y) = (i % w, i / w);
-                for (dx, dy) in [
-                    (-1i64, -1i64),
-                    (0, -1),
-                    (1, -1),
-                    (-1, 0),
-                    (1, 0),
-                    (-1, 1),
-                    (0, 1),
-                    (1, 1),
-                ] {
-                    let (nx, ny) = (x as i64 + dx, y as i64 + dy);
-                    if nx < 0 || ny < 0 || nx >= w as i64 || ny >= h as i64 {
-                        continue;
-                    }
-                    let j = ny as usize * w + nx as usize;
-                    if stamp[j] != round && f64::from(dist[j]) > level {
-                        stamp[j] = round;
-                        stack.push(j);
-                    }
-                }
+    while level < max_d {
+        let threshold = level as f32;
+        let above_data = dist
+            .iter()
+            .map(|&d| if d > threshold { 255 } else { 0 })
+            .collect();
+        let above = Mask::from_raw(w as u32, h as u32, above_data)
+            .unwrap_or_else(|| Mask::new(w as u32, h as u32));
+        let comps = label_components(&above, true);
+        let n = comps.count as usize + 1;
+        let mut areas = vec![0usize; n];
+        let mut parent = vec![0u32; n];
+        for (&c, &m) in comps.data.iter().zip(&markers.data) {
+            if c != 0 {
+                areas[c as usize] += 1;
+                parent[c as usize] = m;
             }
         }
         let mut big_children = vec![0usize; markers.count as usize + 1];
-        for c in 1..areas.len() {
+        for c in 1..n {
             if areas[c] >= split_min_px && parent[c] != 0 {
                 big_children[parent[c] as usize] += 1;
             }
         }
-        if big_children.iter().any(|&n| n >= 2) {
+        if big_children.iter().any(|&k| k >= 2) {
             let base = markers.count;
-            for (i, m) in markers.data.iter_mut().enumerate() {
+            for (m, &c) in markers.data.iter_mut().zip(&comps.data) {
                 if *m != 0 && big_children[*m as usize] >= 2 {
-                    let c = if stamp[i] == round { comp[i] } else { 0 };
                     *m = if c != 0 && areas[c as usize] >= split_min_px {
                         base + c
                     } else {
@@ -109,7 +78,7 @@ fn split_markers(mut markers: Labels, dist: &[f32], core_px: f64, split_min_px: 
                     };
                 }
             }
-            markers.count = base + areas.len() as u32;
+            markers.count = base + comps.count;
             markers.compact();
         }
         level *= 1.25;

@@ -1,6 +1,10 @@
-//! Connected-component labelling (via imageproc's union–find).
-
-use imageproc::region_labelling::{Connectivity, connected_components};
+//! Connected-component labelling over runs of foreground pixels.
+//!
+//! Written here rather than taken from imageproc's `connected_components`:
+//! that one unites pixel by pixel and was a fifth of the extraction's time
+//! on the largest dev map (perf, office_g); uniting runs does a few
+//! thousand unions instead of millions. (imageproc 0.27 also panics on a
+//! one-pixel foreground image.) The tests compare both.
 
 use super::Mask;
 
@@ -58,7 +62,8 @@ impl Labels {
     }
 }
 
-/// Labels the foreground components of `mask`, 8-connected if `eight` else 4-connected.
+/// Labels the foreground components of `mask`, 8-connected if `eight` else
+/// 4-connected, numbered 1..=n in raster order of their first pixel.
 ///
 /// ```
 /// use nrgdb::imaging::{binarize, label_components};
@@ -66,23 +71,99 @@ impl Labels {
 /// assert_eq!(label_components(&m, true).data, vec![1, 0, 2, 2, 0]);
 /// ```
 pub fn label_components(mask: &Mask, eight: bool) -> Labels {
-    let conn = if eight {
-        Connectivity::Eight
-    } else {
-        Connectivity::Four
-    };
-    let img = connected_components(mask, conn, image::Luma([0u8]));
-    let (width, height) = img.dimensions();
-    let data = img.into_raw();
-    let count = data.iter().copied().max().unwrap_or(0);
-    let mut labels = Labels {
+    let (width, height) = mask.dimensions();
+    let (w, h) = (width as usize, height as usize);
+    let src = mask.as_raw();
+    let reach = usize::from(eight);
+    // Runs of foreground per row: (start, end) exclusive, in raster order.
+    let mut runs: Vec<(u32, u32)> = Vec::new();
+    let mut row_first = Vec::with_capacity(h + 1);
+    let mut sets = RunSets::default();
+    for y in 0..h {
+        let row = &src[y * w..(y + 1) * w];
+        let first = runs.len();
+        row_first.push(first);
+        let prev = row_first
+            .get(y.wrapping_sub(1))
+            .map_or(first..first, |&p| p..first);
+        let mut q = prev.start;
+        let mut x = 0;
+        while x < w {
+            match row[x..].iter().position(|&p| p != 0) {
+                Some(off) => x += off,
+                None => break,
+            }
+            let x0 = x;
+            x += row[x..].iter().position(|&p| p == 0).unwrap_or(w - x);
+            let id = runs.len();
+            runs.push((x0 as u32, x as u32));
+            sets.add();
+            // Previous-row runs that touch [x0 - reach, x + reach).
+            while q < prev.end && (runs[q].1 as usize) + reach <= x0 {
+                q += 1;
+            }
+            let mut k = q;
+            while k < prev.end && (runs[k].0 as usize) < x + reach {
+                sets.union(id, k);
+                k += 1;
+            }
+        }
+    }
+    row_first.push(runs.len());
+    // Number the roots in order of first appearance and paint the runs.
+    let mut label_of_root = vec![0u32; runs.len()];
+    let mut count = 0u32;
+    let mut data = vec![0u32; w * h];
+    for y in 0..h {
+        for (id, &(x0, x1)) in runs
+            .iter()
+            .enumerate()
+            .take(row_first[y + 1])
+            .skip(row_first[y])
+        {
+            let root = sets.find(id);
+            if label_of_root[root] == 0 {
+                count += 1;
+                label_of_root[root] = count;
+            }
+            data[y * w + x0 as usize..y * w + x1 as usize].fill(label_of_root[root]);
+        }
+    }
+    Labels {
         width,
         height,
         data,
         count,
-    };
-    labels.compact();
-    labels
+    }
+}
+
+/// Union–find over run indices, with path halving and union by index (the
+/// smaller index, which appears first in raster order, becomes the root).
+#[derive(Default)]
+struct RunSets {
+    parent: Vec<usize>,
+}
+
+impl RunSets {
+    fn add(&mut self) {
+        self.parent.push(self.parent.len());
+    }
+
+    fn find(&mut self, mut i: usize) -> usize {
+        while self.parent[i] != i {
+            self.parent[i] = self.parent[self.parent[i]];
+            i = self.parent[i];
+        }
+        i
+    }
+
+    fn union(&mut self, a: usize, b: usize) {
+        let (ra, rb) = (self.find(a), self.find(b));
+        if ra != rb {
+            let (lo, hi) = (ra.min(rb), ra.max(rb));
+            self.parent[hi] = lo;
+        }
+    }
 }
 
 #[cfg(test)]
@@ -101,5 +182,44 @@ mod tests {
         let l8 = label_components(&m, true);
         assert_eq!(l8.count, 2);
         assert_eq!(l8.areas(), vec![9, 2, 1]);
+    }
+
+    #[test]
+    fn one_pixel_image() {
+        // imageproc 0.27's connected_components panics on this one.
+        let m = Mask::from_pixel(1, 1, image::Luma([255]));
+        assert_eq!(label_components(&m, true).data, vec![1]);
+    }
+
+    #[test]
+    fn agrees_with_imageproc_on_random_masks() {
+        use imageproc::region_labelling::{Connectivity, connected_components};
+        let mut seed = 7u64;
+        for round in 0..40 {
+            let (w, h) = (2 + round % 13, 2 + (round * 7) % 11);
+            let m = Mask::from_fn(w, h, |_, _| {
+                seed = seed
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                image::Luma([if (seed >> 33).is_multiple_of(3) {
+                    0
+                } else {
+                    255
+                }])
+            });
+            for (eight, conn) in [(true, Connectivity::Eight), (false, Connectivity::Four)] {
+                let ours = label_components(&m, eight);
+                let mut theirs_data = connected_components(&m, conn, image::Luma([0u8])).into_raw();
+                let count = theirs_data.iter().copied().max().unwrap_or(0);
+                let mut theirs = Labels {
+                    width: w,
+                    height: h,
+                    data: std::mem::take(&mut theirs_data),
+                    count,
+                };
+                theirs.compact();
+                assert_eq!(ours, theirs, "{w}x{h} eight={eight}");
+            }
+        }
     }
 }

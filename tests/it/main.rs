@@ -7,6 +7,7 @@ mod indoorgml_fuzz;
 mod indoorgml_roundtrip;
 mod indoorgml_samples;
 mod sim;
+mod sim_accuracy;
 mod support;
 
 mod demo;
@@ -19,7 +20,14 @@ mod route_props;
 
 mod render_cli;
 mod render_golden;
+mod viewer_cdp;
+mod viewer_e2e;
 
 mod store;
 mod store_building;
 mod store_cli;
+
+mod server_client;
+mod server_openapi;
+mod server_read;
+mod server_write;

@@ -25,13 +25,27 @@ pub const INDEX_HTML: &str = include_str!("index.html");
 
 /// Query parameters of the SVG endpoint.
 pub const SVG_PARAMS: [ParamDoc; 2] = [
-    q("route", "string", false, "draw the shortest route FROM,TO (space ids or names)"),
-    q("diff", "string", false, "draw what changed since this revision number"),
+    q(
+        "route",
+        "string",
+        false,
+        "draw the shortest route FROM,TO (space ids or names)",
+    ),
+    q(
+        "diff",
+        "string",
+        false,
+        "draw what changed since this revision number",
+    ),
 ];
 
 /// `GET /`: the viewer page.
 pub async fn page() -> Response {
-    let mut response = ([(header::CONTENT_TYPE, "text/html; charset=utf-8")], INDEX_HTML).into_response();
+    let mut response = (
+        [(header::CONTENT_TYPE, "text/html; charset=utf-8")],
+        INDEX_HTML,
+    )
+        .into_response();
     response
         .headers_mut()
         .insert(header::CACHE_CONTROL, HeaderValue::from_static("no-cache"));
@@ -42,7 +56,10 @@ pub async fn page() -> Response {
 fn space(raw: &str, rev: &IndexedRevision) -> Result<SpaceId, ApiError> {
     let raw = raw.trim();
     let r = match raw.parse::<u32>() {
-        Ok(id) => SpaceRef::Id { kind: None, id: SpaceId(id) },
+        Ok(id) => SpaceRef::Id {
+            kind: None,
+            id: SpaceId(id),
+        },
         Err(_) => SpaceRef::Name(raw.to_string()),
     };
     rev.resolve(&r).map_err(|e| match e {
@@ -71,11 +88,16 @@ pub async fn svg(
                 None => None,
                 Some(pair) => {
                     let (from, to) = pair.split_once(',').ok_or_else(|| {
-                        ApiError::bad("route", format!("'{pair}': expected FROM,TO (two space ids or names)"))
+                        ApiError::bad(
+                            "route",
+                            format!("'{pair}': expected FROM,TO (two space ids or names)"),
+                        )
                     })?;
                     let request = RouteRequest::new(space(from, &r)?, space(to, &r)?);
                     let routes = shortest_route(&r.graph, &r.nrg, &request, &Budget::new(timeout))?;
-                    routes.first().map(|x| RouteOverlay::along(&r.nrg, &x.spaces, x.length_m))
+                    routes
+                        .first()
+                        .map(|x| RouteOverlay::along(&r.nrg, &x.spaces, x.length_m))
                 }
             };
             let changes = match diff {
@@ -101,7 +123,11 @@ pub async fn svg(
         })
         .await?;
     let mut response = ([(header::CONTENT_TYPE, "image/svg+xml")], body).into_response();
-    let caching = if rev.is_some() { "public, max-age=3600" } else { "no-cache" };
+    let caching = if rev.is_some() {
+        "public, max-age=3600"
+    } else {
+        "no-cache"
+    };
     response
         .headers_mut()
         .insert(header::CACHE_CONTROL, HeaderValue::from_static(caching));

@@ -1,0 +1,76 @@
+//! The accuracy benchmark on simulated buildings: simulates, extracts and
+//! evaluates `--count` buildings per group (fixed seeds 1..=count), once
+//! plain and once furnished (cluttered), and prints a line per building and
+//! the means per group. The regression guard over the same figures is the
+//! integration test `sim_accuracy` (tests/it/sim_accuracy.rs).
+//!
+//! ```text
+//! cargo run --release --example sim_accuracy [-- --count 50 --params p.toml]
+//! ```
+
+use std::time::Instant;
+
+use nrgdb::eval::{SimulatedScore, evaluate_simulated};
+use nrgdb::extract::ExtractParams;
+use nrgdb::sim::SimParams;
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let mut args = std::env::args().skip(1);
+    let mut count = 50u64;
+    let mut params = ExtractParams::default();
+    while let Some(a) = args.next() {
+        match a.as_str() {
+            "--count" => count = args.next().unwrap_or_default().parse()?,
+            "--params" => {
+                params = toml::from_str(&std::fs::read_to_string(args.next().unwrap_or_default())?)?
+            }
+            other => return Err(format!("unknown argument {other:?}").into()),
+        }
+    }
+    let scratch = tempfile::tempdir()?;
+    println!(
+        "{:<10} {:>6} {:>6} | {:>6} {:>6} | {:>6} {:>6} | {:>7} {:>7}",
+        "building", "R", "P", "doorR", "doorP", "connR", "connP", "rooms", "ms"
+    );
+    for furnished in [false, true] {
+        let mut scores = Vec::new();
+        for seed in 1..=count {
+            let mut sim = SimParams::new(seed);
+            sim.plan.furniture = furnished;
+            let t = Instant::now();
+            let s = evaluate_simulated(&sim, &params, scratch.path())?;
+            let ms = t.elapsed().as_secs_f64() * 1e3;
+            let e = &s.evaluation;
+            println!(
+                "{:<10} {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>7} {:>7.0}",
+                format!("{}{seed}", if furnished { "F" } else { "P" }),
+                100.0 * e.rooms.recall_micro,
+                100.0 * e.rooms.precision_micro,
+                100.0 * e.doors.recall,
+                100.0 * e.doors.precision,
+                100.0 * e.connections.recall,
+                100.0 * e.connections.precision,
+                format!("{}/{}", e.rooms.segments, s.true_rooms),
+                ms
+            );
+            scores.push(s);
+        }
+        print_means(if furnished { "furnished" } else { "plain" }, &scores);
+    }
+    Ok(())
+}
+
+fn print_means(group: &str, scores: &[SimulatedScore]) {
+    let n = scores.len().max(1) as f64;
+    let mean = |f: &dyn Fn(&SimulatedScore) -> f64| 100.0 * scores.iter().map(f).sum::<f64>() / n;
+    println!(
+        "mean {group:<10} R {:.2} P {:.2} | doors R {:.2} P {:.2} | connections R {:.2} P {:.2}  ({} buildings)",
+        mean(&|s| s.evaluation.rooms.recall_micro),
+        mean(&|s| s.evaluation.rooms.precision_micro),
+        mean(&|s| s.evaluation.doors.recall),
+        mean(&|s| s.evaluation.doors.precision),
+        mean(&|s| s.evaluation.connections.recall),
+        mean(&|s| s.evaluation.connections.precision),
+        scores.len()
+    );
+}

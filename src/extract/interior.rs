@@ -1,0 +1,109 @@
+//! Unknown pockets inside rooms: the insides of furniture and of anything
+//! else the sensor could not see into (drawn grey in the IPA maps, left
+//! unknown by a LiDAR). They belong to the room around them, so each such
+//! pocket is given to the spaces it touches, pixel by pixel, nearest first.
+
+use std::collections::VecDeque;
+
+use crate::grid::{Cell, OccupancyGrid};
+use crate::imaging::{Labels, Mask, label_components};
+
+/// Grows `labels` into every 8-connected component of unknown cells that
+/// does not touch the image border (what touches it is the outside) and
+/// has at most `max_px` pixels (larger ones are unexplored rooms, or walls
+/// drawn grey). Growth is a breadth-first flood from the labelled pixels,
+/// 4-connected, so a pocket between two spaces is shared at the middle.
+pub(crate) fn claim_enclosed_unknown(labels: &mut Labels, grid: &OccupancyGrid, max_px: usize) {
+    if max_px == 0 {
+        return;
+    }
+    let (w, h) = (grid.width as usize, grid.height as usize);
+    let unknown_data = grid
+        .cells
+        .iter()
+        .map(|c| if *c == Cell::Unknown { 255 } else { 0 })
+        .collect();
+    let unknown = Mask::from_raw(grid.width, grid.height, unknown_data)
+        .unwrap_or_else(|| Mask::new(grid.width, grid.height));
+    let pockets = label_components(&unknown, true);
+    let n = pockets.count as usize + 1;
+    let mut area = vec![0usize; n];
+    let mut on_border = vec![false; n];
+    for (i, &p) in pockets.data.iter().enumerate() {
+        if p == 0 {
+            continue;
+        }
+        area[p as usize] += 1;
+        let (x, y) = (i % w, i / w);
+        if x == 0 || y == 0 || x + 1 == w || y + 1 == h {
+            on_border[p as usize] = true;
+        }
+    }
+    let claimable: Vec<bool> = (0..n)
+        .map(|p| p != 0 && !on_border[p] && area[p] <= max_px)
+        .collect();
+    let open =
+        |i: usize, labels: &Labels| labels.data[i] == 0 && claimable[pockets.data[i] as usize];
+    let mut queue: VecDeque<usize> = (0..w * h)
+        .filter(|&i| labels.data[i] != 0)
+        .filter(|&i| neighbours(i, w, h).any(|j| open(j, labels)))
+        .collect();
+    while let Some(i) = queue.pop_front() {
+        let l = labels.data[i];
+        for j in neighbours(i, w, h) {
+            if open(j, labels) {
+                labels.data[j] = l;
+                queue.push_back(j);
+            }
+        }
+    }
+}
+
+/// The 4-neighbours of pixel `i` inside a `w`×`h` image.
+fn neighbours(i: usize, w: usize, h: usize) -> impl Iterator<Item = usize> {
+    let (x, y) = (i % w, i / w);
+    [
+        (x > 0).then(|| i - 1),
+        (x + 1 < w).then(|| i + 1),
+        (y > 0).then(|| i - w),
+        (y + 1 < h).then(|| i + w),
+    ]
+    .into_iter()
+    .flatten()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pockets_inside_rooms_are_claimed_outside_is_not() {
+        // Room 1 (left) holds a 2-px unknown pocket; the unknown outside
+        // touches the border; room 2 (right) is walled off from the pocket.
+        let g = OccupancyGrid::from_ascii(
+            "??????????
+             ?########?
+             ?#...#..#?
+             ?#.??#..#?
+             ?#...#..#?
+             ?########?
+             ??????????",
+            0.1,
+        );
+        let mut labels = Labels::new(g.width, g.height);
+        for (i, c) in g.cells.iter().enumerate() {
+            if *c == Cell::Free {
+                labels.data[i] = if i % 10 < 5 { 1 } else { 2 };
+            }
+        }
+        labels.count = 2;
+        let mut small = labels.clone();
+        claim_enclosed_unknown(&mut labels, &g, 4);
+        assert_eq!((labels.data[33], labels.data[34]), (1, 1));
+        assert_eq!(labels.data[0], 0, "outside stays unlabelled");
+        assert_eq!(labels.data.iter().filter(|&&l| l == 1).count(), 9);
+        // A pocket above the size limit is left alone.
+        claim_enclosed_unknown(&mut small, &g, 1);
+        assert_eq!((small.data[33], small.data[34]), (0, 0));
+    }
+}

@@ -1,0 +1,31 @@
+//! Reading a request body with a size limit: a declared `Content-Length`
+//! above it is refused before reading, a body that grows past it while
+//! streaming too (413 either way).
+
+use axum::body::{Body, Bytes};
+use axum::http::{HeaderMap, header};
+
+use super::error::ApiError;
+
+/// The whole body, at most `limit` bytes.
+pub async fn read_limited(
+    headers: &HeaderMap,
+    body: Body,
+    limit: usize,
+) -> Result<Bytes, ApiError> {
+    let declared = headers
+        .get(header::CONTENT_LENGTH)
+        .and_then(|v| v.to_str().ok())
+        .and_then(|v| v.parse::<u64>().ok());
+    if declared.is_some_and(|n| n > limit as u64) {
+        return Err(ApiError::TooLarge { limit });
+    }
+    axum::body::to_bytes(body, limit).await.map_err(|e| {
+        // axum wraps http-body-util's LengthLimitError ("length limit exceeded").
+        if e.to_string().contains("length limit") {
+            ApiError::TooLarge { limit }
+        } else {
+            ApiError::BadUpload(format!("cannot read the request body: {e}"))
+        }
+    })
+}

@@ -1,0 +1,90 @@
+//! Maps and revisions: listings and whole-revision exports (IndoorGML,
+//! GeoJSON).
+
+use axum::Json;
+use axum::extract::{Path, State};
+use axum::http::{HeaderValue, Uri, header};
+use axum::response::{IntoResponse, Response};
+use serde_json::{Value, json};
+
+use crate::server::error::ApiError;
+use crate::server::params::{Params, parse_rev};
+use crate::server::state::AppState;
+
+/// `GET /maps`.
+pub async fn list_maps(State(state): State<AppState>, uri: Uri) -> Result<Json<Value>, ApiError> {
+    Params::parse(&uri, &[])?;
+    let maps = state.blocking(|ctx| Ok(ctx.store().maps()?)).await?;
+    Ok(Json(json!({ "maps": maps })))
+}
+
+/// `GET /maps/{map}/revisions`.
+pub async fn list_revisions(
+    State(state): State<AppState>,
+    Path(map): Path<String>,
+    uri: Uri,
+) -> Result<Json<Value>, ApiError> {
+    Params::parse(&uri, &[])?;
+    let revisions = {
+        let map = map.clone();
+        state
+            .blocking(move |ctx| Ok(ctx.store().revisions(&map)?))
+            .await?
+    };
+    Ok(Json(json!({ "map": map, "revisions": revisions })))
+}
+
+/// Cache headers: a numbered revision never changes; `latest` does.
+fn with_caching(mut response: Response, numbered: bool) -> Response {
+    let value = if numbered {
+        "public, max-age=31536000, immutable"
+    } else {
+        "no-cache"
+    };
+    response
+        .headers_mut()
+        .insert(header::CACHE_CONTROL, HeaderValue::from_static(value));
+    response
+}
+
+/// `GET /maps/{map}/revisions/{rev}/indoorgml`.
+pub async fn indoorgml(
+    State(state): State<AppState>,
+    Path((map, rev)): Path<(String, String)>,
+    uri: Uri,
+) -> Result<Response, ApiError> {
+    Params::parse(&uri, &[])?;
+    let rev = parse_rev("rev", &rev)?;
+    let xml = state
+        .blocking(move |ctx| {
+            let r = ctx.revision(&map, rev)?;
+            Ok(crate::indoorgml::write_string(&crate::indoorgml::from_nrg(
+                &r.nrg,
+            )))
+        })
+        .await?;
+    let response = (
+        [(header::CONTENT_TYPE, "application/gml+xml; charset=utf-8")],
+        xml,
+    )
+        .into_response();
+    Ok(with_caching(response, rev.is_some()))
+}
+
+/// `GET /maps/{map}/revisions/{rev}/geojson`.
+pub async fn geojson(
+    State(state): State<AppState>,
+    Path((map, rev)): Path<(String, String)>,
+    uri: Uri,
+) -> Result<Response, ApiError> {
+    Params::parse(&uri, &[])?;
+    let rev = parse_rev("rev", &rev)?;
+    let body = state
+        .blocking(move |ctx| {
+            let r = ctx.revision(&map, rev)?;
+            Ok(crate::geojson::to_geojson(&r.nrg).to_string())
+        })
+        .await?;
+    let response = ([(header::CONTENT_TYPE, "application/geo+json")], body).into_response();
+    Ok(with_caching(response, rev.is_some()))
+}

@@ -1,0 +1,174 @@
+//! `POST /query`: statements of the query language, JSON results. The body
+//! is the query text (`text/plain`) or `{"query", "map", "rev"}` (JSON).
+//! `NAME … AS …` writes a revision and needs the bearer token.
+
+use axum::Json;
+use axum::body::Body;
+use axum::extract::State;
+use axum::http::{HeaderMap, Uri, header};
+use serde::Deserialize;
+use serde_json::{Value, json};
+
+use super::spaces::rows_as_objects;
+use super::{ParamDoc, REV, q};
+use crate::model::{Nrg, SpaceId};
+use crate::query::{
+    Limits, MapInfo, QueryError, QueryResult, RevisionInfo, Session, Source, SourceError,
+};
+use crate::server::auth::has_token;
+use crate::server::body::read_limited;
+use crate::server::error::ApiError;
+use crate::server::params::{Params, parse_rev};
+use crate::server::state::AppState;
+use crate::store::Store;
+
+/// Query parameters of `POST /query` (the JSON body may give them too).
+pub const PARAMS: [ParamDoc; 2] = [
+    q(
+        "map",
+        "string",
+        false,
+        "map to USE first (default: the first map by name)",
+    ),
+    REV,
+];
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct QueryBody {
+    query: String,
+    map: Option<String>,
+    rev: Option<Value>,
+}
+
+/// The store seen by a query; NAME is refused without the token.
+struct QuerySource<'a> {
+    store: &'a mut Store,
+    writable: bool,
+}
+
+impl Source for QuerySource<'_> {
+    fn maps(&self) -> Result<Vec<MapInfo>, SourceError> {
+        <Store as Source>::maps(self.store)
+    }
+    fn revisions(&self, map: &str) -> Result<Vec<RevisionInfo>, SourceError> {
+        <Store as Source>::revisions(self.store, map)
+    }
+    fn load(&self, map: &str, revision: u64) -> Result<Nrg, SourceError> {
+        <Store as Source>::load(self.store, map, revision)
+    }
+    fn rename_space(
+        &mut self,
+        map: &str,
+        revision: u64,
+        id: SpaceId,
+        name: &str,
+    ) -> Result<u64, SourceError> {
+        if !self.writable {
+            return Err(SourceError::Backend(
+                "NAME writes a revision: send 'Authorization: Bearer <token>' to a server started with --token"
+                    .into(),
+            ));
+        }
+        <Store as Source>::rename_space(self.store, map, revision, id, name)
+    }
+}
+
+fn result_json(result: Result<QueryResult, QueryError>) -> Value {
+    match result {
+        Ok(QueryResult::Table(t)) => {
+            json!({"type": "table", "columns": t.columns, "rows": rows_as_objects(&t)})
+        }
+        Ok(QueryResult::Routes(r)) => json!({"type": "routes", "routes": r}),
+        Ok(QueryResult::Message(m)) => json!({"type": "message", "message": m}),
+        Ok(QueryResult::Plan(p)) => json!({"type": "plan", "plan": p}),
+        Err(e) => {
+            let api = ApiError::from(e);
+            json!({"type": "error", "code": api.code(), "message": api.to_string()})
+        }
+    }
+}
+
+/// `POST /query`.
+pub async fn query(
+    State(state): State<AppState>,
+    uri: Uri,
+    headers: HeaderMap,
+    body: Body,
+) -> Result<Json<Value>, ApiError> {
+    let p = Params::parse(&uri, &["map", "rev"])?;
+    let bytes = read_limited(&headers, body, state.config().max_body_bytes).await?;
+    let is_json = headers
+        .get(header::CONTENT_TYPE)
+        .and_then(|v| v.to_str().ok())
+        .is_some_and(|v| v.starts_with("application/json"));
+    let (text, mut map, mut rev) = if is_json {
+        let b: QueryBody = serde_json::from_slice(&bytes).map_err(|e| {
+            ApiError::bad(
+                "body",
+                format!("{e} (expected {{\"query\": \"…\", \"map\"?, \"rev\"?}})"),
+            )
+        })?;
+        let rev = match b.rev {
+            None | Some(Value::Null) => None,
+            Some(Value::String(s)) => parse_rev("rev", &s)?,
+            Some(v) => parse_rev("rev", &v.to_string())?,
+        };
+        (b.query, b.map, rev)
+    } else {
+        let text = String::from_utf8(bytes.to_vec())
+            .map_err(|_| ApiError::bad("body", "the query text is not UTF-8"))?;
+        (text, None, None)
+    };
+    if let Some(m) = p.get("map") {
+        map = Some(m.to_string());
+    }
+    if p.get("rev").is_some() {
+        rev = p.rev()?;
+    }
+    if text.trim().is_empty() {
+        return Err(ApiError::bad(
+            "query",
+            "empty (send statements such as FIND rooms;)",
+        ));
+    }
+    let writable = has_token(state.config(), &headers);
+    let limits = Limits {
+        timeout: state.config().timeout,
+        ..Limits::default()
+    };
+    state
+        .blocking(move |ctx| {
+            let source = QuerySource {
+                store: ctx.store(),
+                writable,
+            };
+            let mut session = match &map {
+                Some(m) => {
+                    let mut s = Session::new(source);
+                    s.use_map(m, rev.map(u64::from)).map_err(|e| match e {
+                        QueryError::Source(SourceError::NoMap { .. }) => {
+                            ApiError::not_found("map", e.to_string())
+                        }
+                        QueryError::Source(SourceError::NoRevision { .. }) => {
+                            ApiError::not_found("rev", e.to_string())
+                        }
+                        other => ApiError::from(other),
+                    })?;
+                    s
+                }
+                None => Session::with_default_map(source)?,
+            };
+            session.set_limits(limits);
+            let results: Vec<Value> = session
+                .execute(&text)?
+                .into_iter()
+                .map(result_json)
+                .collect();
+            let current = session
+                .current()
+                .map(|c| json!({"map": c.map, "revision": c.revision}));
+            Ok(Json(json!({"using": current, "results": results})))
+        })
+        .await
+}

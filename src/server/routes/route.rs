@@ -1,0 +1,178 @@
+//! `GET /maps/{map}/route`: shortest route or alternatives between spaces
+//! given by id, name or point, through waypoints, around avoided spaces.
+
+use axum::extract::{Path, State};
+use axum::http::{Uri, header};
+use axum::response::{IntoResponse, Response};
+
+use super::route_json::route_response;
+use super::{ParamDoc, REV, q};
+use crate::model::SpaceId;
+use crate::query::{IndexedRevision, QueryError, SpaceRef};
+use crate::route::{Budget, RouteRequest, shortest_route};
+use crate::server::error::ApiError;
+use crate::server::params::{Params, parse_value};
+use crate::server::state::{AppState, Ctx};
+
+/// Most routes `alternatives` may ask for.
+pub const MAX_ALTERNATIVES: usize = 10;
+
+/// Query parameters of the route endpoint.
+pub const PARAMS: [ParamDoc; 6] = [
+    q(
+        "from",
+        "string",
+        true,
+        "start: space id, name, or point 'x,y' in metres",
+    ),
+    q(
+        "to",
+        "string",
+        true,
+        "goal: space id, name, or point 'x,y' in metres",
+    ),
+    q(
+        "via",
+        "string",
+        false,
+        "waypoints in order: comma-separated ids or names",
+    ),
+    q(
+        "avoid",
+        "string",
+        false,
+        "spaces not to enter: comma-separated ids or names",
+    ),
+    q(
+        "alternatives",
+        "string",
+        false,
+        "true (3 routes), false, or a number of routes 1 to 10",
+    ),
+    REV,
+];
+
+/// A space reference: an id, a point `x,y`, or a name.
+fn reference(raw: &str) -> SpaceRef {
+    let raw = raw.trim();
+    if let Ok(id) = raw.parse::<u32>() {
+        return SpaceRef::Id {
+            kind: None,
+            id: SpaceId(id),
+        };
+    }
+    if let Some((x, y)) = raw.split_once(',')
+        && let (Ok(x), Ok(y)) = (x.trim().parse::<f64>(), y.trim().parse::<f64>())
+        && x.is_finite()
+        && y.is_finite()
+    {
+        return SpaceRef::Point([x, y]);
+    }
+    SpaceRef::Name(raw.to_string())
+}
+
+/// Resolves parameter `name`'s value on `rev`; unknown spaces are 404s
+/// naming the parameter.
+fn resolve(name: &str, raw: &str, rev: &IndexedRevision) -> Result<SpaceId, ApiError> {
+    rev.resolve(&reference(raw)).map_err(|e| match e {
+        QueryError::UnknownId(_)
+        | QueryError::UnknownName { .. }
+        | QueryError::NoSpaceAt { .. } => ApiError::not_found(name, format!("{name}: {e}")),
+        other => ApiError::bad(name, other.to_string()),
+    })
+}
+
+fn list(name: &str, raw: Option<&str>, rev: &IndexedRevision) -> Result<Vec<SpaceId>, ApiError> {
+    raw.map_or(Ok(Vec::new()), |raw| {
+        raw.split(',')
+            .filter(|s| !s.trim().is_empty())
+            .map(|s| resolve(name, s, rev))
+            .collect()
+    })
+}
+
+fn alternatives(raw: Option<&str>) -> Result<usize, ApiError> {
+    match raw.map(str::trim) {
+        None | Some("false") => Ok(1),
+        Some("true") => Ok(3),
+        Some(n) => {
+            let k: usize = parse_value("alternatives", n, "true, false or a number of routes")?;
+            if (1..=MAX_ALTERNATIVES).contains(&k) {
+                Ok(k)
+            } else {
+                Err(ApiError::bad(
+                    "alternatives",
+                    format!("{k} is out of range (1 to {MAX_ALTERNATIVES})"),
+                ))
+            }
+        }
+    }
+}
+
+/// `GET /maps/{map}/route?from=&to=&via=&avoid=&alternatives=&rev=`.
+pub async fn route(
+    State(state): State<AppState>,
+    Path(map): Path<String>,
+    uri: Uri,
+) -> Result<Response, ApiError> {
+    let p = Params::parse(&uri, &["from", "to", "via", "avoid", "alternatives", "rev"])?;
+    let from = p.required("from")?.to_string();
+    let to = p.required("to")?.to_string();
+    let via = p.get("via").map(str::to_string);
+    let avoid = p.get("avoid").map(str::to_string);
+    let k = alternatives(p.get("alternatives"))?;
+    if k > 1 && via.is_some() {
+        return Err(ApiError::bad(
+            "alternatives",
+            "alternatives are not computed for routes with waypoints (drop via or alternatives)",
+        ));
+    }
+    let rev = p.rev()?;
+    let timeout = state.config().timeout;
+    let work = move |ctx: &mut Ctx<'_>| {
+        let r = ctx.revision(&map, rev)?;
+        let request = RouteRequest {
+            from: resolve("from", &from, &r)?,
+            to: resolve("to", &to, &r)?,
+            via: list("via", via.as_deref(), &r)?,
+            avoid: list("avoid", avoid.as_deref(), &r)?,
+            alternatives: k,
+        };
+        let routes = shortest_route(&r.graph, &r.nrg, &request, &Budget::new(timeout))?;
+        let mut stops = vec![request.from];
+        stops.extend(&request.via);
+        stops.push(request.to);
+        serde_json::to_vec(&route_response(&r, &stops, &routes))
+            .map_err(|e| ApiError::Internal(e.to_string()))
+    };
+    // One shortest route is a Dijkstra: cheap enough for the async worker
+    // when the revision is cached. Alternatives (Yen) go to the blocking pool.
+    let body = if k == 1 {
+        state.quick(work).await?
+    } else {
+        state.blocking(work).await?
+    };
+    Ok(([(header::CONTENT_TYPE, "application/json")], body).into_response())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn references_and_alternatives() {
+        assert_eq!(
+            reference("12"),
+            SpaceRef::Id {
+                kind: None,
+                id: SpaceId(12)
+            }
+        );
+        assert_eq!(reference("1.5, 2"), SpaceRef::Point([1.5, 2.0]));
+        assert_eq!(reference("Kitchen"), SpaceRef::Name("Kitchen".into()));
+        assert_eq!(alternatives(Some("true")).unwrap(), 3);
+        assert_eq!(alternatives(None).unwrap(), 1);
+        assert!(alternatives(Some("11")).is_err());
+        assert!(alternatives(Some("x")).is_err());
+    }
+}

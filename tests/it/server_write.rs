@@ -1,0 +1,361 @@
+//! Issue #7: uploads. Token rules (403 read-only, 401 without the token),
+//! size limit (413), malformed uploads store nothing, a new revision is
+//! served by the next request, multipart map YAML + image is extracted.
+
+use super::server_client::{TOKEN, TestServer};
+
+const AUTH: (&str, &str) = ("Authorization", "Bearer test-token-42");
+
+/// A 12 m × 8 m floor (corridor and three rooms with doors) as a PGM at
+/// 5 cm per pixel, with its map YAML.
+fn floor_pgm() -> (String, Vec<u8>) {
+    let res = 0.05;
+    let (w, h) = (240u32, 160u32);
+    let free = [
+        (0.2, 1.0, 11.8, 3.0),
+        (0.2, 3.2, 3.9, 7.2),
+        (4.1, 3.2, 7.9, 7.2),
+        (8.1, 3.2, 11.8, 7.2),
+        (1.6, 2.9, 2.5, 3.3),
+        (5.55, 2.9, 6.45, 3.3),
+        (9.5, 2.9, 10.4, 3.3),
+    ];
+    let mut pgm = format!("P5\n{w} {h}\n255\n").into_bytes();
+    for row in 0..h {
+        for col in 0..w {
+            let x = (f64::from(col) + 0.5) * res;
+            let y = 8.0 - (f64::from(row) + 0.5) * res;
+            let is_free = free
+                .iter()
+                .any(|&(x0, y0, x1, y1)| x >= x0 && x < x1 && y >= y0 && y < y1);
+            pgm.push(if is_free { 254 } else { 0 });
+        }
+    }
+    let yaml = "image: floor.pgm\nresolution: 0.05\norigin: [0.0, 0.0, 0.0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n".to_string();
+    (yaml, pgm)
+}
+
+fn multipart(boundary: &str, parts: &[(&str, Option<&str>, &[u8])]) -> Vec<u8> {
+    let mut body = Vec::new();
+    for (name, filename, data) in parts {
+        body.extend_from_slice(format!("--{boundary}\r\n").as_bytes());
+        let disposition = match filename {
+            Some(f) => {
+                format!("Content-Disposition: form-data; name=\"{name}\"; filename=\"{f}\"\r\n")
+            }
+            None => format!("Content-Disposition: form-data; name=\"{name}\"\r\n"),
+        };
+        body.extend_from_slice(disposition.as_bytes());
+        body.extend_from_slice(b"\r\n");
+        body.extend_from_slice(data);
+        body.extend_from_slice(b"\r\n");
+    }
+    body.extend_from_slice(format!("--{boundary}--\r\n").as_bytes());
+    body
+}
+
+/// The fixture with one more room: a model JSON for revision 2.
+fn bigger_model() -> String {
+    nrgdb::fixtures::corridor_building(7).to_json()
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn writes_need_a_token() {
+    let ro = TestServer::read_only().await;
+    let json = [("Content-Type", "application/json")];
+    let r = ro
+        .post("/maps/building/revisions", &json, bigger_model().as_bytes())
+        .await;
+    assert_eq!(
+        (r.status, r.json()["code"].as_str()),
+        (403, Some("ReadOnly"))
+    );
+    ro.stop().await;
+
+    let s = TestServer::writable().await;
+    let r = s
+        .post("/maps/building/revisions", &json, bigger_model().as_bytes())
+        .await;
+    assert_eq!(r.status, 401);
+    assert!(r.header("www-authenticate").unwrap().starts_with("Bearer"));
+    let wrong = [
+        ("Content-Type", "application/json"),
+        ("Authorization", "Bearer nope"),
+    ];
+    assert_eq!(
+        s.post(
+            "/maps/building/revisions",
+            &wrong,
+            bigger_model().as_bytes()
+        )
+        .await
+        .status,
+        401
+    );
+    assert_eq!(s.revision_count("building"), 1);
+    s.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn upload_is_visible_to_the_next_request() {
+    let s = TestServer::writable().await;
+    // Warm the cache on revision 1.
+    let before = s.get("/maps/building/route?from=10&to=15").await.json();
+    assert_eq!(before["revision"], 1);
+    s.get("/maps/building/route?from=10&to=16")
+        .await
+        .assert_error(404, "to");
+    let r = s
+        .post(
+            "/maps/building/revisions?message=one%20more%20room",
+            &[("Content-Type", "application/json"), AUTH],
+            bigger_model().as_bytes(),
+        )
+        .await;
+    assert_eq!(r.status, 201, "{}", r.text());
+    let rev = &r.json()["revision"];
+    assert_eq!(rev["seq"], 2);
+    assert_eq!(rev["message"], "one more room");
+    assert_eq!(rev["spaces_added"], 2);
+    assert_eq!(
+        r.header("location"),
+        Some("/maps/building/revisions/2/geojson")
+    );
+    let new_room = r.json()["ids"]["16"].as_u64().unwrap();
+    assert_eq!(r.json()["ids"]["10"], 10, "kept spaces keep their ids");
+    let after = s
+        .get(&format!("/maps/building/route?from=10&to={new_room}"))
+        .await
+        .json();
+    assert_eq!(after["revision"], 2);
+    assert_eq!(after["code"], "Ok");
+    // The old revision is still served as it was.
+    s.get(&format!("/maps/building/route?from=10&to={new_room}&rev=1"))
+        .await
+        .assert_error(404, "to");
+
+    // IndoorGML as a raw body, then as a multipart file.
+    let gml = nrgdb::indoorgml::write_string(&nrgdb::indoorgml::from_nrg(
+        &nrgdb::fixtures::corridor_building(5),
+    ));
+    let r = s
+        .post(
+            "/maps/other/revisions",
+            &[("Content-Type", "application/xml"), AUTH],
+            gml.as_bytes(),
+        )
+        .await;
+    assert_eq!(r.status, 201, "{}", r.text());
+    let body = multipart(
+        "b0undary",
+        &[
+            ("model", Some("floor.gml"), gml.as_bytes()),
+            ("message", None, b"again"),
+        ],
+    );
+    let r = s
+        .post(
+            "/maps/other/revisions",
+            &[
+                ("Content-Type", "multipart/form-data; boundary=b0undary"),
+                AUTH,
+            ],
+            &body,
+        )
+        .await;
+    assert_eq!(r.status, 201, "{}", r.text());
+    assert_eq!(r.json()["revision"]["message"], "again");
+    assert_eq!(r.json()["revision"]["spaces_changed"], 0);
+    s.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn malformed_uploads_store_nothing() {
+    let s = TestServer::writable().await;
+    let json = [("Content-Type", "application/json"), AUTH];
+    let bad_json = s
+        .post("/maps/building/revisions", &json, b"{\"spaces\": [")
+        .await;
+    assert_eq!(
+        (bad_json.status, bad_json.json()["code"].as_str()),
+        (400, Some("BadUpload"))
+    );
+    let gml = [("Content-Type", "application/xml"), AUTH];
+    assert_eq!(
+        s.post("/maps/building/revisions", &gml, b"<not-indoorgml/>")
+            .await
+            .status,
+        400
+    );
+    let ct = [("Content-Type", "image/gif"), AUTH];
+    assert_eq!(
+        s.post("/maps/building/revisions", &ct, b"GIF89a")
+            .await
+            .status,
+        400
+    );
+    let mp = [("Content-Type", "multipart/form-data; boundary=XYZ"), AUTH];
+    let (yaml, _) = floor_pgm();
+    let lonely_yaml = multipart("XYZ", &[("yaml", Some("floor.yaml"), yaml.as_bytes())]);
+    assert_eq!(
+        s.post("/maps/building/revisions", &mp, &lonely_yaml)
+            .await
+            .status,
+        400
+    );
+    let broken_image = multipart(
+        "XYZ",
+        &[
+            ("yaml", Some("floor.yaml"), yaml.as_bytes()),
+            ("image", Some("floor.pgm"), b"P5\n999"),
+        ],
+    );
+    assert_eq!(
+        s.post("/maps/building/revisions", &mp, &broken_image)
+            .await
+            .status,
+        400
+    );
+    assert_eq!(
+        s.post("/maps/building/revisions", &mp, b"garbage")
+            .await
+            .status,
+        400
+    );
+    assert_eq!(s.revision_count("building"), 1);
+    let maps = s.get("/maps").await.json();
+    assert_eq!(maps["maps"].as_array().unwrap().len(), 1, "{maps}");
+    s.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn oversized_upload_is_413() {
+    let s = TestServer::start(|c| {
+        c.token = Some(TOKEN.into());
+        c.max_upload_bytes = 64 * 1024;
+    })
+    .await;
+    let big = vec![b' '; 200 * 1024];
+    let r = s
+        .post(
+            "/maps/building/revisions",
+            &[("Content-Type", "application/json"), AUTH],
+            &big,
+        )
+        .await;
+    assert_eq!(
+        (r.status, r.json()["code"].as_str()),
+        (413, Some("TooLarge"))
+    );
+    assert_eq!(s.revision_count("building"), 1);
+    s.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn map_yaml_and_image_are_extracted() {
+    let s = TestServer::writable().await;
+    let (yaml, pgm) = floor_pgm();
+    let body = multipart(
+        "----nrgdb",
+        &[
+            ("yaml", Some("floor.yaml"), yaml.as_bytes()),
+            ("image", Some("floor.pgm"), &pgm),
+            ("author", None, b"robot 7"),
+        ],
+    );
+    let r = s
+        .post(
+            "/maps/floor/revisions",
+            &[
+                ("Content-Type", "multipart/form-data; boundary=----nrgdb"),
+                AUTH,
+            ],
+            &body,
+        )
+        .await;
+    assert_eq!(r.status, 201, "{}", r.text());
+    let rev = &r.json()["revision"];
+    assert_eq!(rev["author"], "robot 7");
+    assert_eq!(rev["source_name"], "floor.yaml + floor.pgm");
+    assert!(rev["params"].is_object());
+    let rooms = s.get("/maps/floor/spaces?kind=room").await.json();
+    assert_eq!(rooms["spaces"].as_array().unwrap().len(), 3, "{rooms}");
+    let doors = s.get("/maps/floor/spaces?kind=door").await.json();
+    assert_eq!(doors["spaces"].as_array().unwrap().len(), 3);
+    // Route between the outer rooms by point.
+    let route = s.get("/maps/floor/route?from=1,5&to=11,5").await.json();
+    assert_eq!(route["code"], "Ok", "{route}");
+    assert_eq!(route["routes"][0]["doors"].as_array().unwrap().len(), 2);
+    s.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn name_query_with_token_writes_a_revision() {
+    let s = TestServer::writable().await;
+    let r = s
+        .post(
+            "/query?map=building",
+            &[AUTH],
+            b"NAME 11 AS \"Lab\"; FIND rooms WHERE name = \"Lab\";",
+        )
+        .await;
+    let v = r.json();
+    assert_eq!(v["results"][0]["type"], "message", "{v}");
+    assert_eq!(v["results"][1]["rows"][0]["id"], 11);
+    assert_eq!(s.revision_count("building"), 2);
+    s.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn shutdown_lets_in_flight_requests_finish() {
+    use tokio::io::AsyncWriteExt;
+    let mut s = TestServer::read_only().await;
+    // A request whose body is still on its way when the signal comes.
+    let mut stream = tokio::net::TcpStream::connect(s.addr).await.unwrap();
+    let body = b"FIND rooms;";
+    let head = format!(
+        "POST /query HTTP/1.1\r\nHost: x\r\nConnection: close\r\nContent-Length: {}\r\n\r\n",
+        body.len()
+    );
+    stream.write_all(head.as_bytes()).await.unwrap();
+    stream.write_all(&body[..4]).await.unwrap();
+    tokio::time::sleep(std::time::Duration::from_millis(100)).await;
+    s.signal_stop();
+    tokio::time::sleep(std::time::Duration::from_millis(100)).await;
+    stream.write_all(&body[4..]).await.unwrap();
+    let reply = super::server_client::read_reply(&mut stream).await;
+    assert_eq!(reply.status, 200, "{}", reply.text());
+    assert_eq!(
+        reply.json()["results"][0]["rows"].as_array().unwrap().len(),
+        6
+    );
+    s.join().await;
+    // Nothing listens any more.
+    assert!(
+        tokio::net::TcpStream::connect(("127.0.0.1", 1))
+            .await
+            .is_err()
+    );
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn revision_written_by_another_process_is_served_next() {
+    let s = TestServer::read_only().await;
+    for _ in 0..3 {
+        let r = s.get("/maps/building/spaces?kind=room").await.json();
+        assert_eq!(r["revision"], 1);
+    }
+    // As `nrgdb import` would, from outside the server.
+    let mut store = nrgdb::store::Store::open(&s.db).unwrap();
+    store
+        .import(
+            "building",
+            &nrgdb::fixtures::corridor_building(8),
+            nrgdb::store::ImportMeta::new("cli", "test"),
+        )
+        .unwrap();
+    let r = s.get("/maps/building/spaces?kind=room").await.json();
+    assert_eq!(r["revision"], 2);
+    assert_eq!(r["spaces"].as_array().unwrap().len(), 8);
+    s.stop().await;
+}
