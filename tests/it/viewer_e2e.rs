@@ -196,3 +196,71 @@ async fn viewer_clicks_show_details_then_a_route() {
     );
     server.stop().await;
 }
+
+#[tokio::test]
+async fn viewer_svg_endpoint_draws_routes_and_diffs_and_names_bad_parameters() {
+    let server = TestServer::read_only().await;
+    // A second revision with one more room (and its door).
+    nrgdb::store::Store::open(&server.db)
+        .unwrap()
+        .import(
+            "building",
+            &nrgdb::fixtures::corridor_building(7),
+            nrgdb::store::ImportMeta::new("one more room", "test"),
+        )
+        .unwrap();
+    let page = server.get("/").await;
+    assert_eq!(
+        page.header("content-type"),
+        Some("text/html; charset=utf-8")
+    );
+    assert!(page.text().contains("<title>nrgdb viewer</title>"));
+    let plain = server.get("/maps/building/revisions/1/svg").await;
+    assert_eq!(plain.status, 200);
+    assert_eq!(plain.header("content-type"), Some("image/svg+xml"));
+    let text = plain.text();
+    assert!(text.starts_with("<svg") && text.contains("data-px-per-m="));
+    assert_eq!(text.matches("<path class=\"space ").count(), 13); // corridor + 6 rooms + 6 doors
+    assert!(!text.contains("id=\"route\""));
+    let routed = server
+        .get("/maps/building/revisions/1/svg?route=Office%201,12")
+        .await;
+    assert_eq!(routed.status, 200, "{}", routed.text());
+    assert_eq!(routed.text().matches("id=\"route\"").count(), 1);
+    let diff = server
+        .get("/maps/building/revisions/latest/svg?diff=1")
+        .await;
+    assert_eq!(diff.status, 200, "{}", diff.text());
+    assert_eq!(
+        diff.text().matches("class=\"diff added\"").count(),
+        2,
+        "{}",
+        diff.text()
+    );
+    assert_eq!(diff.text().matches("class=\"diff changed\"").count(), 1);
+    server
+        .get("/maps/building/revisions/1/svg?route=10")
+        .await
+        .assert_error(400, "route");
+    server
+        .get("/maps/building/revisions/1/svg?route=10,999")
+        .await
+        .assert_error(404, "route");
+    server
+        .get("/maps/building/revisions/1/svg?diff=x")
+        .await
+        .assert_error(400, "diff");
+    server
+        .get("/maps/building/revisions/1/svg?colour=red")
+        .await
+        .assert_error(400, "colour");
+    assert_eq!(server.get("/maps/nope/revisions/1/svg").await.status, 404);
+    assert_eq!(
+        server
+            .get("/maps/building/revisions/1/svg?diff=9")
+            .await
+            .status,
+        404
+    );
+    server.stop().await;
+}
