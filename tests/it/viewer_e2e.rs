@@ -141,6 +141,28 @@ async fn viewer_draws_a_requested_route_in_headless_chromium() {
     );
     // The side panel shows the route's length and steps.
     assert!(dom.contains("From 10 to 12:"), "no route summary");
+    // Two revisions compared: the page shows the diff the server drew.
+    nrgdb::store::Store::open(&server.db)
+        .unwrap()
+        .import(
+            "building",
+            &nrgdb::fixtures::corridor_building(7),
+            nrgdb::store::ImportMeta::new("one more room", "test"),
+        )
+        .unwrap();
+    let url = format!("http://{}/?map=building&rev=2&diff=1", server.addr);
+    let dom = tokio::task::spawn_blocking({
+        let chromium = chromium.to_string();
+        move || dump_dom(&chromium, &url)
+    })
+    .await
+    .unwrap();
+    assert!(
+        dom.contains("data-state=\"ready\""),
+        "{}",
+        &dom[..dom.len().min(3000)]
+    );
+    assert_eq!(dom.matches("class=\"diff added\"").count(), 2);
     server.stop().await;
 }
 
