@@ -133,6 +133,26 @@ impl Browser {
             );
         }
     }
+
+    /// A wheel turn at page coordinates (positive `delta_y` scrolls down).
+    pub fn wheel(&mut self, x: f64, y: f64, delta_y: f64) {
+        self.call(
+            "Input.dispatchMouseEvent",
+            json!({"type": "mouseWheel", "x": x, "y": y, "deltaX": 0, "deltaY": delta_y}),
+        );
+    }
+
+    /// A drag with the left button from one point to another, in steps.
+    pub fn drag(&mut self, from: (f64, f64), to: (f64, f64)) {
+        let press = |kind: &str, (x, y): (f64, f64)| json!({"type": kind, "x": x, "y": y, "button": "left", "buttons": 1, "clickCount": 1});
+        self.call("Input.dispatchMouseEvent", press("mousePressed", from));
+        for k in 1..=5 {
+            let t = f64::from(k) / 5.0;
+            let p = (from.0 + (to.0 - from.0) * t, from.1 + (to.1 - from.1) * t);
+            self.call("Input.dispatchMouseEvent", press("mouseMoved", p));
+        }
+        self.call("Input.dispatchMouseEvent", press("mouseReleased", to));
+    }
 }
 
 impl Drop for Browser {

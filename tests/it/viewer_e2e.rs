@@ -189,6 +189,26 @@ async fn viewer_clicks_show_details_then_a_route() {
         b.call("Page.navigate", serde_json::json!({ "url": url }));
         let ready = b.wait_for("document.body && document.body.dataset.state === 'ready'", Duration::from_secs(30));
         assert!(ready, "the page never became ready: {}", b.eval("document.body.outerHTML.slice(0, 2000)"));
+        // Zoom out with the wheel, then pan by dragging: the view box changes,
+        // and a drag is not a click (no space picked).
+        let view = |b: &mut crate::viewer_cdp::Browser| -> Vec<f64> {
+            b.eval("document.querySelector('#stage svg').getAttribute('viewBox')")
+                .as_str()
+                .unwrap_or("")
+                .split(' ')
+                .filter_map(|v| v.parse().ok())
+                .collect()
+        };
+        let home = view(&mut b);
+        let (x, y) = centre_of(&mut b, 1);
+        b.wheel(x, y, 200.0);
+        let zoomed = view(&mut b);
+        assert!(zoomed[2] > home[2] * 1.1, "wheel did not zoom out: {home:?} → {zoomed:?}");
+        b.drag((x, y), (x + 40.0, y + 20.0));
+        let panned = view(&mut b);
+        assert!(panned[0] < zoomed[0] && panned[1] < zoomed[1], "drag did not pan: {zoomed:?} → {panned:?}");
+        assert_eq!(panned[2], zoomed[2]);
+        assert!(b.eval("document.getElementById('details').textContent") == "Click a space.");
         // Click room 10: its details appear.
         let (x, y) = centre_of(&mut b, 10);
         b.click(x, y);
