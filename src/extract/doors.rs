@@ -22,9 +22,9 @@ type Crossing = (u32, u32, f32);
 /// Every border between two labels with its passage width (twice the
 /// largest distance to an obstacle along it). Two regions may meet in
 /// several places (a room with two doorways onto one corridor): each
-/// separate stretch of border (pixels more than 2 px apart) is a border of
-/// its own.
-pub(crate) fn borders(labels: &Labels, dist: &[f32]) -> Vec<Border> {
+/// separate stretch of border (pixels more than `join_px` apart) is a
+/// border of its own.
+pub(crate) fn borders(labels: &Labels, dist: &[f32], join_px: i64) -> Vec<Border> {
     let (w, h) = (labels.width as usize, labels.height as usize);
     let d = &labels.data;
     // Per pair: (pixel on one side, pixel on the other, half width there).
@@ -53,7 +53,7 @@ pub(crate) fn borders(labels: &Labels, dist: &[f32]) -> Vec<Border> {
     }
     let mut out = Vec::new();
     for (pair, list) in crossings {
-        for stretch in stretches(&list, w) {
+        for stretch in stretches(&list, w, join_px.max(1)) {
             let half = stretch.iter().map(|&k| list[k].2).fold(0.0f32, f32::max);
             out.push(Border {
                 pair,
@@ -68,9 +68,9 @@ pub(crate) fn borders(labels: &Labels, dist: &[f32]) -> Vec<Border> {
     out
 }
 
-/// Groups crossings whose first pixels lie within 2 px (Chebyshev) of each
+/// Groups crossings whose first pixels lie within `join_px` (Chebyshev) of each
 /// other, transitively; returns index lists, in order of first crossing.
-fn stretches(list: &[Crossing], w: usize) -> Vec<Vec<usize>> {
+fn stretches(list: &[Crossing], w: usize, join_px: i64) -> Vec<Vec<usize>> {
     let at: HashMap<u32, usize> = list.iter().enumerate().map(|(k, c)| (c.0, k)).collect();
     let mut group = vec![usize::MAX; list.len()];
     let mut out: Vec<Vec<usize>> = Vec::new();
@@ -86,8 +86,8 @@ fn stretches(list: &[Crossing], w: usize) -> Vec<Vec<usize>> {
             let p = list[members[next]].0 as i64;
             next += 1;
             let (x, y) = (p % w as i64, p / w as i64);
-            for dy in -2..=2i64 {
-                for dx in -2..=2i64 {
+            for dy in -join_px..=join_px {
+                for dx in -join_px..=join_px {
                     let (nx, ny) = (x + dx, y + dy);
                     if nx < 0 || ny < 0 || nx >= w as i64 {
                         continue;
@@ -178,7 +178,7 @@ mod tests {
         let dist = vec![
             1.0f32, 1., 1., 1., 1., 1., 1., 2., 2., 2., 2., 1., 1., 1., 1., 1., 1., 1.,
         ];
-        let b = borders(&labels, &dist);
+        let b = borders(&labels, &dist, 2);
         assert_eq!(b.len(), 1);
         assert_eq!(b[0].pair, (1, 2));
         assert_eq!(b[0].width_px, 4.0);
@@ -196,7 +196,7 @@ mod tests {
             data: vec![1, 1, 1, 1, 1, 1, 1, 1, 2, 2, 0, 0, 0, 0, 2, 2],
             count: 2,
         };
-        let b = borders(&labels, &[1.0; 16]);
+        let b = borders(&labels, &[1.0; 16], 2);
         assert_eq!(b.len(), 2);
         assert!(b.iter().all(|b| b.pair == (1, 2) && b.pixels.len() == 4));
     }

@@ -74,6 +74,15 @@ pub struct ExtractParams {
     /// A boundary between two spaces whose passage is at most this wide is a
     /// door; wider boundaries are open connections. Default 1.6 m.
     pub door_width_max_m: f64,
+    /// A border is a door only where it is a constriction: at most this
+    /// fraction of the widest passage of the narrower space on either side
+    /// (so a corridor's own width, between two parts of it, is no door).
+    /// 1 = any border under `door_width_max_m`. Default 0.8.
+    pub door_constriction: f64,
+    /// Stretches of border between the same two spaces closer than this are
+    /// one doorway (a speck of noise does not make two doors); farther apart
+    /// they are separate doors. Default 0.5 m.
+    pub door_join_m: f64,
     /// Thickness of a door space across the doorway. Default 0.3 m.
     pub door_depth_m: f64,
     /// Spaces smaller than this merge into their longest-bordering neighbour
@@ -103,6 +112,8 @@ impl Default for ExtractParams {
             core_radius_m: 0.5,
             split_min_core_m2: 1.0,
             door_width_max_m: 1.6,
+            door_constriction: 0.8,
+            door_join_m: 0.5,
             door_depth_m: 0.3,
             min_room_area_m2: 1.0,
             corridor_min_elongation: 2.5,
@@ -125,6 +136,8 @@ impl ExtractParams {
             ("core_radius_m", self.core_radius_m),
             ("split_min_core_m2", self.split_min_core_m2),
             ("door_width_max_m", self.door_width_max_m),
+            ("door_constriction", self.door_constriction),
+            ("door_join_m", self.door_join_m),
             ("door_depth_m", self.door_depth_m),
             ("min_room_area_m2", self.min_room_area_m2),
             ("corridor_min_elongation", self.corridor_min_elongation),

@@ -128,9 +128,17 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         (params.min_room_area_m2 / (res * res)).ceil() as usize,
     );
     clock.lap("merge");
-    let all = borders(&regions, &dist);
+    let all = borders(&regions, &dist, (params.door_join_m / res).round() as i64);
     let door_px = params.door_width_max_m / res;
-    let doors: Vec<&Border> = all.iter().filter(|b| b.width_px <= door_px).collect();
+    let widest = widest_passages(&regions, &dist);
+    let constriction = |b: &Border| {
+        let (a, c) = (b.pair.0 as usize, b.pair.1 as usize);
+        params.door_constriction * widest[a].min(widest[c])
+    };
+    let doors: Vec<&Border> = all
+        .iter()
+        .filter(|b| b.width_px <= door_px && b.width_px <= constriction(b))
+        .collect();
     let door_pairs: Vec<(u32, u32)> = doors.iter().map(|b| b.pair).collect();
     let n_regions = regions.count;
     let mut labels = cut_doors(&regions, &doors, (params.door_depth_m / res).max(1.0));
@@ -165,6 +173,16 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         pixel_centroids,
         timings: clock.timings,
     })
+}
+
+/// The widest inscribed diameter (px) of every label.
+fn widest_passages(labels: &Labels, dist: &[f32]) -> Vec<f64> {
+    let mut widest = vec![0.0f64; labels.count as usize + 1];
+    for (&l, &d) in labels.data.iter().zip(dist) {
+        let w = &mut widest[l as usize];
+        *w = w.max(2.0 * f64::from(d));
+    }
+    widest
 }
 
 /// (area in px, widest inscribed diameter in px) of every label.
