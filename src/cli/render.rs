@@ -45,6 +45,9 @@ pub struct Args {
     /// Leave out the legend and the scale bar.
     #[arg(long)]
     pub no_legend: bool,
+    /// Leave out the graph (nodes and edges).
+    #[arg(long)]
+    pub no_graph: bool,
     #[command(flatten)]
     pub db: DbArg,
 }
@@ -87,6 +90,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         px_per_m: args.scale,
         labels: args.labels,
         legend: !args.no_legend,
+        graph: !args.no_graph,
         title: Some(title),
         ..RenderOptions::default()
     };
