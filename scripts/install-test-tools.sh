@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Installs the system tools nrgdb's tests use, when missing: xmllint
-# (libxml2-utils) for IndoorGML schema validation. Safe to run repeatedly;
+# (libxml2-utils) for IndoorGML schema validation, and Chromium (Debian's
+# `chromium`) for the web viewer's end-to-end test. Safe to run repeatedly;
 # without root or apt-get it only says what is missing (the tests that need a
 # tool then skip with a notice, unless NRGDB_REQUIRE_SHARED=1).
 set -u
 need=()
 command -v xmllint >/dev/null 2>&1 || need+=(libxml2-utils)
+[ -x /usr/bin/chromium ] || command -v chromium >/dev/null 2>&1 || need+=(chromium)
 [ ${#need[@]} -eq 0 ] && exit 0
 if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
   echo "install-test-tools: installing ${need[*]}" >&2

@@ -1,24 +1,30 @@
-//! `nrgdb eval`: extraction scored against a ground-truth room image.
+//! `nrgdb eval`: extraction scored against a ground-truth room image, for
+//! one map or a folder of maps (with a progress bar on a terminal).
 
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr};
-use nrgdb::eval::{evaluate, load_ground_truth};
+use nrgdb::eval::{Evaluation, evaluate, load_ground_truth};
 use nrgdb::extract::extract;
 
 use super::extract::MapArgs;
+use super::progress;
 
 /// Scores an extraction against a ground truth (IPA room-segmentation recall/precision,
 /// doors, connections).
+///
+/// Several maps or a folder: each map's ground truth is `<stem>_gt.png` beside
+/// it; maps without one are skipped. Prints one row per map and the means.
 #[derive(Debug, clap::Args)]
 pub struct Args {
     #[command(flatten)]
     pub map: MapArgs,
-    /// Ground-truth image: rooms white (> 250), doorways closed by dark lines (IPA style).
+    /// Ground-truth image: rooms white (> 250), doorways closed by dark lines (IPA style)
+    /// [default: `<stem>_gt.png` beside the map].
     #[arg(long)]
-    pub gt: PathBuf,
+    pub gt: Option<PathBuf>,
     /// Print JSON instead of a table.
     #[arg(long)]
     pub json: bool,
@@ -26,44 +32,181 @@ pub struct Args {
 
 /// Runs `nrgdb eval`.
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
-    let (grid, params) = args.map.load()?;
-    let gt = load_ground_truth(&args.gt, &grid).into_diagnostic()?;
+    let inputs = args.map.inputs()?;
+    match inputs.as_slice() {
+        [map] if !args.map.maps.iter().any(|p| p.is_dir()) => {
+            let gt = match &args.gt {
+                Some(gt) => gt.clone(),
+                None => sibling_gt(map).ok_or_else(|| {
+                    miette::miette!(
+                        "{}: no ground truth given and no {} beside it (use --gt GT.png)",
+                        map.display(),
+                        gt_name(map)
+                    )
+                })?,
+            };
+            let e = evaluate_one(&args.map, map, &gt)?;
+            print_one(&e, args.json, out).into_diagnostic()?;
+            Ok(ExitCode::SUCCESS)
+        }
+        _ => run_many(&args, &inputs, out),
+    }
+}
+
+fn gt_name(map: &Path) -> String {
+    let stem = map
+        .file_stem()
+        .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
+    format!("{stem}_gt.png")
+}
+
+/// `<stem>_gt.png` beside the map, when it exists.
+fn sibling_gt(map: &Path) -> Option<PathBuf> {
+    let path = map.with_file_name(gt_name(map));
+    path.is_file().then_some(path)
+}
+
+fn evaluate_one(args: &MapArgs, map: &Path, gt: &Path) -> miette::Result<Evaluation> {
+    let (grid, params) = args.load(map)?;
+    let gt = load_ground_truth(gt, &grid).into_diagnostic()?;
     let x = extract(&grid, &params)
         .into_diagnostic()
-        .wrap_err_with(|| format!("{}: extraction failed", args.map.map.display()))?;
-    let e = evaluate(&gt, &x, grid.resolution);
+        .wrap_err_with(|| format!("{}: extraction failed", map.display()))?;
+    Ok(evaluate(&gt, &x, grid.resolution))
+}
+
+fn run_many(args: &Args, inputs: &[PathBuf], out: &mut dyn Write) -> miette::Result<ExitCode> {
+    if args.gt.is_some() {
+        miette::bail!(
+            "--gt names one ground truth: with several maps each uses <stem>_gt.png beside it"
+        );
+    }
+    let bar = progress::bar(inputs.len() as u64, "eval");
+    let mut rows: Vec<(String, Evaluation)> = Vec::new();
+    let mut failed = 0usize;
+    let mut notes = Vec::new();
+    for map in inputs {
+        let stem = map
+            .file_stem()
+            .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
+        bar.set_message(stem.clone());
+        match sibling_gt(map) {
+            None => notes.push(format!("{stem}: skipped, no {} beside it", gt_name(map))),
+            Some(gt) => match evaluate_one(&args.map, map, &gt) {
+                Ok(e) => rows.push((stem, e)),
+                Err(e) => {
+                    failed += 1;
+                    bar.suspend(|| eprintln!("{stem}: {e:?}"));
+                }
+            },
+        }
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
     if args.json {
-        let text = serde_json::to_string_pretty(&e).into_diagnostic()?;
+        let list: Vec<serde_json::Value> = rows
+            .iter()
+            .map(|(name, e)| serde_json::json!({"map": name, "evaluation": e}))
+            .collect();
+        let text = serde_json::to_string_pretty(&list).into_diagnostic()?;
         writeln!(out, "{text}").into_diagnostic()?;
     } else {
-        let r = e.rooms;
-        writeln!(out, "rooms       recall {:6.2} %  precision {:6.2} %  (per-room mean, IPA \"micro\"; {} GT rooms, {} segments)",
-            100.0 * r.recall_micro, 100.0 * r.precision_micro, r.gt_rooms, r.segments).into_diagnostic()?;
-        writeln!(
-            out,
-            "rooms       recall {:6.2} %  precision {:6.2} %  (pixel-weighted, IPA \"macro\")",
-            100.0 * r.recall_macro,
-            100.0 * r.precision_macro
-        )
-        .into_diagnostic()?;
-        writeln!(
-            out,
-            "doors       recall {:6.2} %  precision {:6.2} %  ({} GT doorway lines, {} detected)",
-            100.0 * e.doors.recall,
-            100.0 * e.doors.precision,
-            e.doors.gt,
-            e.doors.detected
-        )
-        .into_diagnostic()?;
-        writeln!(
-            out,
-            "connections recall {:6.2} %  precision {:6.2} %  ({} GT, {} detected)",
-            100.0 * e.connections.recall,
-            100.0 * e.connections.precision,
-            e.connections.gt,
-            e.connections.detected
-        )
-        .into_diagnostic()?;
+        print_table(&rows, out).into_diagnostic()?;
+        for note in &notes {
+            writeln!(out, "{note}").into_diagnostic()?;
+        }
     }
-    Ok(ExitCode::SUCCESS)
+    Ok(if failed > 0 {
+        ExitCode::from(2)
+    } else if rows.is_empty() {
+        ExitCode::from(1)
+    } else {
+        ExitCode::SUCCESS
+    })
+}
+
+fn cells(e: &Evaluation) -> [f64; 8] {
+    [
+        e.rooms.recall_micro,
+        e.rooms.precision_micro,
+        e.rooms.recall_macro,
+        e.rooms.precision_macro,
+        e.doors.recall,
+        e.doors.precision,
+        e.connections.recall,
+        e.connections.precision,
+    ]
+}
+
+fn print_table(rows: &[(String, Evaluation)], out: &mut dyn Write) -> std::io::Result<()> {
+    writeln!(
+        out,
+        "{:<28} {:>6} {:>6} {:>6} {:>6} | {:>6} {:>6} | {:>6} {:>6}",
+        "map (%)", "R", "P", "Rmac", "Pmac", "doorR", "doorP", "connR", "connP"
+    )?;
+    let mut sum = [0.0; 8];
+    let row = |out: &mut dyn Write, name: &str, c: &[f64; 8]| {
+        writeln!(
+            out,
+            "{name:<28} {:>6.1} {:>6.1} {:>6.1} {:>6.1} | {:>6.1} {:>6.1} | {:>6.1} {:>6.1}",
+            100.0 * c[0],
+            100.0 * c[1],
+            100.0 * c[2],
+            100.0 * c[3],
+            100.0 * c[4],
+            100.0 * c[5],
+            100.0 * c[6],
+            100.0 * c[7]
+        )
+    };
+    for (name, e) in rows {
+        let c = cells(e);
+        for (s, v) in sum.iter_mut().zip(c) {
+            *s += v;
+        }
+        row(out, name, &c)?;
+    }
+    if !rows.is_empty() {
+        let mean = sum.map(|s| s / rows.len() as f64);
+        row(out, &format!("mean of {}", rows.len()), &mean)?;
+    }
+    Ok(())
+}
+
+fn print_one(e: &Evaluation, json: bool, out: &mut dyn Write) -> std::io::Result<()> {
+    if json {
+        let text = serde_json::to_string_pretty(e).map_err(std::io::Error::other)?;
+        return writeln!(out, "{text}");
+    }
+    let r = &e.rooms;
+    writeln!(
+        out,
+        "rooms       recall {:6.2} %  precision {:6.2} %  (per-room mean, IPA \"micro\"; {} GT rooms, {} segments)",
+        100.0 * r.recall_micro,
+        100.0 * r.precision_micro,
+        r.gt_rooms,
+        r.segments
+    )?;
+    writeln!(
+        out,
+        "rooms       recall {:6.2} %  precision {:6.2} %  (pixel-weighted, IPA \"macro\")",
+        100.0 * r.recall_macro,
+        100.0 * r.precision_macro
+    )?;
+    writeln!(
+        out,
+        "doors       recall {:6.2} %  precision {:6.2} %  ({} GT doorway lines, {} detected)",
+        100.0 * e.doors.recall,
+        100.0 * e.doors.precision,
+        e.doors.gt,
+        e.doors.detected
+    )?;
+    writeln!(
+        out,
+        "connections recall {:6.2} %  precision {:6.2} %  ({} GT, {} detected)",
+        100.0 * e.connections.recall,
+        100.0 * e.connections.precision,
+        e.connections.gt,
+        e.connections.detected
+    )
 }

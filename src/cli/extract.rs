@@ -7,12 +7,18 @@ use std::process::ExitCode;
 use miette::{IntoDiagnostic, WrapErr};
 use nrgdb::extract::{ExtractParams, Extraction, Method, extract};
 use nrgdb::grid::{LoadOptions, OccupancyGrid, load_image, load_map};
+use nrgdb::render::{RenderOptions, Scene};
+
+use super::progress;
+use super::render::{PictureFormat, write_picture};
 
 /// Map input options shared by `extract` and `eval`.
 #[derive(Debug, clap::Args)]
 pub struct MapArgs {
-    /// The map: a ROS map_server YAML, or a bare PGM/PNG with --resolution.
-    pub map: PathBuf,
+    /// The map(s): ROS map_server YAMLs, bare PGM/PNG images with --resolution,
+    /// or folders (every .yaml in them).
+    #[arg(required = true, value_name = "MAP")]
+    pub maps: Vec<PathBuf>,
     /// Metres per pixel for a bare image (ignored for a YAML).
     #[arg(long)]
     pub resolution: Option<f64>,
@@ -43,27 +49,48 @@ pub struct MapArgs {
 }
 
 impl MapArgs {
-    /// Loads the map and resolves the parameters.
-    pub fn load(&self) -> miette::Result<(OccupancyGrid, ExtractParams)> {
+    /// The input maps: each file given, and every `.yaml` of each folder
+    /// given (sorted by name).
+    pub fn inputs(&self) -> miette::Result<Vec<PathBuf>> {
+        let mut out = Vec::new();
+        for path in &self.maps {
+            if !path.is_dir() {
+                out.push(path.clone());
+                continue;
+            }
+            let entries = std::fs::read_dir(path)
+                .into_diagnostic()
+                .wrap_err_with(|| format!("{}: cannot list the folder", path.display()))?;
+            let mut found: Vec<PathBuf> = entries
+                .filter_map(Result::ok)
+                .map(|e| e.path())
+                .filter(|p| is_yaml(p))
+                .collect();
+            if found.is_empty() {
+                miette::bail!("{}: no .yaml map in this folder", path.display());
+            }
+            found.sort();
+            out.extend(found);
+        }
+        Ok(out)
+    }
+
+    /// Loads one map and resolves the parameters.
+    pub fn load(&self, map: &Path) -> miette::Result<(OccupancyGrid, ExtractParams)> {
         let opts = LoadOptions {
             free_min_grey: self.free_min_grey,
             max_pixels: self.max_pixels,
         };
-        let is_yaml = self
-            .map
-            .extension()
-            .and_then(|e| e.to_str())
-            .is_some_and(|e| e.eq_ignore_ascii_case("yaml") || e.eq_ignore_ascii_case("yml"));
-        let grid = if is_yaml {
-            load_map(&self.map, &opts).into_diagnostic()?
+        let grid = if is_yaml(map) {
+            load_map(map, &opts).into_diagnostic()?
         } else {
             let res = self.resolution.ok_or_else(|| {
                 miette::miette!(
                     "{}: a bare image needs --resolution (metres per pixel)",
-                    self.map.display()
+                    map.display()
                 )
             })?;
-            load_image(&self.map, res, &opts).into_diagnostic()?
+            load_image(map, res, &opts).into_diagnostic()?
         };
         let mut params = match &self.params {
             Some(p) => {
@@ -97,7 +124,17 @@ impl MapArgs {
     }
 }
 
+/// Whether a path names a ROS map YAML.
+pub fn is_yaml(path: &Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("yaml") || e.eq_ignore_ascii_case("yml"))
+}
+
 /// Extracts an IndoorGML NRG (rooms, corridors, doors, connections) from an occupancy grid map.
+///
+/// With several maps (or a folder), give `--out-dir DIR`: each map's outputs
+/// are written there as `<stem>.<format>` for each of `--formats`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
     #[command(flatten)]
@@ -111,17 +148,55 @@ pub struct Args {
     /// Write a 16-bit grey PNG of the map's size: each pixel its space id, 0 elsewhere.
     #[arg(long)]
     pub labels: Option<PathBuf>,
+    /// Write a picture of the NRG over its map (.png or .svg; see `nrgdb render`).
+    #[arg(long, value_name = "FILE.png|FILE.svg")]
+    pub png: Option<PathBuf>,
+    /// Folder for the outputs of several maps (created if missing).
+    #[arg(long, value_name = "DIR")]
+    pub out_dir: Option<PathBuf>,
+    /// What to write per map into --out-dir: gml, json, labels (`<stem>_labels.png`), png, svg.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        default_value = "gml,json",
+        value_name = "LIST"
+    )]
+    pub formats: Vec<OutputFormat>,
     /// Print each stage's time.
     #[arg(long)]
     pub timings: bool,
 }
 
+/// One output of a batch extraction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum OutputFormat {
+    /// IndoorGML 1.0.3, `<stem>.gml`.
+    Gml,
+    /// The graph as JSON, `<stem>.json`.
+    Json,
+    /// The label image, `<stem>_labels.png`.
+    Labels,
+    /// A picture, `<stem>.png`.
+    Png,
+    /// A picture, `<stem>.svg`.
+    Svg,
+}
+
 /// Runs `nrgdb extract`.
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
-    let (grid, params) = args.map.load()?;
+    let inputs = args.map.inputs()?;
+    if inputs.len() > 1 || args.out_dir.is_some() {
+        return run_batch(&args, &inputs, out);
+    }
+    let Some(map) = inputs.first() else {
+        miette::bail!("no map given (nrgdb extract MAP.yaml)");
+    };
+    let spinner = progress::spinner(format!("extracting {}", map.display()));
+    let (grid, params) = args.map.load(map)?;
     let x = extract(&grid, &params)
         .into_diagnostic()
-        .wrap_err_with(|| format!("{}: extraction failed", args.map.map.display()))?;
+        .wrap_err_with(|| format!("{}: extraction failed", map.display()))?;
+    spinner.finish_and_clear();
     // Encode everything before writing anything, so a failure leaves no half output.
     let gml = args
         .out
@@ -136,6 +211,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         ),
         None => None,
     };
+    let picture_format = args.png.as_deref().map(PictureFormat::of).transpose()?;
     if let (Some(path), Some(gml)) = (&args.out, gml) {
         write_out(path, gml.as_bytes())?;
     }
@@ -144,6 +220,9 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     }
     if let (Some(path), Some(png)) = (&args.labels, png) {
         write_out(path, &png)?;
+    }
+    if let (Some(path), Some(format)) = (&args.png, picture_format) {
+        picture(path, format, &x, &grid, map)?;
     }
     summary(&x, out).into_diagnostic()?;
     if args.timings {
@@ -155,6 +234,138 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         writeln!(out, "{:>10}  {:8.2} ms", "total", total.as_secs_f64() * 1e3).into_diagnostic()?;
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Draws the extraction over its map.
+fn picture(
+    path: &Path,
+    format: PictureFormat,
+    x: &Extraction,
+    grid: &OccupancyGrid,
+    map: &Path,
+) -> miette::Result<()> {
+    let options = RenderOptions {
+        title: map.file_name().map(|n| n.to_string_lossy().into_owned()),
+        ..RenderOptions::default()
+    };
+    let scene = Scene {
+        nrg: &x.nrg,
+        map: Some(grid),
+        route: None,
+        diff: None,
+        options: &options,
+    };
+    write_picture(path, format, &scene)
+}
+
+/// Extracts several maps into `--out-dir`, with a progress bar on a
+/// terminal. A map that fails is reported and skipped; the exit code is 2
+/// when any failed.
+fn run_batch(args: &Args, inputs: &[PathBuf], out: &mut dyn Write) -> miette::Result<ExitCode> {
+    if args.out.is_some() || args.json.is_some() || args.labels.is_some() || args.png.is_some() {
+        miette::bail!(
+            "--out, --json, --labels and --png name one file each: with several maps use \
+             --out-dir DIR --formats gml,json,labels,png,svg"
+        );
+    }
+    let Some(dir) = &args.out_dir else {
+        miette::bail!(
+            "{} maps given: say where their outputs go with --out-dir DIR (and --formats)",
+            inputs.len()
+        );
+    };
+    let stems: Vec<String> = inputs
+        .iter()
+        .map(|p| {
+            p.file_stem()
+                .map_or_else(|| "map".to_string(), |s| s.to_string_lossy().into_owned())
+        })
+        .collect();
+    for (i, s) in stems.iter().enumerate() {
+        if let Some(j) = stems[..i].iter().position(|t| t == s) {
+            miette::bail!(
+                "{} and {} would both write {s}.*: give maps with different file names",
+                inputs[j].display(),
+                inputs[i].display()
+            );
+        }
+    }
+    std::fs::create_dir_all(dir)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("{}: cannot create the output folder", dir.display()))?;
+    let bar = progress::bar(inputs.len() as u64, "extract");
+    let mut failed = 0usize;
+    for (map, stem) in inputs.iter().zip(&stems) {
+        bar.set_message(stem.clone());
+        match extract_into(args, map, dir, stem) {
+            Ok(x) => {
+                let mut line = Vec::new();
+                write!(line, "{stem}: ").into_diagnostic()?;
+                summary(&x, &mut line).into_diagnostic()?;
+                bar.suspend(|| out.write_all(&line)).into_diagnostic()?;
+            }
+            Err(e) => {
+                failed += 1;
+                bar.suspend(|| eprintln!("{stem}: {e:?}"));
+            }
+        }
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    writeln!(
+        out,
+        "{} of {} maps extracted into {}",
+        inputs.len() - failed,
+        inputs.len(),
+        dir.display()
+    )
+    .into_diagnostic()?;
+    Ok(if failed == 0 {
+        ExitCode::SUCCESS
+    } else {
+        ExitCode::from(2)
+    })
+}
+
+/// Extracts one map of a batch and writes its outputs.
+fn extract_into(args: &Args, map: &Path, dir: &Path, stem: &str) -> miette::Result<Extraction> {
+    let (grid, params) = args.map.load(map)?;
+    let x = extract(&grid, &params)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("{}: extraction failed", map.display()))?;
+    for format in &args.formats {
+        match format {
+            OutputFormat::Gml => write_out(
+                &dir.join(format!("{stem}.gml")),
+                nrgdb::indoorgml::write_string(&nrgdb::indoorgml::from_nrg(&x.nrg)).as_bytes(),
+            )?,
+            OutputFormat::Json => {
+                write_out(&dir.join(format!("{stem}.json")), x.to_json().as_bytes())?
+            }
+            OutputFormat::Labels => {
+                let png = x
+                    .labels_png()
+                    .into_diagnostic()
+                    .wrap_err("cannot encode the label image")?;
+                write_out(&dir.join(format!("{stem}_labels.png")), &png)?;
+            }
+            OutputFormat::Png => picture(
+                &dir.join(format!("{stem}.png")),
+                PictureFormat::Png,
+                &x,
+                &grid,
+                map,
+            )?,
+            OutputFormat::Svg => picture(
+                &dir.join(format!("{stem}.svg")),
+                PictureFormat::Svg,
+                &x,
+                &grid,
+                map,
+            )?,
+        }
+    }
+    Ok(x)
 }
 
 fn write_out(path: &Path, bytes: &[u8]) -> miette::Result<()> {

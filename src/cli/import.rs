@@ -32,7 +32,19 @@ pub struct Args {
 
 /// Runs `nrgdb import`.
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
+    // A spinner on a terminal for big files (reading and storing take a while).
+    let bytes = std::fs::metadata(&args.file).map_or(0, |m| m.len());
+    let spinner = if bytes > 1 << 20 {
+        super::progress::spinner(format!(
+            "reading {} ({:.1} MB)",
+            args.file.display(),
+            bytes as f64 / 1e6
+        ))
+    } else {
+        indicatif::ProgressBar::hidden()
+    };
     let model = load_model(&args.file)?;
+    spinner.set_message(format!("storing {} spaces", model.nrg.spaces().len()));
     let name = args.file.file_name().map_or_else(
         || args.file.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
@@ -45,6 +57,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         .import_with_grid(&args.map, &model.nrg, meta, model.grid.as_ref())
         .into_diagnostic()
         .wrap_err_with(|| format!("importing {} into map '{}'", args.file.display(), args.map))?;
+    spinner.finish_and_clear();
     let r = &done.revision;
     writeln!(
         out,

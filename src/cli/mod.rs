@@ -23,7 +23,9 @@ mod map_log;
 mod maps;
 mod model_file;
 mod name;
+mod progress;
 pub mod query;
+pub mod render;
 pub mod repl;
 mod serve;
 mod simulate;
@@ -83,6 +85,8 @@ pub enum Command {
     Name(name::Args),
     /// Show the history of a map with messages.
     Log(maps::LogArgs),
+    /// Draw a model as a picture (PNG or SVG): spaces by kind over the map, graph, route, diff.
+    Render(render::Args),
     /// Serve the database as an HTTP JSON navigation API.
     Serve(serve::Args),
     /// Compare two revisions (or two files): what was added, removed, split, merged, renamed.
@@ -109,6 +113,7 @@ pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
         Command::Export(args) => export::run(args, out),
         Command::Name(args) => name::run(args, out),
         Command::Log(args) => maps::run_log(args, out),
+        Command::Render(args) => render::run(args, out),
         Command::Serve(args) => serve::run(args, out),
         Command::Diff(args) => diff::run(args, out),
         Command::Apply(args) => apply::run(args, out),

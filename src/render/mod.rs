@@ -1,9 +1,42 @@
-//! Pictures for people. For now: the occupancy map with each space
-//! painted by kind and a route on top ([`kind_picture`]), as PNG.
+//! Pictures for people: a model over its occupancy map, spaces filled by
+//! kind (Okabe–Ito, colour-blind safe), the graph, labels, a route, a diff,
+//! a legend and a scale bar in metres, as SVG (always) or PNG (feature
+//! `render`, tiny-skia).
 //!
-//! Uses grid, imaging labels and the model; knows nothing of SQL, HTTP or
-//! the terminal.
+//! A [`Scene`] (metres, map frame) is laid out once by [`layout`] through
+//! one [`MapTransform`] into a [`Drawing`] (pixels, y down); each back end
+//! only draws that display list, so SVG and PNG show the same picture.
+//! [`kind_picture`] is the older label-image picture used by the demo.
+//!
+//! Uses grid, model, diff's space matcher ([`diff_overlay`]) and (for the
+//! demo picture) imaging labels; takes routes as a plain overlay. Knows
+//! nothing of SQL, HTTP or the terminal.
 
+mod data_uri;
+mod drawing;
+mod error;
+#[cfg(feature = "render")]
+mod font;
+mod layout;
+mod legend;
+mod overlay;
 mod picture;
+#[cfg(feature = "render")]
+mod png;
+mod scene;
+pub mod style;
+mod svg;
+mod transform;
 
+pub use data_uri::{base64, grey_png_uri};
+pub use drawing::{Anchor, Drawing, Hatch, Item, Rgba, Stroke, Tag};
+pub use error::RenderError;
+pub use layout::layout;
+pub use legend::nice_length_m;
+pub use overlay::diff_overlay;
 pub use picture::{PALETTE, kind_picture, kind_picture_png};
+#[cfg(feature = "render")]
+pub use png::{drawing_pixmap, render_png};
+pub use scene::{DiffOverlay, LabelMode, OverlaySpace, RenderOptions, RouteOverlay, Scene};
+pub use svg::{drawing_svg, render_svg};
+pub use transform::MapTransform;

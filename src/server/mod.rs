@@ -33,6 +33,7 @@ pub mod routes;
 mod shutdown;
 mod state;
 mod timeout;
+pub mod viewer;
 
 use std::future::Future;
 use std::net::SocketAddr;

@@ -23,6 +23,11 @@ mod diff_edits;
 mod diff_props;
 mod diff_shared;
 mod diff_support;
+mod render_cli;
+mod render_golden;
+mod viewer_cdp;
+mod viewer_e2e;
+
 mod store;
 mod store_building;
 mod store_cli;

@@ -124,6 +124,8 @@ pub fn endpoints() -> Vec<Endpoint> {
         ep(M::GET, "/maps/{map}/locate", "The space containing a point (metres, map frame)", &spaces::LOCATE_PARAMS, get(spaces::locate)),
         ep(M::GET, "/maps/{map}/route", "Shortest route (or alternatives) between spaces, OSRM-shaped", &route::PARAMS, get(route::route)),
         ep(M::GET, "/maps/{map}/diff", "What changed between two revisions (spaces, connections, door widths), aligned when the frames differ", &diff::PARAMS, get(diff::diff)),
+        ep(M::GET, "/", "The web viewer (one HTML page)", &[], get(crate::server::viewer::page)),
+        ep(M::GET, "/maps/{map}/revisions/{rev}/svg", "A revision drawn as SVG, optionally with a route or a diff", &crate::server::viewer::SVG_PARAMS, get(crate::server::viewer::svg)),
         ep(M::POST, "/query", "Run query-language statements; JSON results", &query::PARAMS, post(query::query)),
     ]
 }

@@ -1,0 +1,278 @@
+//! `nrgdb render`: a model as a picture (PNG or SVG): spaces by kind over
+//! the occupancy map, the graph, labels, a route, a diff, a legend and a
+//! scale bar.
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+use miette::{IntoDiagnostic, WrapErr};
+use nrgdb::grid::{LoadOptions, OccupancyGrid, load_map};
+use nrgdb::model::{Nrg, SpaceId};
+use nrgdb::render::{LabelMode, RenderOptions, RouteOverlay, Scene, diff_overlay, render_svg};
+use nrgdb::route::{Budget, RouteGraph, RouteRequest, shortest_route};
+
+use super::db::{DbArg, parse_map_rev};
+use super::load_model;
+
+/// Draw a model as a picture: each space filled by its kind over the
+/// occupancy map, the graph with labels, optionally a route or the changes
+/// between two revisions, with a legend and a scale bar in metres.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// NAME[@REV] of a map in the database, or a model file (.gml, .json,
+    /// .geojson, or a .yaml occupancy map, extracted first and drawn behind).
+    pub model: String,
+    /// The picture to write; the extension picks the format (.png or .svg).
+    #[arg(long, value_name = "FILE.png|FILE.svg")]
+    pub out: PathBuf,
+    /// An occupancy map (ROS map YAML) to draw behind the model.
+    #[arg(long, value_name = "MAP.yaml")]
+    pub map: Option<PathBuf>,
+    /// Draw the shortest route between two spaces (ids or names).
+    #[arg(long, num_args = 2, value_names = ["FROM", "TO"])]
+    pub route: Option<Vec<String>>,
+    /// Draw what changed from A to B (revision numbers of the map, NAME@REV,
+    /// or model files); the picture shows B.
+    #[arg(long, num_args = 2, value_names = ["A", "B"])]
+    pub diff: Option<Vec<String>>,
+    /// Pixels per metre [default: the longer side about 1200 px].
+    #[arg(long, value_name = "PX_PER_M")]
+    pub scale: Option<f64>,
+    /// How spaces are labelled: names (name or id; doors unlabelled), ids, none.
+    #[arg(long, default_value = "names")]
+    pub labels: LabelMode,
+    /// Leave out the legend and the scale bar.
+    #[arg(long)]
+    pub no_legend: bool,
+    /// Leave out the graph (nodes and edges).
+    #[arg(long)]
+    pub no_graph: bool,
+    #[command(flatten)]
+    pub db: DbArg,
+}
+
+/// Runs `nrgdb render`.
+pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
+    let format = PictureFormat::of(&args.out)?;
+    let base = resolve(&args.model, None, &args.db)?;
+    let background = args.map.clone().or_else(|| base.map_yaml.clone());
+    let (nrg, title, diff) = match &args.diff {
+        Some(pair) => {
+            let (Some(a), Some(b)) = (pair.first(), pair.get(1)) else {
+                miette::bail!("--diff needs two revisions: --diff A B");
+            };
+            let old = resolve(a, Some(&base), &args.db)?;
+            let new = resolve(b, Some(&base), &args.db)?;
+            let overlay = diff_overlay(&old.nrg, &new.nrg);
+            let title = format!("{} -> {}", old.title, new.title);
+            (new.nrg, title, Some(overlay))
+        }
+        None => (base.nrg, base.title, None),
+    };
+    let map = background.as_deref().map(load_grid).transpose()?;
+    let route = match &args.route {
+        Some(pair) => {
+            let (Some(from), Some(to)) = (pair.first(), pair.get(1)) else {
+                miette::bail!("--route needs two spaces: --route FROM TO");
+            };
+            match route_overlay(&nrg, from, to)? {
+                Some(r) => Some(r),
+                None => {
+                    writeln!(out, "no route from {from} to {to}").into_diagnostic()?;
+                    return Ok(ExitCode::from(1));
+                }
+            }
+        }
+        None => None,
+    };
+    let options = RenderOptions {
+        px_per_m: args.scale,
+        labels: args.labels,
+        legend: !args.no_legend,
+        graph: !args.no_graph,
+        title: Some(title),
+        ..RenderOptions::default()
+    };
+    let scene = Scene {
+        nrg: &nrg,
+        map: map.as_ref(),
+        route: route.as_ref(),
+        diff: diff.as_ref(),
+        options: &options,
+    };
+    write_picture(&args.out, format, &scene)?;
+    writeln!(
+        out,
+        "wrote {} ({} spaces{}{})",
+        args.out.display(),
+        nrg.spaces().len(),
+        route
+            .as_ref()
+            .map(|r| format!(", route {:.1} m", r.length_m))
+            .unwrap_or_default(),
+        diff.as_ref()
+            .map(|d| format!(
+                ", {} added, {} removed, {} changed",
+                d.added.len(),
+                d.removed.len(),
+                d.changed.len()
+            ))
+            .unwrap_or_default()
+    )
+    .into_diagnostic()?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// The picture formats.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PictureFormat {
+    /// PNG (tiny-skia).
+    Png,
+    /// SVG.
+    Svg,
+}
+
+impl PictureFormat {
+    /// The format a file's extension names.
+    pub fn of(path: &Path) -> miette::Result<PictureFormat> {
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .unwrap_or("")
+            .to_ascii_lowercase();
+        match ext.as_str() {
+            "png" => Ok(PictureFormat::Png),
+            "svg" => Ok(PictureFormat::Svg),
+            _ => miette::bail!(
+                "{}: unknown picture format '.{ext}' (use a .png or .svg file name)",
+                path.display()
+            ),
+        }
+    }
+}
+
+/// Renders `scene` and writes it atomically to `path` as `format`.
+pub fn write_picture(path: &Path, format: PictureFormat, scene: &Scene<'_>) -> miette::Result<()> {
+    let bytes = match format {
+        PictureFormat::Svg => render_svg(scene).map(String::into_bytes),
+        #[cfg(feature = "render")]
+        PictureFormat::Png => nrgdb::render::render_png(scene),
+        #[cfg(not(feature = "render"))]
+        PictureFormat::Png => miette::bail!(
+            "{}: this nrgdb was built without the `render` feature, so it cannot write PNG (write .svg)",
+            path.display()
+        ),
+    }
+    .into_diagnostic()
+    .wrap_err_with(|| format!("{}: cannot draw the picture", path.display()))?;
+    nrgdb::atomic::write(path, &bytes)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("{}: cannot write", path.display()))
+}
+
+/// A model to draw, where it came from, and its map when it is one.
+struct Resolved {
+    nrg: Nrg,
+    title: String,
+    /// The map's name in the database (for `--diff 1 3`).
+    map_name: Option<String>,
+    /// A .yaml occupancy map the model was extracted from.
+    map_yaml: Option<PathBuf>,
+}
+
+/// `spec` is a model file, NAME[@REV], or (with `base` a stored map) a bare
+/// revision number of that map.
+fn resolve(spec: &str, base: Option<&Resolved>, db: &DbArg) -> miette::Result<Resolved> {
+    let path = Path::new(spec);
+    if path.is_file() {
+        let is_yaml = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .is_some_and(|e| e.eq_ignore_ascii_case("yaml") || e.eq_ignore_ascii_case("yml"));
+        return Ok(Resolved {
+            nrg: load_model(path)?.nrg,
+            title: path
+                .file_name()
+                .map_or_else(|| spec.to_string(), |n| n.to_string_lossy().into_owned()),
+            map_name: None,
+            map_yaml: is_yaml.then(|| path.to_path_buf()),
+        });
+    }
+    let (name, rev) = match (spec.parse::<u32>(), base.and_then(|b| b.map_name.clone())) {
+        (Ok(n), Some(name)) => (name, Some(n)),
+        (Ok(_), None) => miette::bail!(
+            "'{spec}' is a bare revision number but the model is not a stored map \
+             (give NAME@REV or a model file)"
+        ),
+        (Err(_), _) => parse_map_rev(spec)?,
+    };
+    if !db.db.exists() {
+        miette::bail!(
+            "'{spec}' is not a file, and there is no database {} to find a map in \
+             (give a model file, or --db DB / NRGDB_DB)",
+            db.db.display()
+        );
+    }
+    let store = db.open()?;
+    let info = store
+        .revision(&name, rev)
+        .into_diagnostic()
+        .wrap_err_with(|| {
+            format!(
+                "'{spec}' is neither a file nor a revision in {}",
+                db.db.display()
+            )
+        })?;
+    let nrg = store
+        .load(&name, Some(info.seq))
+        .into_diagnostic()
+        .wrap_err_with(|| format!("loading {name}@{}", info.seq))?;
+    Ok(Resolved {
+        nrg,
+        title: format!("{name}@{}", info.seq),
+        map_name: Some(name),
+        map_yaml: None,
+    })
+}
+
+fn load_grid(path: &Path) -> miette::Result<OccupancyGrid> {
+    load_map(path, &LoadOptions::default())
+        .into_diagnostic()
+        .wrap_err_with(|| format!("{}: cannot load the map to draw behind", path.display()))
+}
+
+/// A space by id, or by name (case-insensitive) or label.
+fn find_space(nrg: &Nrg, text: &str) -> miette::Result<SpaceId> {
+    if let Ok(n) = text.parse::<u32>()
+        && nrg.space(SpaceId(n)).is_some()
+    {
+        return Ok(SpaceId(n));
+    }
+    nrg.spaces()
+        .iter()
+        .find(|s| {
+            s.name
+                .as_deref()
+                .is_some_and(|n| n.eq_ignore_ascii_case(text))
+                || s.label().eq_ignore_ascii_case(text)
+        })
+        .map(|s| s.id)
+        .ok_or_else(|| {
+            miette::miette!(
+                "--route: no space '{text}' (give a space id or name; see `nrgdb query`)"
+            )
+        })
+}
+
+/// The shortest route between two spaces as an overlay; `None` when there
+/// is no route.
+fn route_overlay(nrg: &Nrg, from: &str, to: &str) -> miette::Result<Option<RouteOverlay>> {
+    let request = RouteRequest::new(find_space(nrg, from)?, find_space(nrg, to)?);
+    let routes = shortest_route(&RouteGraph::new(nrg), nrg, &request, &Budget::unlimited())
+        .into_diagnostic()
+        .wrap_err_with(|| format!("--route {from} {to}"))?;
+    Ok(routes
+        .first()
+        .map(|r| RouteOverlay::along(nrg, &r.spaces, r.length_m)))
+}

@@ -1,0 +1,135 @@
+//! The web viewer: `GET /` serves one page (plain HTML, CSS and JS in
+//! `index.html`, compiled into the binary, no build step) and
+//! `GET /maps/{map}/revisions/{rev}/svg` draws a revision with
+//! [`crate::render::render_svg`], optionally with a route (`?route=FROM,TO`)
+//! or the changes since another revision (`?diff=A`).
+//!
+//! Uses render, route, query's indexed revisions and the server's state,
+//! params and errors; the page itself only calls the JSON API.
+
+use axum::extract::{Path, State};
+use axum::http::{HeaderValue, Uri, header};
+use axum::response::{IntoResponse, Response};
+
+use crate::model::SpaceId;
+use crate::query::{IndexedRevision, QueryError, SpaceRef};
+use crate::render::{RenderOptions, RouteOverlay, Scene, diff_overlay, render_svg};
+use crate::route::{Budget, RouteRequest, shortest_route};
+use crate::server::error::ApiError;
+use crate::server::params::{Params, parse_rev};
+use crate::server::routes::{ParamDoc, q};
+use crate::server::state::AppState;
+
+/// The page.
+pub const INDEX_HTML: &str = include_str!("index.html");
+
+/// Query parameters of the SVG endpoint.
+pub const SVG_PARAMS: [ParamDoc; 2] = [
+    q(
+        "route",
+        "string",
+        false,
+        "draw the shortest route FROM,TO (space ids or names)",
+    ),
+    q(
+        "diff",
+        "string",
+        false,
+        "draw what changed since this revision number",
+    ),
+];
+
+/// `GET /`: the viewer page.
+pub async fn page() -> Response {
+    let mut response = (
+        [(header::CONTENT_TYPE, "text/html; charset=utf-8")],
+        INDEX_HTML,
+    )
+        .into_response();
+    response
+        .headers_mut()
+        .insert(header::CACHE_CONTROL, HeaderValue::from_static("no-cache"));
+    response
+}
+
+/// A space by id or name on `rev`; unknown spaces are 404s naming `route`.
+fn space(raw: &str, rev: &IndexedRevision) -> Result<SpaceId, ApiError> {
+    let raw = raw.trim();
+    let r = match raw.parse::<u32>() {
+        Ok(id) => SpaceRef::Id {
+            kind: None,
+            id: SpaceId(id),
+        },
+        Err(_) => SpaceRef::Name(raw.to_string()),
+    };
+    rev.resolve(&r).map_err(|e| match e {
+        QueryError::UnknownId(_) | QueryError::UnknownName { .. } => {
+            ApiError::not_found("route", format!("route: {e}"))
+        }
+        other => ApiError::bad("route", other.to_string()),
+    })
+}
+
+/// `GET /maps/{map}/revisions/{rev}/svg?route=FROM,TO&diff=A`.
+pub async fn svg(
+    State(state): State<AppState>,
+    Path((map, rev)): Path<(String, String)>,
+    uri: Uri,
+) -> Result<Response, ApiError> {
+    let p = Params::parse(&uri, &["route", "diff"])?;
+    let rev = parse_rev("rev", &rev)?;
+    let route = p.get("route").map(str::to_string);
+    let diff: Option<u32> = p.opt("diff", "a revision number")?;
+    let timeout = state.config().timeout;
+    let body = state
+        .blocking(move |ctx| {
+            let r = ctx.revision(&map, rev)?;
+            let overlay = match &route {
+                None => None,
+                Some(pair) => {
+                    let (from, to) = pair.split_once(',').ok_or_else(|| {
+                        ApiError::bad(
+                            "route",
+                            format!("'{pair}': expected FROM,TO (two space ids or names)"),
+                        )
+                    })?;
+                    let request = RouteRequest::new(space(from, &r)?, space(to, &r)?);
+                    let routes = shortest_route(&r.graph, &r.nrg, &request, &Budget::new(timeout))?;
+                    routes
+                        .first()
+                        .map(|x| RouteOverlay::along(&r.nrg, &x.spaces, x.length_m))
+                }
+            };
+            let changes = match diff {
+                None => None,
+                Some(a) => Some(diff_overlay(&ctx.revision(&map, Some(a))?.nrg, &r.nrg)),
+            };
+            let title = match diff {
+                Some(a) => format!("{map}@{a} -> @{}", r.revision),
+                None => format!("{map}@{}", r.revision),
+            };
+            let options = RenderOptions {
+                title: Some(title),
+                ..RenderOptions::default()
+            };
+            let scene = Scene {
+                nrg: &r.nrg,
+                map: None,
+                route: overlay.as_ref(),
+                diff: changes.as_ref(),
+                options: &options,
+            };
+            render_svg(&scene).map_err(|e| ApiError::Internal(format!("drawing {map}: {e}")))
+        })
+        .await?;
+    let mut response = ([(header::CONTENT_TYPE, "image/svg+xml")], body).into_response();
+    let caching = if rev.is_some() {
+        "public, max-age=3600"
+    } else {
+        "no-cache"
+    };
+    response
+        .headers_mut()
+        .insert(header::CACHE_CONTROL, HeaderValue::from_static(caching));
+    Ok(response)
+}
