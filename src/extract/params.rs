@@ -74,7 +74,8 @@ pub struct ExtractParams {
     /// A boundary between two spaces whose passage is at most this wide is a
     /// door; wider boundaries are open connections. Default 1.6 m.
     pub door_width_max_m: f64,
-    /// Borders narrower than this are corner contacts, not doorways: no
+    /// Borders narrower than this, or shorter (fewer pixels along the
+    /// border, both sides counted), are corner contacts, not doorways: no
     /// door. Default 0.4 m (twice `noise_radius_m`: narrower passages were
     /// removed as noise anyway).
     pub door_width_min_m: f64,
@@ -108,7 +109,7 @@ impl Default for ExtractParams {
     fn default() -> Self {
         ExtractParams {
             method: Method::Watershed,
-            working_resolution_m: 0.1,
+            working_resolution_m: 0.0,
             noise_radius_m: 0.2,
             furniture_max_m: 1.0,
             unknown_pocket_max_m2: 4.0,

@@ -139,6 +139,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     let doors: Vec<&Border> = all
         .iter()
         .filter(|b| b.width_px >= door_min_px && b.width_px <= door_px)
+        .filter(|b| b.pixels.len() as f64 >= door_min_px)
         .filter(|b| b.width_px <= constriction(b))
         .collect();
     let door_pairs: Vec<(u32, u32)> = doors.iter().map(|b| b.pair).collect();

@@ -78,7 +78,7 @@ fn doors_between(nrg: &Nrg, x: SpaceKind, y: SpaceKind) -> Vec<(&Space, SpaceId,
 }
 
 /// Paints a 0.1 m wall across the room `ring` at `axis` coordinate `cut`:
-/// from a pixel inside the room, outwards along the line while pixels are
+/// across the room's outline on the line, then outwards while pixels are
 /// free, so the wall runs exactly from wall to wall.
 fn seal_line(g: &mut OccupancyGrid, ring: &[[f64; 2]], axis: usize, cut: f64) {
     let (w, h) = (g.width as i64, g.height as i64);
@@ -98,22 +98,34 @@ fn seal_line(g: &mut OccupancyGrid, ring: &[[f64; 2]], axis: usize, cut: f64) {
     for k in lines {
         let at = |t: i64| if axis == 0 { (k, t) } else { (t, k) };
         let len = if axis == 0 { h } else { w };
-        let Some(start) = (0..len).find(|&t| {
-            let (c, r) = at(t);
-            point_in_ring(centre(c, r), ring) && g.cell(c as u32, r as u32) == Some(Cell::Free)
-        }) else {
+        // Every pixel of the room on this line (through any speck of clutter
+        // in it), then on outwards while pixels are free, up to the walls.
+        let inside: Vec<i64> = (0..len)
+            .filter(|&t| {
+                let (c, r) = at(t);
+                point_in_ring(centre(c, r), ring)
+            })
+            .collect();
+        let (Some(&first), Some(&last)) = (inside.first(), inside.last()) else {
             continue;
         };
-        for dir in [-1i64, 1] {
-            let mut t = start;
+        let paint = |g: &mut OccupancyGrid, t: i64| {
+            let (c, r) = at(t);
+            let i = (r * w + c) as usize;
+            g.cells[i] = Cell::Occupied;
+            g.grey[i] = 0;
+        };
+        for t in first..=last {
+            paint(g, t);
+        }
+        for (from, dir) in [(first - 1, -1i64), (last + 1, 1)] {
+            let mut t = from;
             while (0..len).contains(&t) {
                 let (c, r) = at(t);
                 if g.cell(c as u32, r as u32) != Some(Cell::Free) {
                     break;
                 }
-                let i = (r * w + c) as usize;
-                g.cells[i] = Cell::Occupied;
-                g.grey[i] = 0;
+                paint(g, t);
                 t += dir;
             }
         }
@@ -223,10 +235,40 @@ fn wall_removed_between_two_rooms() {
     );
     let mut parts: Vec<SpaceId> = cs.merges[0].parts.iter().map(|p| p.id).collect();
     parts.sort();
-    let mut want = vec![door.id, r1, r2];
+    // The wall may hold several doorways (lab_ipa's walls are pieces with
+    // gaps between them): all of them go into the merged room.
+    let wall_doors: Vec<SpaceId> = doors_between(&a, SpaceKind::Room, SpaceKind::Room)
+        .into_iter()
+        .filter(|&(_, p, q)| (p, q) == (r1, r2) || (p, q) == (r2, r1))
+        .map(|(d, _, _)| d.id)
+        .collect();
+    assert!(wall_doors.contains(&door.id));
+    let mut want = [vec![r1, r2], wall_doors.clone()].concat();
+    want.sort();
+    // A door of one of the two rooms onto a third space may go too: when
+    // the third space met both rooms through doorways less than 0.5 m apart
+    // (at the end of the removed wall), those become one border of the
+    // merged room, too wide for a door, so an open link. Nothing else may.
+    let extra: Vec<SpaceId> = parts
+        .iter()
+        .copied()
+        .filter(|p| !want.contains(p))
+        .collect();
+    for id in &extra {
+        let d = a.space(*id).expect("a part of A");
+        let of_the_rooms = a
+            .connections_of(*id)
+            .any(|c| c.other(*id) == Some(r1) || c.other(*id) == Some(r2));
+        assert!(
+            d.kind == SpaceKind::Door && of_the_rooms,
+            "{id} merged\n{}",
+            cs.table()
+        );
+    }
+    want.extend(&extra);
     want.sort();
     assert_eq!(parts, want, "{}", cs.table());
-    // Links change only where they touched a merged part: the door's two
+    // Links change only where they touched a merged part: each door's two
     // go, and the absorbed room's other links move to the merged room.
     for c in cs.changed_connections() {
         let touches = |conn: &Option<nrgdb::model::Connection>, ids: &[SpaceId]| {
@@ -239,8 +281,10 @@ fn wall_removed_between_two_rooms() {
             cs.table()
         );
     }
+    // Each door in the wall loses its two links; each extra door's two links
+    // become one open link; moved links count once each way.
     assert_eq!(
-        s.connections_added + 2,
+        s.connections_added + 2 * wall_doors.len() + extra.len(),
         s.connections_removed,
         "{}",
         cs.table()
