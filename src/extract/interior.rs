@@ -59,6 +59,50 @@ pub(crate) fn claim_enclosed_unknown(labels: &mut Labels, grid: &OccupancyGrid, 
     }
 }
 
+/// Gives every unlabelled 4-connected speck of at most `max_px` pixels that
+/// lies wholly inside one space (all its neighbours carry that one label,
+/// none is the image border) to that space: specks of clutter or noise are
+/// not holes in a room, and side by side they would make polygon rings
+/// that touch.
+pub(crate) fn fill_specks(labels: &mut Labels, max_px: usize) {
+    let (w, h) = (labels.width as usize, labels.height as usize);
+    let unlabelled_data = labels
+        .data
+        .iter()
+        .map(|&l| if l == 0 { 255 } else { 0 })
+        .collect();
+    let unlabelled = Mask::from_raw(labels.width, labels.height, unlabelled_data)
+        .unwrap_or_else(|| Mask::new(labels.width, labels.height));
+    let specks = label_components(&unlabelled, false);
+    let n = specks.count as usize + 1;
+    let mut area = vec![0usize; n];
+    // The one label around each speck: 0 = none yet, u32::MAX = several or the border.
+    let mut around = vec![0u32; n];
+    for (i, &s) in specks.data.iter().enumerate() {
+        if s == 0 {
+            continue;
+        }
+        let s = s as usize;
+        area[s] += 1;
+        let (x, y) = (i % w, i / w);
+        if x == 0 || y == 0 || x + 1 == w || y + 1 == h {
+            around[s] = u32::MAX;
+        }
+        for j in neighbours(i, w, h) {
+            let l = labels.data[j];
+            if l != 0 && around[s] != l {
+                around[s] = if around[s] == 0 { l } else { u32::MAX };
+            }
+        }
+    }
+    for (l, &s) in labels.data.iter_mut().zip(&specks.data) {
+        let s = s as usize;
+        if s != 0 && area[s] <= max_px && around[s] != 0 && around[s] != u32::MAX {
+            *l = around[s];
+        }
+    }
+}
+
 /// The 4-neighbours of pixel `i` inside a `w`×`h` image.
 fn neighbours(i: usize, w: usize, h: usize) -> impl Iterator<Item = usize> {
     let (x, y) = (i % w, i / w);
@@ -105,5 +149,26 @@ mod tests {
         // A pocket above the size limit is left alone.
         claim_enclosed_unknown(&mut small, &g, 1);
         assert_eq!((small.data[33], small.data[34]), (0, 0));
+    }
+
+    #[test]
+    fn specks_inside_one_space_are_filled_others_stay() {
+        // A 1-px speck inside label 1, a speck between labels 1 and 2, and
+        // the unlabelled border.
+        let mut labels = Labels {
+            width: 5,
+            height: 4,
+            data: vec![
+                0, 0, 0, 0, 0, //
+                0, 1, 1, 1, 0, //
+                0, 1, 0, 1, 0, //
+                0, 1, 1, 0, 2, //
+            ],
+            count: 2,
+        };
+        fill_specks(&mut labels, 4);
+        assert_eq!(labels.data[12], 1, "speck inside 1 filled");
+        assert_eq!(labels.data[18], 0, "speck between 1 and 2 stays");
+        assert_eq!(labels.data[0], 0, "border stays");
     }
 }

@@ -46,7 +46,10 @@ pub struct ExtractParams {
     /// Maps finer than this are segmented on a copy coarsened by a whole
     /// factor k to about this resolution (k × k cells to one) and the labels
     /// are brought back to the map's pixels: k² times less work, with
-    /// polygons at the working resolution. 0 turns this off. Default 0.1 m.
+    /// polygons at the working resolution. Off (0) by default: the k × k
+    /// blocks fall differently on a turned copy of a map, so results would
+    /// depend on how the map lies in its image. 0.1 makes a 0.05 m/px map
+    /// about 3× faster at the same mean accuracy on the dev maps.
     pub working_resolution_m: f64,
     /// Free space narrower than twice this is noise (LiDAR rays leaking into
     /// unknown space, speckle) and is removed by an opening. Default 0.2 m.

@@ -8,7 +8,7 @@ use super::ccl::segment_ccl;
 use super::clean::clean_free;
 use super::doors::{Border, borders, cut_doors};
 use super::graph::topology;
-use super::interior::claim_enclosed_unknown;
+use super::interior::{claim_enclosed_unknown, fill_specks};
 use super::merge::merge_small;
 use super::polygon::{bounding_boxes, outline};
 use super::resample::{coarsen, pixel_centroids, refine};
@@ -17,6 +17,9 @@ use super::{ExtractError, ExtractParams, Method};
 use crate::grid::OccupancyGrid;
 use crate::imaging::{Labels, distance_to_background};
 use crate::model::{Connection, Nrg, Space, SpaceId, SpaceKind};
+
+/// Unlabelled specks smaller than this (m²) inside one space join it.
+const MIN_HOLE_M2: f64 = 0.25;
 
 /// The result of [`extract`].
 #[derive(Debug, Clone)]
@@ -150,6 +153,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         grid,
         (params.unknown_pocket_max_m2 / (res * res)).floor() as usize,
     );
+    fill_specks(&mut labels, (MIN_HOLE_M2 / (res * res)).floor() as usize);
     clock.lap("doors");
     let shape = region_shapes(&labels, &dist);
     let topo = topology(

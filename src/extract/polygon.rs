@@ -1,7 +1,6 @@
 //! Space outlines: contours of each label (Suzuki–Abe, via imageproc),
 //! simplified, in metres in the map frame, exterior CCW and holes CW.
 
-use geo::Validation;
 use image::{GrayImage, Luma};
 use imageproc::contours::{BorderType, find_contours};
 
@@ -40,16 +39,12 @@ pub(crate) fn outline(
     if x0 > x1 || y0 > y1 {
         return (Vec::new(), Vec::new());
     }
-    // Traced at twice the resolution, so a part one pixel thin still has
-    // two sides (the contour does not run back over itself and a hole one
-    // pixel from the outside does not touch it), with one (doubled) pixel
-    // of padding so borders never touch the crop's edge.
-    let (cw, ch) = (2 * (x1 - x0 + 1) + 2, 2 * (y1 - y0 + 1) + 2);
+    // One pixel of padding so borders never touch the crop's edge.
+    let (cw, ch) = (x1 - x0 + 3, y1 - y0 + 3);
     let w = labels.width as usize;
     let crop = GrayImage::from_fn(cw, ch, |x, y| {
-        let inside = x >= 1 && y >= 1 && x < cw - 1 && y < ch - 1;
-        let (px, py) = (x0 + (x.max(1) - 1) / 2, y0 + (y.max(1) - 1) / 2);
-        let v = inside && labels.data[py as usize * w + px as usize] == l;
+        let inside = x >= 1 && y >= 1 && x <= x1 - x0 + 1 && y <= y1 - y0 + 1;
+        let v = inside && labels.data[(y0 + y - 1) as usize * w + (x0 + x - 1) as usize] == l;
         Luma([if v { 255 } else { 0 }])
     });
     let contours = find_contours::<i32>(&crop);
@@ -57,8 +52,8 @@ pub(crate) fn outline(
         c.points
             .iter()
             .map(|p| {
-                let col = f64::from(x0) + (f64::from(p.x - 1) + 0.5) / 2.0;
-                let row = f64::from(y0) + (f64::from(p.y - 1) + 0.5) / 2.0;
+                let col = f64::from(x0) + f64::from(p.x - 1) + 0.5;
+                let row = f64::from(y0) + f64::from(p.y - 1) + 0.5;
                 grid.pixel_to_metres(col, row)
             })
             .collect()
@@ -75,43 +70,19 @@ pub(crate) fn outline(
     let Some((oi, oc)) = outer else {
         return (Vec::new(), Vec::new());
     };
-    let rings = |tolerance: f64| {
-        let exterior = finish(to_m(oc), tolerance, true);
-        let exterior = if distinct(&exterior) < 3 {
-            pixel_box(bbox, grid)
-        } else {
-            exterior
-        };
-        let holes: Vec<Ring> = contours
-            .iter()
-            .filter(|c| c.border_type == BorderType::Hole && c.parent == Some(oi))
-            .map(|c| finish(to_m(c), tolerance, false))
-            .filter(|r| distinct(r) >= 3 && polygon_area(r).abs() > 0.0)
-            .collect();
-        (exterior, holes)
+    let exterior = finish(to_m(oc), simplify_m, true);
+    let exterior = if distinct(&exterior) < 3 {
+        pixel_box(bbox, grid)
+    } else {
+        exterior
     };
-    // Simplification can make rings touch; then fall back to the traced
-    // rings, and as a last resort keep only the holes that stay valid.
-    let (exterior, holes) = rings(simplify_m);
-    if is_valid(&exterior, &holes) {
-        return (exterior, holes);
-    }
-    let (exterior, holes) = rings(0.0);
-    if is_valid(&exterior, &holes) {
-        return (exterior, holes);
-    }
-    let holes = holes
-        .into_iter()
-        .filter(|h| is_valid(&exterior, std::slice::from_ref(h)))
+    let holes = contours
+        .iter()
+        .filter(|c| c.border_type == BorderType::Hole && c.parent == Some(oi))
+        .map(|c| finish(to_m(c), simplify_m, false))
+        .filter(|r| distinct(r) >= 3 && polygon_area(r).abs() > 0.0)
         .collect();
     (exterior, holes)
-}
-
-/// Whether the polygon is valid as OGC simple features define it.
-fn is_valid(exterior: &[Point], holes: &[Ring]) -> bool {
-    let ring =
-        |r: &[Point]| geo::LineString::from(r.iter().map(|p| (p[0], p[1])).collect::<Vec<_>>());
-    geo::Polygon::new(ring(exterior), holes.iter().map(|h| ring(h)).collect()).is_valid()
 }
 
 fn finish(ring: Ring, simplify_m: f64, ccw: bool) -> Ring {
@@ -171,8 +142,8 @@ mod tests {
         let (ext, holes) = outline(&labels, 1, b[1], &grid, 0.01);
         assert_eq!(ext.len(), 4);
         assert!(polygon_area(&ext) > 0.0);
-        // A quarter pixel inside the outer pixels' edges (x 1..6, y 1..6).
-        assert!(ext.contains(&[1.25, 5.75]) && ext.contains(&[5.75, 1.25]));
+        // Pixel centres 1.5..5.5 in x, and y = 7 - row - 0.5.
+        assert!(ext.contains(&[1.5, 5.5]) && ext.contains(&[5.5, 1.5]));
         assert_eq!(holes.len(), 1);
         assert!(polygon_area(&holes[0]) < 0.0);
     }
@@ -188,7 +159,6 @@ mod tests {
         };
         let (ext, _) = outline(&labels, 1, [1, 0, 3, 0], &grid, 0.01);
         assert_eq!(ext.len(), 4);
-        // Traced at half-pixel steps: 2.5 m by 0.5 m.
-        assert!((polygon_area(&ext) - 1.25).abs() < 1e-9);
+        assert!((polygon_area(&ext) - 3.0).abs() < 1e-9);
     }
 }
