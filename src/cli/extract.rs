@@ -46,6 +46,11 @@ pub struct MapArgs {
     /// Spaces smaller than this (m²) merge into a neighbour.
     #[arg(long)]
     pub min_room_area: Option<f64>,
+    /// Any parameter of ExtractParams as KEY=VALUE (a TOML value), e.g.
+    /// `--set furniture_max_m=0` or `--set working_resolution_m=0.1`;
+    /// repeatable, applied last.
+    #[arg(long = "set", value_name = "KEY=VALUE")]
+    pub set: Vec<String>,
 }
 
 impl MapArgs {
@@ -120,6 +125,7 @@ impl MapArgs {
         if let Some(v) = self.min_room_area {
             params.min_room_area_m2 = v;
         }
+        let params = apply_sets(params, &self.set)?;
         Ok((grid, params))
     }
 }
@@ -129,6 +135,38 @@ pub fn is_yaml(path: &Path) -> bool {
     path.extension()
         .and_then(|e| e.to_str())
         .is_some_and(|e| e.eq_ignore_ascii_case("yaml") || e.eq_ignore_ascii_case("yml"))
+}
+
+/// Applies `--set KEY=VALUE` overrides to `params` through its TOML form, so
+/// every field is reachable and unknown keys are refused by name.
+fn apply_sets(params: ExtractParams, sets: &[String]) -> miette::Result<ExtractParams> {
+    if sets.is_empty() {
+        return Ok(params);
+    }
+    let mut table = toml::Table::try_from(&params).into_diagnostic()?;
+    for set in sets {
+        let Some((key, value)) = set.split_once('=') else {
+            miette::bail!("--set {set}: expected KEY=VALUE, e.g. --set furniture_max_m=0");
+        };
+        let key = key.trim();
+        if !table.contains_key(key) {
+            let known: Vec<&str> = table.keys().map(String::as_str).collect();
+            miette::bail!(
+                "--set {key}: no such parameter (known: {})",
+                known.join(", ")
+            );
+        }
+        // A TOML value (number, boolean, quoted string); a bare word is a string.
+        let parsed = toml::from_str::<toml::Table>(&format!("v = {}", value.trim()))
+            .ok()
+            .and_then(|mut t| t.remove("v"))
+            .unwrap_or_else(|| toml::Value::String(value.trim().to_owned()));
+        table.insert(key.to_owned(), parsed);
+    }
+    table
+        .try_into()
+        .into_diagnostic()
+        .wrap_err("--set: a value has the wrong type for its parameter")
 }
 
 /// Extracts an IndoorGML NRG (rooms, corridors, doors, connections) from an occupancy grid map.

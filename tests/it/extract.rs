@@ -107,6 +107,52 @@ fn ccl_finds_the_same_plan() {
 }
 
 #[test]
+fn a_coarser_working_resolution_finds_the_same_plan() {
+    let params = ExtractParams {
+        working_resolution_m: 0.1,
+        ..ExtractParams::default()
+    };
+    check_plan(&floor_plan(0.05), &params);
+    let x = extract(&floor_plan(0.05), &params).unwrap();
+    // The labels come back at the map's own size.
+    assert_eq!((x.labels.width, x.labels.height), (240, 160));
+}
+
+#[test]
+fn any_parameter_can_be_set_from_the_command_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let grid = floor_plan(0.1);
+    let pgm = [
+        format!("P5\n{} {}\n255\n", grid.width, grid.height).into_bytes(),
+        grid.grey.clone(),
+    ]
+    .concat();
+    std::fs::write(dir.path().join("m.pgm"), pgm).unwrap();
+    let run = |extra: &[&str]| {
+        let mut args = vec!["extract", "m.pgm", "--resolution", "0.1"];
+        args.extend_from_slice(extra);
+        crate::support::nrgdb(dir.path(), &args)
+    };
+    let ok = run(&["--set", "furniture_max_m=0", "--set", "method=ccl"]);
+    assert!(
+        ok.status.success(),
+        "{}",
+        String::from_utf8_lossy(&ok.stderr)
+    );
+    let unknown = run(&["--set", "furniture_max=0"]);
+    assert_eq!(unknown.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&unknown.stderr);
+    assert!(
+        err.contains("furniture_max") && err.contains("no such parameter"),
+        "{err}"
+    );
+    let wrong = run(&["--set", "core_radius_m=wide"]);
+    assert_eq!(wrong.status.code(), Some(2));
+    let negative = run(&["--set", "core_radius_m=-1"]);
+    assert_eq!(negative.status.code(), Some(2));
+}
+
+#[test]
 fn json_and_label_png_outputs() {
     let x = extract(&floor_plan(0.1), &ExtractParams::default()).unwrap();
     let v: serde_json::Value = serde_json::from_str(&x.to_json()).unwrap();
