@@ -104,7 +104,7 @@ pub(crate) fn fill_specks(labels: &mut Labels, max_px: usize) {
 }
 
 /// The 4-neighbours of pixel `i` inside a `w`×`h` image.
-fn neighbours(i: usize, w: usize, h: usize) -> impl Iterator<Item = usize> {
+pub(crate) fn neighbours(i: usize, w: usize, h: usize) -> impl Iterator<Item = usize> {
     let (x, y) = (i % w, i / w);
     [
         (x > 0).then(|| i - 1),

@@ -8,6 +8,7 @@
 
 use std::collections::{BTreeMap, VecDeque};
 
+use super::interior::neighbours;
 use crate::grid::{Cell, OccupancyGrid};
 use crate::imaging::Labels;
 use crate::model::SpaceId;
@@ -113,19 +114,6 @@ pub(crate) fn pixel_centroids(labels: &Labels) -> BTreeMap<SpaceId, [f64; 2]> {
         .filter(|(_, s)| s.0 > 0)
         .map(|(l, s)| (SpaceId(l as u32), [s.1 / s.0 as f64, s.2 / s.0 as f64]))
         .collect()
-}
-
-/// The 4-neighbours of pixel `i` inside a `w`×`h` image.
-fn neighbours(i: usize, w: usize, h: usize) -> impl Iterator<Item = usize> {
-    let (x, y) = (i % w, i / w);
-    [
-        (x > 0).then(|| i - 1),
-        (x + 1 < w).then(|| i + 1),
-        (y > 0).then(|| i - w),
-        (y + 1 < h).then(|| i + w),
-    ]
-    .into_iter()
-    .flatten()
 }
 
 #[cfg(test)]
