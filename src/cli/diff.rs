@@ -27,7 +27,7 @@ use super::load_model;
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// `NAME A B` (a stored map and two revision numbers) or `OLD NEW` (two files).
-    #[arg(num_args = 2..=3, required = true, value_name = "NAME A B | OLD NEW")]
+    #[arg(num_args = 2..=3, required = true, value_name = "TARGET")]
     pub targets: Vec<String>,
     /// Print the change set as JSON (the input of `nrgdb apply`) instead of a table.
     #[arg(long)]

@@ -59,6 +59,18 @@ pub struct Comparison {
 /// Compares B with the base A: aligns B to A as `mode` says (refusing with
 /// [`DiffError::Unreliable`] when no reliable alignment exists), then
 /// diffs. The change set records the transform in `alignment`.
+///
+/// ```
+/// use nrgdb::diff::{compare, AlignMode, AlignParams, DiffParams, Revision, RigidTransform};
+/// let a = nrgdb::fixtures::corridor_building(5);
+/// // The same building from another run: turned 30° and moved.
+/// let b = RigidTransform::from_degrees(30.0, 2.0, 1.0).apply_to_nrg(&a)?;
+/// let side = |nrg| Revision { nrg, grid: None }; // walls from the outlines
+/// let done = compare(side(&a), side(&b), AlignMode::Auto, &DiffParams::default(),
+///     &AlignParams::default())?;
+/// assert!(done.alignment.is_some() && done.changes.is_empty());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn compare(
     a: Revision<'_>,
     b: Revision<'_>,
