@@ -21,13 +21,13 @@ use super::load_model;
 /// `nrgdb diff NAME A B` compares revisions A and B of a stored map;
 /// `nrgdb diff OLD NEW` compares two files (.yaml maps are extracted with
 /// default parameters; .gml, .json, .geojson models are read). When the
-/// two frames differ (fewer than half of B's walls on A's walls), B is
+/// two frames differ (fewer than half of either map's walls on the other's), B is
 /// aligned to A first and the transform is reported. Exit code 0 when
 /// nothing changed, 1 when something did, 2 on error.
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// `NAME A B` (a stored map and two revision numbers) or `OLD NEW` (two files).
-    #[arg(num_args = 2..=3, required = true, value_name = "NAME A B | OLD NEW")]
+    #[arg(num_args = 2..=3, required = true, value_name = "TARGET")]
     pub targets: Vec<String>,
     /// Print the change set as JSON (the input of `nrgdb apply`) instead of a table.
     #[arg(long)]

@@ -543,6 +543,29 @@ mod tests {
     }
 
     #[test]
+    fn symmetric_buildings_are_refused() {
+        // A square hall with a centred cross of walls: turning it by 90°
+        // fits as well as not turning it.
+        let n = 80usize;
+        let mut cells = vec![Cell::Free; n * n];
+        for r in 0..n {
+            for c in 0..n {
+                // Walls along the two middle lines, with a doorway in each arm.
+                let gap = |k: usize| (15..25).contains(&k) || (55..65).contains(&k);
+                let cross = (r == n / 2 && !gap(c)) || (c == n / 2 && !gap(r));
+                if r == 0 || c == 0 || r == n - 1 || c == n - 1 || cross {
+                    cells[r * n + c] = Cell::Occupied;
+                }
+            }
+        }
+        let a = OccupancyGrid::from_cells(n as u32, n as u32, 0.1, [0.0; 3], cells);
+        let mut b = a.clone();
+        b.origin = [1.0, 2.0, 0.3];
+        let e = align_grids(&a, &b, &AlignParams::default()).unwrap_err();
+        assert!(e.to_string().contains("a different fit"), "{e}");
+    }
+
+    #[test]
     fn identical_maps_share_a_frame() {
         let a = floor();
         let q = alignment_quality(&a, &a, RigidTransform::IDENTITY, &AlignParams::default());

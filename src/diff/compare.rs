@@ -4,7 +4,9 @@
 //!
 //! Frames differ when, at the identity transform, fewer than
 //! `AlignParams::min_inliers` of B's wall points lie within the inlier
-//! tolerance of A's walls ([`alignment_quality`]). Walls come from the
+//! tolerance of A's walls, and fewer than that share of A's walls near
+//! B's ([`alignment_quality`] both ways: a building extended or cut down
+//! in the same frame still agrees one way). Walls come from the
 //! occupancy grids the revisions were extracted from, or, for models
 //! without one, from the boundary of the union of their space polygons
 //! rasterised at 0.1 m ([`model_grid`]).
@@ -51,14 +53,26 @@ pub struct Comparison {
     pub moved: Nrg,
     /// The alignment used, if any.
     pub alignment: Option<Alignment>,
-    /// How well the frames agreed before aligning (share of B's walls on
-    /// A's walls at the identity).
+    /// How well the frames agreed before aligning (at the identity, the
+    /// larger of the shares of B's walls on A's and of A's on B's).
     pub identity_inliers: Option<f64>,
 }
 
 /// Compares B with the base A: aligns B to A as `mode` says (refusing with
 /// [`DiffError::Unreliable`] when no reliable alignment exists), then
 /// diffs. The change set records the transform in `alignment`.
+///
+/// ```
+/// use nrgdb::diff::{compare, AlignMode, AlignParams, DiffParams, Revision, RigidTransform};
+/// let a = nrgdb::fixtures::corridor_building(5);
+/// // The same building from another run: turned 30° and moved.
+/// let b = RigidTransform::from_degrees(30.0, 2.0, 1.0).apply_to_nrg(&a)?;
+/// let side = |nrg| Revision { nrg, grid: None }; // walls from the outlines
+/// let done = compare(side(&a), side(&b), AlignMode::Auto, &DiffParams::default(),
+///     &AlignParams::default())?;
+/// assert!(done.alignment.is_some() && done.changes.is_empty());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn compare(
     a: Revision<'_>,
     b: Revision<'_>,
@@ -82,9 +96,12 @@ pub fn compare(
             }
         };
         let needed = mode == AlignMode::Always || {
-            let q = alignment_quality(ga, gb, RigidTransform::IDENTITY, align);
-            identity_inliers = Some(q.inliers);
-            q.inliers < align.min_inliers
+            // Both ways: a building extended (B ⊃ A) or cut down (B ⊂ A)
+            // in the same frame still agrees in one direction.
+            let ba = alignment_quality(ga, gb, RigidTransform::IDENTITY, align).inliers;
+            let ab = alignment_quality(gb, ga, RigidTransform::IDENTITY, align).inliers;
+            identity_inliers = Some(ba.max(ab));
+            ba.max(ab) < align.min_inliers
         };
         if needed {
             alignment = Some(align_grids(ga, gb, align)?);
@@ -195,6 +212,22 @@ mod tests {
         let wall = g.metres_to_pixel([-0.05, 1.0]);
         assert_eq!(g.cell(inside[0] as u32, inside[1] as u32), Some(Cell::Free));
         assert_eq!(g.cell(wall[0] as u32, wall[1] as u32), Some(Cell::Occupied));
+    }
+
+    #[test]
+    fn an_extension_in_the_same_frame_is_not_aligned() {
+        let (a, b) = (corridor_building(2), corridor_building(9));
+        let rev = |nrg| Revision { nrg, grid: None };
+        let done = compare(
+            rev(&a),
+            rev(&b),
+            AlignMode::Auto,
+            &DiffParams::default(),
+            &AlignParams::default(),
+        )
+        .unwrap();
+        assert!(done.alignment.is_none());
+        assert!(done.changes.summary.added >= 14, "{}", done.changes.table());
     }
 
     #[test]

@@ -9,10 +9,13 @@
 //! `apply(a, &diff(a, b)) == b`), the IndoorGML update ([`with_base_ids`]:
 //! B under A's identifiers) and the alignment of two maps from different
 //! mapping runs ([`align_grids`] → [`Alignment`], a rigid transform with a
-//! quality score, refused when unreliable).
+//! quality score, refused when unreliable). [`compare`] ties these together
+//! for callers (CLI, query `DIFF`, server): it decides whether two
+//! revisions' frames differ, aligns, and diffs.
 //!
-//! Uses `model`, `grid` and `imaging` (alignment) and the `geo` crate; must
-//! not use store, query, SQL, XML or the terminal.
+//! Uses `model`, `grid` and `imaging` (alignment); `geo` only in tests, as
+//! the reference for the exact overlap areas. Must not use store, query,
+//! SQL, XML or the terminal.
 //!
 //! ```
 //! use nrgdb::diff::{apply, diff, DiffParams};
