@@ -32,6 +32,20 @@ pub fn have_xmllint() -> bool {
     Command::new("xmllint").arg("--version").output().is_ok()
 }
 
+/// Flags for headless Chromium on this closed network (no background
+/// connections, no sandbox as root), shared by the viewer tests.
+pub const HEADLESS_CHROMIUM: &[&str] = &[
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-quic",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--disable-dev-shm-usage",
+];
+
 /// Runs the nrgdb binary with `args` in `dir`.
 pub fn nrgdb(dir: &std::path::Path, args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_nrgdb"))

@@ -23,19 +23,8 @@ impl Browser {
     pub fn start(path: &str) -> Browser {
         let profile = tempfile::tempdir().unwrap();
         let mut child = Command::new(path)
-            .args([
-                "--headless",
-                "--no-sandbox",
-                "--disable-gpu",
-                "--disable-quic",
-                "--no-first-run",
-                "--disable-background-networking",
-                "--disable-component-update",
-                "--disable-sync",
-                "--disable-dev-shm-usage",
-                "--window-size=1200,900",
-                "--remote-debugging-port=0",
-            ])
+            .args(crate::support::HEADLESS_CHROMIUM)
+            .args(["--window-size=1200,900", "--remote-debugging-port=0"])
             .arg(format!("--user-data-dir={}", profile.path().display()))
             .arg("about:blank")
             .stdout(Stdio::null())

@@ -33,19 +33,8 @@ fn chromium_or_skip() -> Option<&'static str> {
 fn dump_dom(chromium: &str, url: &str) -> String {
     let profile = tempfile::tempdir().unwrap();
     let mut child = Command::new(chromium)
-        .args([
-            "--headless",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--disable-quic",
-            "--no-first-run",
-            "--disable-background-networking",
-            "--disable-component-update",
-            "--disable-sync",
-            "--disable-dev-shm-usage",
-            "--virtual-time-budget=15000",
-            "--window-size=1200,900",
-        ])
+        .args(crate::support::HEADLESS_CHROMIUM)
+        .args(["--virtual-time-budget=15000", "--window-size=1200,900"])
         .arg(format!("--user-data-dir={}", profile.path().display()))
         .arg("--dump-dom")
         .arg(url)
