@@ -1,7 +1,7 @@
 //! Watershed segmentation of free space into basins (paper §4.3.2, Tab. 3),
 //! with markers from the distance transform so corridors are not cut up.
 
-use crate::imaging::{Labels, Mask, label_components, watershed};
+use crate::imaging::{Labels, Mask, NO_PARENT, label_components, threshold_tree, watershed};
 
 /// Basins of the free space: markers are the components of the places
 /// farther than `core_px` from any obstacle (a passage narrower than
@@ -18,13 +18,8 @@ pub(crate) fn segment_basins(
     split_min_px: usize,
 ) -> Labels {
     let (w, h) = clean.dimensions();
-    let cores_data = dist
-        .iter()
-        .map(|&d| if f64::from(d) > core_px { 255 } else { 0 })
-        .collect();
-    let cores = Mask::from_raw(w, h, cores_data).unwrap_or_else(|| Mask::new(w, h));
-    let markers = split_markers(label_components(&cores, true), dist, core_px, split_min_px);
     let max_d = dist.iter().copied().fold(0.0f32, f32::max);
+    let markers = split_markers(w, h, dist, max_d, core_px, split_min_px);
     let elevation: Vec<u16> = dist
         .iter()
         .map(|&d| ((max_d - d) * 4.0).clamp(0.0, 65535.0) as u16)
@@ -34,56 +29,116 @@ pub(crate) fn segment_basins(
     basins
 }
 
-/// Refines markers through rising distance levels (×1.25 each): a marker
-/// whose pixels above the next level fall into two or more components of at
-/// least `split_min_px` pixels is replaced by those components. Rooms joined
-/// by a doorway wider than `2 core_px` split this way, while a corridor,
-/// whose core thins out evenly, stays one marker.
-fn split_markers(mut markers: Labels, dist: &[f32], core_px: f64, split_min_px: usize) -> Labels {
-    let (w, h) = (markers.width as usize, markers.height as usize);
-    let max_d = f64::from(dist.iter().copied().fold(0.0f32, f32::max));
+/// Markers: the 8-connected components of the places farther than
+/// `core_px` from any obstacle, refined through rising distance levels
+/// (×1.25 each): a marker whose pixels above the next level fall into two
+/// or more components of at least `split_min_px` pixels is replaced by
+/// those components. Rooms joined by a doorway wider than `2 core_px` split
+/// this way, while a corridor, whose core thins out evenly, stays one
+/// marker. Numbered 1..=n in raster order of their first pixel.
+///
+/// The components of all levels come from one [`threshold_tree`]; a marker
+/// is a node of it, and its pixels are the node's.
+fn split_markers(
+    w: u32,
+    h: u32,
+    dist: &[f32],
+    max_d: f32,
+    core_px: f64,
+    split_min_px: usize,
+) -> Labels {
+    // Level 0 is the core (d > core_px); levels 1.. the thresholds.
+    let mut thresholds = Vec::new();
     let mut level = core_px.max(1.0) * 1.25;
-    while level < max_d {
-        let threshold = level as f32;
-        let above_data = dist
-            .iter()
-            .map(|&d| if d > threshold { 255 } else { 0 })
-            .collect();
-        let above = Mask::from_raw(w as u32, h as u32, above_data)
-            .unwrap_or_else(|| Mask::new(w as u32, h as u32));
-        let comps = label_components(&above, true);
-        let n = comps.count as usize + 1;
-        let mut areas = vec![0usize; n];
-        let mut parent = vec![0u32; n];
-        for (&c, &m) in comps.data.iter().zip(&markers.data) {
-            if c != 0 {
-                areas[c as usize] += 1;
-                parent[c as usize] = m;
-            }
-        }
-        let mut big_children = vec![0usize; markers.count as usize + 1];
-        for c in 1..n {
-            if areas[c] >= split_min_px && parent[c] != 0 {
-                big_children[parent[c] as usize] += 1;
-            }
-        }
-        if big_children.iter().any(|&k| k >= 2) {
-            let base = markers.count;
-            for (m, &c) in markers.data.iter_mut().zip(&comps.data) {
-                if *m != 0 && big_children[*m as usize] >= 2 {
-                    *m = if c != 0 && areas[c as usize] >= split_min_px {
-                        base + c
-                    } else {
-                        0
-                    };
-                }
-            }
-            markers.count = base + comps.count;
-            markers.compact();
-        }
+    while level < f64::from(max_d) && thresholds.len() < usize::from(u8::MAX) - 1 {
+        thresholds.push(level as f32);
         level *= 1.25;
     }
-    markers
+    let depth: Vec<u8> = dist
+        .iter()
+        .map(|&d| {
+            if f64::from(d) > core_px {
+                1 + thresholds.iter().take_while(|&&t| d > t).count() as u8
+            } else {
+                0
+            }
+        })
+        .collect();
+    let tree = threshold_tree(&depth, w, h);
+    drop(depth);
+    let nodes = tree.level.len();
+    let mut is_marker: Vec<bool> = tree.level.iter().map(|&k| k == 1).collect();
+    // The marker holding `node`'s pixels, if any.
+    let marker_of = |node: u32, is_marker: &[bool]| {
+        let mut n = node;
+        while !is_marker[n as usize] {
+            n = tree.parent[n as usize];
+            if n == NO_PARENT {
+                return None;
+            }
+        }
+        Some(n)
+    };
+    let max_k = tree.level.iter().copied().max().unwrap_or(0);
+    let mut big_children = vec![Vec::new(); nodes];
+    for k in 2..=max_k {
+        let mut touched = Vec::new();
+        for c in 0..nodes as u32 {
+            if tree.level[c as usize] == k && tree.area[c as usize] as usize >= split_min_px {
+                if let Some(m) = marker_of(c, &is_marker) {
+                    if big_children[m as usize].is_empty() {
+                        touched.push(m);
+                    }
+                    big_children[m as usize].push(c);
+                }
+            }
+        }
+        for m in touched {
+            let children = std::mem::take(&mut big_children[m as usize]);
+            if children.len() >= 2 {
+                is_marker[m as usize] = false;
+                children.iter().for_each(|&c| is_marker[c as usize] = true);
+            }
+        }
+    }
+    // Final marker per node (parents have greater ids), then per pixel,
+    // numbered by first appearance.
+    let mut final_marker = vec![NO_PARENT; nodes];
+    for node in (0..nodes).rev() {
+        final_marker[node] = if is_marker[node] {
+            node as u32
+        } else {
+            match tree.parent[node] {
+                NO_PARENT => NO_PARENT,
+                p => final_marker[p as usize],
+            }
+        };
+    }
+    let mut number = vec![0u32; nodes];
+    let mut count = 0;
+    let mut data = tree.finest;
+    for l in &mut data {
+        if *l == 0 {
+            continue;
+        }
+        let m = final_marker[*l as usize - 1];
+        *l = if m == NO_PARENT {
+            0
+        } else {
+            let slot = &mut number[m as usize];
+            if *slot == 0 {
+                count += 1;
+                *slot = count;
+            }
+            *slot
+        };
+    }
+    Labels {
+        width: w,
+        height: h,
+        data,
+        count,
+    }
 }
 
 /// Gives every 8-connected group of at least `min_px` reachable but
@@ -136,5 +191,108 @@ mod tests {
         let w = 15;
         assert_ne!(b.data[2 * w + 3], b.data[2 * w + 11]);
         assert!(b.data.iter().zip(&reach).all(|(&l, &r)| (l != 0) == r));
+    }
+
+    /// The former implementation: one full-image labelling per level.
+    fn reference_markers(
+        dist: &[f32],
+        w: u32,
+        h: u32,
+        core_px: f64,
+        split_min_px: usize,
+    ) -> Labels {
+        let mask = |t: f64| {
+            Mask::from_fn(w, h, |x, y| {
+                image::Luma([if f64::from(dist[(y * w + x) as usize]) > t {
+                    255
+                } else {
+                    0
+                }])
+            })
+        };
+        let mut markers = label_components(&mask(core_px), true);
+        let max_d = f64::from(dist.iter().copied().fold(0.0f32, f32::max));
+        let mut level = core_px.max(1.0) * 1.25;
+        while level < max_d {
+            let comps = label_components(&mask(f64::from(level as f32)), true);
+            let n = comps.count as usize + 1;
+            let mut areas = vec![0usize; n];
+            let mut parent = vec![0u32; n];
+            for (&c, &m) in comps.data.iter().zip(&markers.data) {
+                if c != 0 {
+                    areas[c as usize] += 1;
+                    parent[c as usize] = m;
+                }
+            }
+            let mut big_children = vec![0usize; markers.count as usize + 1];
+            for c in 1..n {
+                if areas[c] >= split_min_px && parent[c] != 0 {
+                    big_children[parent[c] as usize] += 1;
+                }
+            }
+            if big_children.iter().any(|&k| k >= 2) {
+                let base = markers.count;
+                for (m, &c) in markers.data.iter_mut().zip(&comps.data) {
+                    if *m != 0 && big_children[*m as usize] >= 2 {
+                        *m = if c != 0 && areas[c as usize] >= split_min_px {
+                            base + c
+                        } else {
+                            0
+                        };
+                    }
+                }
+                markers.count = base + comps.count;
+                markers.compact();
+            }
+            level *= 1.25;
+        }
+        markers
+    }
+
+    #[test]
+    fn markers_agree_with_per_level_labelling() {
+        let mut seed = 9u64;
+        let mut rand = move || {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            seed >> 33
+        };
+        let mut splits = 0;
+        for round in 0..40u32 {
+            let (w, h) = (20 + round % 41, 15 + (round * 7) % 37);
+            // Rooms: random walls and pillars in an open floor.
+            let walls: Vec<(u32, u32, bool)> = (0..3 + round % 5)
+                .map(|_| (rand() as u32 % w, rand() as u32 % h, rand() % 2 == 0))
+                .collect();
+            let pillars: Vec<(u32, u32)> = (0..round % 7)
+                .map(|_| (rand() as u32 % w, rand() as u32 % h))
+                .collect();
+            let m = Mask::from_fn(w, h, |x, y| {
+                let wall = walls.iter().any(|&(wx, wy, vertical)| {
+                    if vertical {
+                        x == wx && y.abs_diff(wy) > 2
+                    } else {
+                        y == wy && x.abs_diff(wx) > 2
+                    }
+                });
+                let pillar = pillars.contains(&(x, y));
+                image::Luma([if wall || pillar { 0 } else { 255 }])
+            });
+            let d = distance_to_background(&m);
+            let max_d = d.iter().copied().fold(0.0f32, f32::max);
+            for core in [0.0, 0.7, 1.0, 1.5, 2.5] {
+                for split in [0, 1, 4, 12] {
+                    let want = reference_markers(&d, w, h, core, split);
+                    let got = split_markers(w, h, &d, max_d, core, split);
+                    assert_eq!(got, want, "round {round} core {core} split {split}");
+                    let cores = Mask::from_fn(w, h, |x, y| {
+                        image::Luma([u8::from(f64::from(d[(y * w + x) as usize]) > core)])
+                    });
+                    splits += usize::from(label_components(&cores, true) != got);
+                }
+            }
+        }
+        assert!(splits > 50, "only {splits} cases split a marker");
     }
 }

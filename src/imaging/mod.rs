@@ -1,6 +1,6 @@
 //! Raster algorithms on binary masks and label images: binarisation,
 //! morphology, exact Euclidean distance, connected components, marker
-//! watershed, skeletonisation and region adjacency.
+//! watershed, skeletonisation, level-set component trees and region adjacency.
 //!
 //! Owns pixel-level algorithms only; knows nothing of maps, metres or the
 //! model. Uses `image`/`imageproc`; must not import anything from the crate.
@@ -12,6 +12,7 @@ mod distance;
 mod label;
 mod morphology;
 mod skeleton;
+mod threshold_tree;
 mod watershed;
 
 pub use adjacency::{Adjacency, region_adjacency};
@@ -20,6 +21,7 @@ pub use distance::{distance_to_background, squared_distance_to_foreground};
 pub use label::{Labels, label_components};
 pub use morphology::{close, dilate, erode, open};
 pub use skeleton::skeletonize;
+pub use threshold_tree::{NO_PARENT, ThresholdTree, threshold_tree};
 pub use watershed::watershed;
 
 /// A binary image: non-zero pixels are the foreground (255 by convention).
