@@ -14,10 +14,10 @@ use crate::imaging::{Labels, Mask, label_components};
 /// drawn grey). Growth is a breadth-first flood from the labelled pixels,
 /// 4-connected, so a pocket between two spaces is shared at the middle.
 pub(crate) fn claim_enclosed_unknown(labels: &mut Labels, grid: &OccupancyGrid, max_px: usize) {
-    if max_px == 0 {
+    let (w, h) = (grid.width as usize, grid.height as usize);
+    if max_px == 0 || w == 0 || h == 0 {
         return;
     }
-    let (w, h) = (grid.width as usize, grid.height as usize);
     let unknown_data = grid
         .cells
         .iter()
@@ -27,27 +27,40 @@ pub(crate) fn claim_enclosed_unknown(labels: &mut Labels, grid: &OccupancyGrid, 
         .unwrap_or_else(|| Mask::new(grid.width, grid.height));
     let pockets = label_components(&unknown, true);
     let n = pockets.count as usize + 1;
-    let mut area = vec![0usize; n];
+    let area = pockets.areas();
     let mut on_border = vec![false; n];
-    for (i, &p) in pockets.data.iter().enumerate() {
-        if p == 0 {
-            continue;
-        }
-        area[p as usize] += 1;
-        let (x, y) = (i % w, i / w);
-        if x == 0 || y == 0 || x + 1 == w || y + 1 == h {
-            on_border[p as usize] = true;
-        }
+    for y in 0..h {
+        let row = &pockets.data[y * w..(y + 1) * w];
+        let border: &[u32] = if y == 0 || y + 1 == h {
+            row
+        } else {
+            &[row[0], row[w - 1]]
+        };
+        border.iter().for_each(|&p| on_border[p as usize] = true);
     }
+    on_border[0] = false;
     let claimable: Vec<bool> = (0..n)
         .map(|p| p != 0 && !on_border[p] && area[p] <= max_px)
         .collect();
+    if !claimable.contains(&true) {
+        return;
+    }
     let open =
         |i: usize, labels: &Labels| labels.data[i] == 0 && claimable[pockets.data[i] as usize];
-    let mut queue: VecDeque<usize> = (0..w * h)
-        .filter(|&i| labels.data[i] != 0)
-        .filter(|&i| neighbours(i, w, h).any(|j| open(j, labels)))
-        .collect();
+    let mut queue = VecDeque::new();
+    for y in 0..h {
+        for x in 0..w {
+            let i = y * w + x;
+            if labels.data[i] != 0
+                && ((x > 0 && open(i - 1, labels))
+                    || (x + 1 < w && open(i + 1, labels))
+                    || (y > 0 && open(i - w, labels))
+                    || (y + 1 < h && open(i + w, labels)))
+            {
+                queue.push_back(i);
+            }
+        }
+    }
     while let Some(i) = queue.pop_front() {
         let l = labels.data[i];
         for j in neighbours(i, w, h) {
@@ -75,23 +88,25 @@ pub(crate) fn fill_specks(labels: &mut Labels, max_px: usize) {
         .unwrap_or_else(|| Mask::new(labels.width, labels.height));
     let specks = label_components(&unlabelled, false);
     let n = specks.count as usize + 1;
-    let mut area = vec![0usize; n];
+    let area = specks.areas();
     // The one label around each speck: 0 = none yet, u32::MAX = several or the border.
     let mut around = vec![0u32; n];
-    for (i, &s) in specks.data.iter().enumerate() {
-        if s == 0 {
-            continue;
-        }
-        let s = s as usize;
-        area[s] += 1;
-        let (x, y) = (i % w, i / w);
-        if x == 0 || y == 0 || x + 1 == w || y + 1 == h {
-            around[s] = u32::MAX;
-        }
-        for j in neighbours(i, w, h) {
-            let l = labels.data[j];
-            if l != 0 && around[s] != l {
-                around[s] = if around[s] == 0 { l } else { u32::MAX };
+    for y in 0..h {
+        for x in 0..w {
+            let i = y * w + x;
+            let s = specks.data[i] as usize;
+            if s == 0 || around[s] == u32::MAX {
+                continue;
+            }
+            if x == 0 || y == 0 || x + 1 == w || y + 1 == h {
+                around[s] = u32::MAX;
+                continue;
+            }
+            for j in [i - 1, i + 1, i - w, i + w] {
+                let l = labels.data[j];
+                if l != 0 && around[s] != l {
+                    around[s] = if around[s] == 0 { l } else { u32::MAX };
+                }
             }
         }
     }

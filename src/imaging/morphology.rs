@@ -15,16 +15,122 @@ use super::Mask;
 
 /// Per pixel, the horizontal distance to the nearest pixel of its row whose
 /// foreground-ness is `target`, with `outside` telling whether the columns
-/// just outside the image count as such a pixel; `u32::MAX` when none.
-fn row_distances(mask: &Mask, target: bool, outside: bool) -> Vec<u32> {
+/// just outside the image count as such a pixel; distances of `cap` or more
+/// are `cap` (so `cap` stands for "none within reach"), `cap` ≤ 255.
+///
+/// The disk filters only ask whether a distance is within a chord of at
+/// most `r`, so for the small radii of the pipeline a byte with a cap just
+/// above `r` answers the same as the exact distance, and the row is
+/// swept once per offset with no dependence between pixels.
+fn row_distances(mask: &Mask, target: bool, outside: bool, cap: u8) -> Vec<u8> {
     let (w, h) = (mask.width() as usize, mask.height() as usize);
     let src = mask.as_raw();
-    let mut out = vec![u32::MAX; w * h];
-    // Distances saturate far below u32::MAX, which stays "none".
-    let none = if outside { 0 } else { u32::MAX / 2 };
+    let mut out = vec![cap; w * h];
+    let mut is_target = vec![0u8; w];
     for (row, dst) in src
         .chunks_exact(w.max(1))
         .zip(out.chunks_exact_mut(w.max(1)))
+        .take(h)
+    {
+        // 0 on target pixels, `cap` elsewhere.
+        for (t, &p) in is_target.iter_mut().zip(row) {
+            *t = if (p != 0) == target { 0 } else { cap };
+        }
+        dst.copy_from_slice(&is_target);
+        for k in 1..cap {
+            let k_us = k as usize;
+            if k_us >= w {
+                break;
+            }
+            // Target `k` to the left, then `k` to the right.
+            for (o, &t) in dst[k_us..].iter_mut().zip(&is_target) {
+                *o = (*o).min(t | k);
+            }
+            for (o, &t) in dst.iter_mut().zip(&is_target[k_us..]) {
+                *o = (*o).min(t | k);
+            }
+        }
+        if outside {
+            for (x, o) in dst.iter_mut().enumerate() {
+                let edge = (x + 1).min(w - x).min(cap as usize) as u8;
+                *o = (*o).min(edge);
+            }
+        }
+    }
+    out
+}
+
+/// For each row offset `dy` of a disk of radius² `r2`, the largest
+/// horizontal distance still inside it: `floor(sqrt(r2 - dy²))`.
+fn chords(r2: f64) -> Vec<(i64, u32)> {
+    let reach = r2.max(0.0).sqrt().floor() as i64;
+    (-reach..=reach)
+        .map(|dy| (dy, (r2 - (dy * dy) as f64).max(0.0).sqrt().floor() as u32))
+        .collect()
+}
+
+/// `base` pixels (non-zero in `src` when `keep_foreground`, every pixel
+/// otherwise) kept or added by a disk test: a pixel is "hit" when some row
+/// of its disk has a row distance within the chord. Erosion keeps the
+/// foreground pixels not hit (rows outside the image hit); dilation marks
+/// the pixels hit or already foreground (rows outside never hit).
+fn disk_filter(mask: &Mask, r: f64, erode: bool) -> Mask {
+    let (w, h) = (mask.width() as usize, mask.height() as usize);
+    if r.abs() >= f64::from(u8::MAX - 1) {
+        return wide_disk_filter(mask, r, erode);
+    }
+    // Every chord is at most floor(r) < cap.
+    let cap = r.abs().floor() as u8 + 1;
+    let rd = row_distances(mask, !erode, erode, cap);
+    let src = mask.as_raw();
+    let chords = chords(r * r);
+    let mut data = vec![0u8; w * h];
+    // Per pixel of a row: 0 if hit, else non-zero.
+    let mut miss = vec![0u8; w];
+    for y in 0..h {
+        miss.iter_mut().for_each(|v| *v = 1);
+        let mut outside_hit = false;
+        for &(dy, lim) in &chords {
+            let yy = y as i64 + dy;
+            if yy < 0 || yy >= h as i64 {
+                outside_hit |= erode;
+                continue;
+            }
+            let lim = lim as u8;
+            let row = &rd[yy as usize * w..(yy as usize + 1) * w];
+            miss.iter_mut()
+                .zip(row)
+                .for_each(|(v, &d)| *v &= u8::from(d > lim));
+        }
+        let row_src = &src[y * w..(y + 1) * w];
+        let row_out = &mut data[y * w..(y + 1) * w];
+        if erode {
+            if !outside_hit {
+                for ((o, &s), &m) in row_out.iter_mut().zip(row_src).zip(&miss) {
+                    *o = if s != 0 && m != 0 { 255 } else { 0 };
+                }
+            }
+        } else {
+            for ((o, &s), &m) in row_out.iter_mut().zip(row_src).zip(&miss) {
+                *o = if s != 0 || m == 0 { 255 } else { 0 };
+            }
+        }
+    }
+    Mask::from_raw(mask.width(), mask.height(), data).unwrap_or_else(|| mask.clone())
+}
+
+/// [`disk_filter`] for radii beyond a byte's reach: the same test from
+/// exact row distances.
+fn wide_disk_filter(mask: &Mask, r: f64, erode: bool) -> Mask {
+    let (w, h) = (mask.width() as usize, mask.height() as usize);
+    let src = mask.as_raw();
+    let (target, outside) = (!erode, erode);
+    // Per pixel, the exact row distance to a target pixel (u32::MAX: none).
+    let mut rd = vec![u32::MAX; w * h];
+    let none = if outside { 0 } else { u32::MAX / 2 };
+    for (row, dst) in src
+        .chunks_exact(w.max(1))
+        .zip(rd.chunks_exact_mut(w.max(1)))
         .take(h)
     {
         let mut d = none;
@@ -51,26 +157,6 @@ fn row_distances(mask: &Mask, target: bool, outside: bool) -> Vec<u32> {
                 .for_each(|o| *o = u32::MAX);
         }
     }
-    out
-}
-
-/// For each row offset `dy` of a disk of radius² `r2`, the largest
-/// horizontal distance still inside it: `floor(sqrt(r2 - dy²))`.
-fn chords(r2: f64) -> Vec<(i64, u32)> {
-    let reach = r2.max(0.0).sqrt().floor() as i64;
-    (-reach..=reach)
-        .map(|dy| (dy, (r2 - (dy * dy) as f64).max(0.0).sqrt().floor() as u32))
-        .collect()
-}
-
-/// `base` pixels (non-zero in `src` when `keep_foreground`, every pixel
-/// otherwise) kept or added by a disk test: a pixel is "hit" when some row
-/// of its disk has a row distance within the chord. Erosion keeps the
-/// foreground pixels not hit (rows outside the image hit); dilation marks
-/// the pixels hit or already foreground (rows outside never hit).
-fn disk_filter(mask: &Mask, rd: &[u32], r: f64, erode: bool) -> Mask {
-    let (w, h) = (mask.width() as usize, mask.height() as usize);
-    let src = mask.as_raw();
     let chords = chords(r * r);
     let mut data = vec![0u8; w * h];
     let mut hit = vec![false; w];
@@ -110,12 +196,12 @@ fn disk_filter(mask: &Mask, rd: &[u32], r: f64, erode: bool) -> Mask {
 /// assert_eq!(erode(&m, 1.0).as_raw().iter().filter(|&&p| p != 0).count(), 9);
 /// ```
 pub fn erode(mask: &Mask, r: f64) -> Mask {
-    disk_filter(mask, &row_distances(mask, false, true), r, true)
+    disk_filter(mask, r, true)
 }
 
 /// Pixels within distance `r` (pixels) of the foreground.
 pub fn dilate(mask: &Mask, r: f64) -> Mask {
-    disk_filter(mask, &row_distances(mask, true, false), r, false)
+    disk_filter(mask, r, false)
 }
 
 /// Erosion then dilation: removes foreground parts narrower than `2r`.
@@ -200,13 +286,40 @@ mod tests {
                     255
                 }])
             });
-            for r in [0.5, 1.0, 1.5, 2.3, 3.0, 4.7] {
+            for r in [0.0, 0.5, 1.0, 1.5, 2.3, 3.0, 4.7, 9.9, 260.0] {
                 assert_eq!(erode(&m, r), reference(&m, r, true), "erode {w}x{h} r={r}");
                 assert_eq!(
                     dilate(&m, r),
                     reference(&m, r, false),
                     "dilate {w}x{h} r={r}"
                 );
+            }
+        }
+    }
+
+    #[test]
+    fn byte_distances_agree_with_exact_ones() {
+        let mut seed = 13u64;
+        for round in 0..20u32 {
+            let (w, h) = (5 + round * 3, 4 + (round * 7) % 31);
+            let m = Mask::from_fn(w, h, |_, _| {
+                seed = seed
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                image::Luma([if (seed >> 33) % (2 + u64::from(round % 9)) == 0 {
+                    0
+                } else {
+                    255
+                }])
+            });
+            for r in [-2.0, 0.0, 0.3, 1.0, 2.5, 4.0, 6.1, 12.0, 253.9] {
+                for erode in [true, false] {
+                    assert_eq!(
+                        disk_filter(&m, r, erode),
+                        wide_disk_filter(&m, r, erode),
+                        "{w}x{h} r={r} erode={erode}"
+                    );
+                }
             }
         }
     }
