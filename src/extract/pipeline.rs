@@ -184,23 +184,31 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
 
 /// The widest inscribed diameter (px) of every label.
 fn widest_passages(labels: &Labels, dist: &[f32]) -> Vec<f64> {
-    let mut widest = vec![0.0f64; labels.count as usize + 1];
-    for (&l, &d) in labels.data.iter().zip(dist) {
-        let w = &mut widest[l as usize];
-        *w = w.max(2.0 * f64::from(d));
-    }
-    widest
+    region_shapes(labels, dist)
+        .into_iter()
+        .map(|s| s.1)
+        .collect()
 }
 
 /// (area in px, widest inscribed diameter in px) of every label.
 fn region_shapes(labels: &Labels, dist: &[f32]) -> Vec<(usize, f64)> {
-    let mut s = vec![(0usize, 0.0f64); labels.count as usize + 1];
-    for (&l, &d) in labels.data.iter().zip(dist) {
+    let mut s = vec![(0usize, 0.0f32); labels.count as usize + 1];
+    // A run of one label updates it once (no store-to-load chain per pixel).
+    let mut i = 0;
+    while i < labels.data.len() {
+        let (l, start) = (labels.data[i], i);
+        let mut d = 0.0f32;
+        while i < labels.data.len() && labels.data[i] == l {
+            d = d.max(dist[i]);
+            i += 1;
+        }
         let e = &mut s[l as usize];
-        e.0 += 1;
-        e.1 = e.1.max(2.0 * f64::from(d));
+        e.0 += i - start;
+        e.1 = e.1.max(d);
     }
-    s
+    s.into_iter()
+        .map(|(a, d)| (a, 2.0 * f64::from(d)))
+        .collect()
 }
 
 type Built = (Labels, Nrg, BTreeMap<SpaceId, [f64; 2]>);
@@ -220,16 +228,18 @@ fn build(
     let mut count = vec![0usize; n];
     let mut sum = vec![[0.0f64; 2]; n];
     let mut best = vec![(-1.0f32, 0usize); n];
-    for (i, &l) in labels.data.iter().enumerate() {
-        if l == 0 {
-            continue;
-        }
-        let l = l as usize;
-        count[l] += 1;
-        sum[l][0] += (i % w) as f64;
-        sum[l][1] += (i / w) as f64;
-        if dist[i] > best[l].0 {
-            best[l] = (dist[i], i);
+    for (y, row) in labels.data.chunks_exact(w.max(1)).enumerate() {
+        for (x, &l) in row.iter().enumerate() {
+            if l == 0 {
+                continue;
+            }
+            let (l, i) = (l as usize, y * w + x);
+            count[l] += 1;
+            sum[l][0] += x as f64;
+            sum[l][1] += y as f64;
+            if dist[i] > best[l].0 {
+                best[l] = (dist[i], i);
+            }
         }
     }
     let mut new_id = vec![0u32; n];

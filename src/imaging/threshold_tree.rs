@@ -80,14 +80,22 @@ pub fn threshold_tree(depth: &[u8], width: u32, height: u32) -> ThresholdTree {
         for &p in bucket {
             sets[p as usize] = p;
         }
+        // A pixel joins its deeper neighbours and, of its neighbours at
+        // this depth, those before it (the others join it in their turn).
+        // The bucket is in raster order, so the row is tracked, not divided.
+        let mut y = 0;
         for &p in bucket {
             let p = p as usize;
-            let (x, y) = (p % w, p / w);
+            while p >= (y + 1) * w {
+                y += 1;
+            }
+            let x = p - y * w;
             let (x0, x1) = (x.saturating_sub(1), (x + 1).min(w - 1));
             let (y0, y1) = (y.saturating_sub(1), (y + 1).min(h - 1));
             for yy in y0..=y1 {
                 for q in yy * w + x0..=yy * w + x1 {
-                    if q != p && depth[q] as usize >= k {
+                    let dq = depth[q] as usize;
+                    if dq > k || (dq == k && q < p) {
                         union(&mut sets, p as u32, q as u32);
                     }
                 }

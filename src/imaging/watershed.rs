@@ -54,13 +54,16 @@ pub fn watershed(elevation: &[u16], markers: &Labels, allowed: &[bool]) -> Label
             continue;
         };
         let i = i as usize;
+        let (nb, k) = neighbour_array(i, w, h);
+        let nb = &nb[..k];
         // Take the label of the first labelled neighbour (all are from the same flood front).
-        let label = neighbours(i, w, h)
-            .map(|j| out.data[j])
+        let label = nb
+            .iter()
+            .map(|&j| out.data[j])
             .find(|&l| l != 0)
             .unwrap_or(0);
         out.data[i] = label;
-        for j in neighbours(i, w, h) {
+        for &j in nb {
             if !queued[j] && allowed[j] {
                 queued[j] = true;
                 let lj = (elevation[j] as usize).max(level);
@@ -69,6 +72,26 @@ pub fn watershed(elevation: &[u16], markers: &Labels, allowed: &[bool]) -> Label
         }
     }
     out
+}
+
+/// The 4-neighbours of pixel `i` inside a `w × h` image, in the order of
+/// [`neighbours`], as an array and its length (one division, not two).
+fn neighbour_array(i: usize, w: usize, h: usize) -> ([usize; 4], usize) {
+    let (x, y) = (i % w, i / w);
+    let mut out = [0; 4];
+    let mut k = 0;
+    for (ok, j) in [
+        (y > 0, i.wrapping_sub(w)),
+        (x > 0, i.wrapping_sub(1)),
+        (x + 1 < w, i + 1),
+        (y + 1 < h, i + w),
+    ] {
+        if ok {
+            out[k] = j;
+            k += 1;
+        }
+    }
+    (out, k)
 }
 
 /// The 4-neighbours of pixel `i` inside a `w × h` image.
