@@ -25,27 +25,7 @@ pub(crate) fn free_without_furniture(grid: &OccupancyGrid, max_extent_px: f64) -
     let blocked = Mask::from_raw(w, h, blocked_data).unwrap_or_else(|| Mask::new(w, h));
     let blobs = label_components(&blocked, true);
     // Per blob: min/max col and row.
-    let n = blobs.count as usize + 1;
-    let mut bbox = vec![[u32::MAX, u32::MAX, 0u32, 0u32]; n];
-    for (y, row) in blobs.data.chunks_exact(w.max(1) as usize).enumerate() {
-        let y = y as u32;
-        let mut x = 0;
-        // Runs of one label update its box once.
-        while x < row.len() {
-            let l = row[x];
-            let x0 = x;
-            while x < row.len() && row[x] == l {
-                x += 1;
-            }
-            if l != 0 {
-                let b = &mut bbox[l as usize];
-                b[0] = b[0].min(x0 as u32);
-                b[1] = b[1].min(y);
-                b[2] = b[2].max(x as u32 - 1);
-                b[3] = b[3].max(y);
-            }
-        }
-    }
+    let bbox = blobs.bounding_boxes();
     let island: Vec<bool> = bbox
         .iter()
         .map(|b| {

@@ -47,20 +47,17 @@ pub(crate) fn claim_enclosed_unknown(labels: &mut Labels, grid: &OccupancyGrid, 
     }
     let open =
         |i: usize, labels: &Labels| labels.data[i] == 0 && claimable[pockets.data[i] as usize];
-    let mut queue = VecDeque::new();
-    for y in 0..h {
-        for x in 0..w {
-            let i = y * w + x;
-            if labels.data[i] != 0
-                && ((x > 0 && open(i - 1, labels))
-                    || (x + 1 < w && open(i + 1, labels))
-                    || (y > 0 && open(i - w, labels))
-                    || (y + 1 < h && open(i + w, labels)))
-            {
-                queue.push_back(i);
-            }
+    // The flood starts from the labelled pixels next to an open one, in
+    // raster order: found from the open pixels, which are few.
+    let mut starts = Vec::new();
+    for (i, &p) in pockets.data.iter().enumerate() {
+        if claimable[p as usize] && labels.data[i] == 0 {
+            starts.extend(neighbours(i, w, h).filter(|&j| labels.data[j] != 0));
         }
     }
+    starts.sort_unstable();
+    starts.dedup();
+    let mut queue = VecDeque::from(starts);
     while let Some(i) = queue.pop_front() {
         let l = labels.data[i];
         for j in neighbours(i, w, h) {

@@ -11,20 +11,7 @@ use crate::model::{Point, Ring, polygon_area};
 
 /// Bounding box `[min_col, min_row, max_col, max_row]` of every label (index 0 unused).
 pub(crate) fn bounding_boxes(labels: &Labels) -> Vec<[u32; 4]> {
-    let mut b = vec![[u32::MAX, u32::MAX, 0, 0]; labels.count as usize + 1];
-    let w = labels.width as usize;
-    for (i, &l) in labels.data.iter().enumerate() {
-        if l == 0 {
-            continue;
-        }
-        let (x, y) = ((i % w) as u32, (i / w) as u32);
-        let e = &mut b[l as usize];
-        e[0] = e[0].min(x);
-        e[1] = e[1].min(y);
-        e[2] = e[2].max(x);
-        e[3] = e[3].max(y);
-    }
-    b
+    labels.bounding_boxes()
 }
 
 /// The outline of label `l` (largest outer border) and its holes, in metres.

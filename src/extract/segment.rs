@@ -18,7 +18,7 @@ pub(crate) fn segment_basins(
     split_min_px: usize,
 ) -> Labels {
     let (w, h) = clean.dimensions();
-    let max_d = dist.iter().copied().fold(0.0f32, f32::max);
+    let max_d = max_distance(dist);
     let markers = split_markers(w, h, dist, max_d, core_px, split_min_px);
     let elevation: Vec<u16> = dist
         .iter()
@@ -27,6 +27,20 @@ pub(crate) fn segment_basins(
     let mut basins = watershed(&elevation, &markers, reachable);
     fill_unreached(&mut basins, reachable, min_px);
     basins
+}
+
+/// The largest of `dist` (0 if none); independent lanes break the chain
+/// of dependent compares (max is exact, so the order does not matter).
+fn max_distance(dist: &[f32]) -> f32 {
+    let mut lanes = [0.0f32; 16];
+    let chunks = dist.chunks_exact(lanes.len());
+    let rest = chunks.remainder();
+    for chunk in chunks {
+        for (l, &d) in lanes.iter_mut().zip(chunk) {
+            *l = l.max(d);
+        }
+    }
+    lanes.iter().chain(rest).copied().fold(0.0, f32::max)
 }
 
 /// Markers: the 8-connected components of the places farther than
@@ -280,7 +294,8 @@ mod tests {
                 image::Luma([if wall || pillar { 0 } else { 255 }])
             });
             let d = distance_to_background(&m);
-            let max_d = d.iter().copied().fold(0.0f32, f32::max);
+            let max_d = max_distance(&d);
+            assert_eq!(max_d, d.iter().copied().fold(0.0f32, f32::max));
             for core in [0.0, 0.7, 1.0, 1.5, 2.5] {
                 for split in [0, 1, 4, 12] {
                     let want = reference_markers(&d, w, h, core, split);

@@ -43,6 +43,39 @@ impl Labels {
         a
     }
 
+    /// Bounding box `[min_col, min_row, max_col, max_row]` of every label,
+    /// indexed by label (index 0 unused; `[u32::MAX, u32::MAX, 0, 0]` for
+    /// labels with no pixel). Each run of one label in a row updates its box
+    /// once.
+    ///
+    /// ```
+    /// use nrgdb::imaging::Labels;
+    /// let l = Labels { width: 3, height: 2, data: vec![0, 1, 1, 2, 0, 1], count: 2 };
+    /// assert_eq!(l.bounding_boxes()[1..], [[1, 0, 2, 1], [0, 1, 0, 1]]);
+    /// ```
+    pub fn bounding_boxes(&self) -> Vec<[u32; 4]> {
+        let mut bbox = vec![[u32::MAX, u32::MAX, 0u32, 0u32]; self.count as usize + 1];
+        let w = (self.width as usize).max(1);
+        for (y, row) in self.data.chunks_exact(w).enumerate() {
+            let y = y as u32;
+            let mut x = 0;
+            while x < row.len() {
+                let (l, x0) = (row[x], x);
+                while x < row.len() && row[x] == l {
+                    x += 1;
+                }
+                if l != 0 {
+                    let b = &mut bbox[l as usize];
+                    b[0] = b[0].min(x0 as u32);
+                    b[1] = b[1].min(y);
+                    b[2] = b[2].max(x as u32 - 1);
+                    b[3] = b[3].max(y);
+                }
+            }
+        }
+        bbox
+    }
+
     /// Renumbers labels to 1..=n in order of first appearance, dropping gaps.
     pub fn compact(&mut self) {
         let mut map = vec![0u32; self.count as usize + 1];

@@ -47,20 +47,11 @@ pub fn threshold_tree(depth: &[u8], width: u32, height: u32) -> ThresholdTree {
     let (w, h) = (width as usize, height as usize);
     let n = (w * h).min(depth.len());
     let max_k = depth[..n].iter().copied().max().unwrap_or(0) as usize;
-    // Pixels by depth, raster order within a depth (counting sort).
-    let mut start = vec![0usize; max_k + 2];
-    for &d in &depth[..n] {
-        start[d as usize + 1] += 1;
-    }
-    for k in 1..start.len() {
-        start[k] += start[k - 1];
-    }
-    let mut next = start.clone();
-    let mut order = vec![0u32; n - start[1]];
+    // Pixels by depth, raster order within a depth.
+    let mut buckets = vec![Vec::new(); max_k + 1];
     for (p, &d) in depth[..n].iter().enumerate() {
         if d != 0 {
-            order[next[d as usize] - start[1]] = p as u32;
-            next[d as usize] += 1;
+            buckets[d as usize].push(p as u32);
         }
     }
     let mut sets = vec![0u32; n];
@@ -76,15 +67,15 @@ pub fn threshold_tree(depth: &[u8], width: u32, height: u32) -> ThresholdTree {
     let mut rep: Vec<u32> = Vec::new();
     let mut deeper = 0..0;
     for k in (1..=max_k).rev() {
-        let bucket = &order[start[k] - start[1]..start[k + 1] - start[1]];
-        for &p in bucket {
+        let bucket = std::mem::take(&mut buckets[k]);
+        for &p in &bucket {
             sets[p as usize] = p;
         }
         // A pixel joins its deeper neighbours and, of its neighbours at
         // this depth, those before it (the others join it in their turn).
         // The bucket is in raster order, so the row is tracked, not divided.
         let mut y = 0;
-        for &p in bucket {
+        for &p in &bucket {
             let p = p as usize;
             while p >= (y + 1) * w {
                 y += 1;
@@ -120,7 +111,7 @@ pub fn threshold_tree(depth: &[u8], width: u32, height: u32) -> ThresholdTree {
             let node = node_of(root, &mut tree, &mut rep);
             tree.parent[child as usize] = node;
         }
-        for &p in bucket {
+        for &p in &bucket {
             let root = find(&mut sets, p);
             let node = node_of(root, &mut tree, &mut rep);
             tree.finest[p as usize] = node + 1;
