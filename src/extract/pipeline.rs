@@ -15,7 +15,7 @@ use super::resample::{coarsen, pixel_centroids, refine};
 use super::segment::segment_basins;
 use super::{ExtractError, ExtractParams, Method};
 use crate::grid::OccupancyGrid;
-use crate::imaging::{Labels, distance_to_background};
+use crate::imaging::{Labels, distance_to_background, max_distance};
 use crate::model::{Connection, Nrg, Space, SpaceId, SpaceKind};
 
 /// Unlabelled specks smaller than this (m²) inside one space join it.
@@ -196,15 +196,13 @@ fn region_shapes(labels: &Labels, dist: &[f32]) -> Vec<(usize, f64)> {
     // A run of one label updates it once (no store-to-load chain per pixel).
     let mut i = 0;
     while i < labels.data.len() {
-        let (l, start) = (labels.data[i], i);
-        let mut d = 0.0f32;
-        while i < labels.data.len() && labels.data[i] == l {
-            d = d.max(dist[i]);
-            i += 1;
-        }
+        let l = labels.data[i];
+        let run = labels.data[i..].iter().position(|&m| m != l);
+        let end = run.map_or(labels.data.len(), |r| i + r);
         let e = &mut s[l as usize];
-        e.0 += i - start;
-        e.1 = e.1.max(d);
+        e.0 += end - i;
+        e.1 = e.1.max(max_distance(&dist[i..end]));
+        i = end;
     }
     s.into_iter()
         .map(|(a, d)| (a, 2.0 * f64::from(d)))

@@ -1,7 +1,7 @@
 //! Space outlines: contours of each label (Suzuki–Abe, via imageproc),
 //! simplified, in metres in the map frame, exterior CCW and holes CW.
 
-use image::{GrayImage, Luma};
+use image::GrayImage;
 use imageproc::contours::{BorderType, find_contours};
 
 use super::simplify::simplify_ring;
@@ -29,11 +29,20 @@ pub(crate) fn outline(
     // One pixel of padding so borders never touch the crop's edge.
     let (cw, ch) = (x1 - x0 + 3, y1 - y0 + 3);
     let w = labels.width as usize;
-    let crop = GrayImage::from_fn(cw, ch, |x, y| {
-        let inside = x >= 1 && y >= 1 && x <= x1 - x0 + 1 && y <= y1 - y0 + 1;
-        let v = inside && labels.data[(y0 + y - 1) as usize * w + (x0 + x - 1) as usize] == l;
-        Luma([if v { 255 } else { 0 }])
-    });
+    let mut crop = GrayImage::new(cw, ch);
+    let (cols, cw) = ((x1 - x0 + 1) as usize, cw as usize);
+    for (y, dst) in crop
+        .chunks_exact_mut(cw)
+        .skip(1)
+        .take((y1 - y0 + 1) as usize)
+        .enumerate()
+    {
+        let start = (y0 as usize + y) * w + x0 as usize;
+        let src = &labels.data[start..start + cols];
+        for (d, &s) in dst[1..=cols].iter_mut().zip(src) {
+            *d = if s == l { 255 } else { 0 };
+        }
+    }
     let contours = find_contours::<i32>(&crop);
     let to_m = |c: &imageproc::contours::Contour<i32>| -> Ring {
         c.points

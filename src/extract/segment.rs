@@ -1,7 +1,9 @@
 //! Watershed segmentation of free space into basins (paper §4.3.2, Tab. 3),
 //! with markers from the distance transform so corridors are not cut up.
 
-use crate::imaging::{Labels, Mask, NO_PARENT, label_components, threshold_tree, watershed};
+use crate::imaging::{
+    Labels, Mask, NO_PARENT, label_components, max_distance, threshold_tree, watershed,
+};
 
 /// Basins of the free space: markers are the components of the places
 /// farther than `core_px` from any obstacle (a passage narrower than
@@ -27,20 +29,6 @@ pub(crate) fn segment_basins(
     let mut basins = watershed(&elevation, &markers, reachable);
     fill_unreached(&mut basins, reachable, min_px);
     basins
-}
-
-/// The largest of `dist` (0 if none); independent lanes break the chain
-/// of dependent compares (max is exact, so the order does not matter).
-fn max_distance(dist: &[f32]) -> f32 {
-    let mut lanes = [0.0f32; 16];
-    let chunks = dist.chunks_exact(lanes.len());
-    let rest = chunks.remainder();
-    for chunk in chunks {
-        for (l, &d) in lanes.iter_mut().zip(chunk) {
-            *l = l.max(d);
-        }
-    }
-    lanes.iter().chain(rest).copied().fold(0.0, f32::max)
 }
 
 /// Markers: the 8-connected components of the places farther than
@@ -166,6 +154,9 @@ pub(crate) fn fill_unreached(basins: &mut Labels, reachable: &[bool], min_px: us
         .map(|(&l, &r)| if l == 0 && r { 255 } else { 0 })
         .collect();
     let rest = Mask::from_raw(w, h, rest_data).unwrap_or_else(|| Mask::new(w, h));
+    if rest.iter().all(|&p| p == 0) {
+        return;
+    }
     let mut extra = label_components(&rest, true);
     let areas = extra.areas();
     extra.data.iter_mut().for_each(|e| {

@@ -51,7 +51,10 @@ pub fn distance_to_background(mask: &Mask) -> Vec<f32> {
         }
     }
     // Phase 2, per row: the lower envelope of the parabolas (x - u)² + g(u)²,
-    // plus the columns just outside the image (g = 0).
+    // plus the columns just outside the image (g = 0). A background pixel
+    // of the row (g = 0) is nearer than anything beyond it, so each run of
+    // foreground is done on its own, between the background pixels that
+    // bound it, and background runs are skipped.
     let mut s = vec![0usize; w];
     let mut t = vec![0i64; w];
     let mut sq = vec![0i64; w];
@@ -60,25 +63,54 @@ pub fn distance_to_background(mask: &Mask) -> Vec<f32> {
         .zip(g.chunks_exact(w))
         .zip(out.chunks_exact_mut(w))
     {
-        if row.iter().all(|&p| p == 0) {
-            continue;
-        }
-        for (q, &gv) in sq.iter_mut().zip(g_row) {
-            *q = i64::from(gv) * i64::from(gv);
-        }
-        lower_envelope(&sq, &mut s, &mut t, |x, d2| {
-            if row[x] != 0 {
-                let edge = (x + 1).min(w - x) as i64;
-                o_row[x] = (d2.min(edge * edge) as f64).sqrt() as f32;
+        let mut x = 0;
+        while let Some(offset) = row[x..].iter().position(|&p| p != 0) {
+            let a = x + offset;
+            let b = row[a..].iter().position(|&p| p == 0).map_or(w, |e| a + e);
+            x = b;
+            let (lo, hi) = (a.saturating_sub(1), (b + 1).min(w));
+            for (q, &gv) in sq[lo..hi].iter_mut().zip(&g_row[lo..hi]) {
+                *q = i64::from(gv) * i64::from(gv);
             }
-        });
+            lower_envelope(&sq[lo..hi], &mut s, &mut t, |i, d2| {
+                let x = lo + i;
+                if row[x] != 0 {
+                    let edge = (x + 1).min(w - x) as i64;
+                    o_row[x] = (d2.min(edge * edge) as f64).sqrt() as f32;
+                }
+            });
+            if x == w {
+                break;
+            }
+        }
     }
     out
 }
 
+/// The largest of `dist`, at least 0 (so 0 for an empty slice). Kept in
+/// independent lanes, so there is no chain of dependent compares; max is
+/// exact, so the result is the same as a fold in order.
+///
+/// ```
+/// use nrgdb::imaging::max_distance;
+/// assert_eq!(max_distance(&[1.0, 3.5, 2.0]), 3.5);
+/// assert_eq!(max_distance(&[]), 0.0);
+/// ```
+pub fn max_distance(dist: &[f32]) -> f32 {
+    let mut lanes = [0.0f32; 16];
+    let chunks = dist.chunks_exact(lanes.len());
+    let rest = chunks.remainder();
+    for chunk in chunks {
+        for (l, &d) in lanes.iter_mut().zip(chunk) {
+            *l = l.max(d);
+        }
+    }
+    lanes.iter().chain(rest).copied().fold(0.0, f32::max)
+}
+
 /// Meijster's second phase over one row of squared column distances `f`:
 /// calls `emit(x, min_u (x - u)² + f(u))` for every `x`, right to left.
-/// `s` and `t` are scratch of `f.len()`.
+/// `s` and `t` are scratch of at least `f.len()`.
 fn lower_envelope(f: &[i64], s: &mut [usize], t: &mut [i64], mut emit: impl FnMut(usize, i64)) {
     let m = f.len();
     let dist = |x: i64, u: usize| (x - u as i64) * (x - u as i64) + f[u];

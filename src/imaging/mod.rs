@@ -17,7 +17,7 @@ mod watershed;
 
 pub use adjacency::{Adjacency, region_adjacency};
 pub use binarize::binarize;
-pub use distance::{distance_to_background, squared_distance_to_foreground};
+pub use distance::{distance_to_background, max_distance, squared_distance_to_foreground};
 pub use label::{Labels, label_components};
 pub use morphology::{close, dilate, erode, open};
 pub use skeleton::skeletonize;
