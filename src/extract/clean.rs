@@ -3,7 +3,7 @@
 
 use super::furniture::free_without_furniture;
 use crate::grid::OccupancyGrid;
-use crate::imaging::{Mask, dilate, label_components, open};
+use crate::imaging::{Mask, dilate, label_runs, open};
 
 /// The cleaned free space and the free pixels it may grow back into.
 pub(crate) struct FreeSpace {
@@ -30,13 +30,17 @@ pub(crate) fn clean_free(
     } else {
         free.clone()
     };
-    let labels = label_components(&clean, true);
-    let areas = labels.areas();
+    let comps = label_runs(&clean, true);
+    let areas = comps.areas();
     let min_px = (min_area_m2 / (grid.resolution * grid.resolution)).ceil() as usize;
-    for (p, &l) in clean.iter_mut().zip(labels.data.iter()) {
-        if l != 0 && areas[l as usize] < min_px.max(1) {
-            *p = 0;
-        }
+    let w = clean.width() as usize;
+    for r in comps
+        .runs
+        .iter()
+        .filter(|r| areas[r.label as usize] < min_px.max(1))
+    {
+        let i = r.y as usize * w;
+        clean.as_mut()[i + r.x0 as usize..i + r.x1 as usize].fill(0);
     }
     let near = dilate(&clean, r + 1.0);
     let reachable = free

@@ -5,7 +5,7 @@
 //! were empty and the pixels under its furniture belong to it.
 
 use crate::grid::{Cell, OccupancyGrid};
-use crate::imaging::{Mask, label_components};
+use crate::imaging::{Mask, label_runs};
 
 /// The free mask (255 free) of `grid` in which every 8-connected component
 /// of non-free pixels that does not touch the image border and whose
@@ -23,8 +23,7 @@ pub(crate) fn free_without_furniture(grid: &OccupancyGrid, max_extent_px: f64) -
     }
     let blocked_data = free.iter().map(|&f| 255 - f).collect();
     let blocked = Mask::from_raw(w, h, blocked_data).unwrap_or_else(|| Mask::new(w, h));
-    let blobs = label_components(&blocked, true);
-    // Per blob: min/max col and row.
+    let blobs = label_runs(&blocked, true);
     let bbox = blobs.bounding_boxes();
     let island: Vec<bool> = bbox
         .iter()
@@ -38,11 +37,11 @@ pub(crate) fn free_without_furniture(grid: &OccupancyGrid, max_extent_px: f64) -
             b[0] != u32::MAX && !touches_border && extent <= max_extent_px
         })
         .collect();
-    let data = free
-        .iter()
-        .zip(&blobs.data)
-        .map(|(&f, &l)| if f != 0 || island[l as usize] { 255 } else { 0 })
-        .collect();
+    let mut data = free;
+    for r in blobs.runs.iter().filter(|r| island[r.label as usize]) {
+        let i = r.y as usize * w as usize;
+        data[i + r.x0 as usize..i + r.x1 as usize].fill(255);
+    }
     Mask::from_raw(w, h, data).unwrap_or_else(|| Mask::new(w, h))
 }
 

@@ -6,7 +6,7 @@
 use std::collections::VecDeque;
 
 use crate::grid::{Cell, OccupancyGrid};
-use crate::imaging::{Labels, Mask, label_components};
+use crate::imaging::{Labels, Mask, label_runs};
 
 /// Grows `labels` into every 8-connected component of unknown cells that
 /// does not touch the image border (what touches it is the outside) and
@@ -25,34 +25,30 @@ pub(crate) fn claim_enclosed_unknown(labels: &mut Labels, grid: &OccupancyGrid, 
         .collect();
     let unknown = Mask::from_raw(grid.width, grid.height, unknown_data)
         .unwrap_or_else(|| Mask::new(grid.width, grid.height));
-    let pockets = label_components(&unknown, true);
-    let n = pockets.count as usize + 1;
+    let pockets = label_runs(&unknown, true);
     let area = pockets.areas();
-    let mut on_border = vec![false; n];
-    for y in 0..h {
-        let row = &pockets.data[y * w..(y + 1) * w];
-        let border: &[u32] = if y == 0 || y + 1 == h {
-            row
-        } else {
-            &[row[0], row[w - 1]]
-        };
-        border.iter().for_each(|&p| on_border[p as usize] = true);
-    }
-    on_border[0] = false;
-    let claimable: Vec<bool> = (0..n)
+    let on_border = pockets.touches_border();
+    let claimable: Vec<bool> = (0..area.len())
         .map(|p| p != 0 && !on_border[p] && area[p] <= max_px)
         .collect();
     if !claimable.contains(&true) {
         return;
     }
-    let open =
-        |i: usize, labels: &Labels| labels.data[i] == 0 && claimable[pockets.data[i] as usize];
+    let mut in_pocket = vec![false; w * h];
+    for r in pockets.runs.iter().filter(|r| claimable[r.label as usize]) {
+        let i = r.y as usize * w;
+        in_pocket[i + r.x0 as usize..i + r.x1 as usize].fill(true);
+    }
+    let open = |i: usize, labels: &Labels| labels.data[i] == 0 && in_pocket[i];
     // The flood starts from the labelled pixels next to an open one, in
     // raster order: found from the open pixels, which are few.
     let mut starts = Vec::new();
-    for (i, &p) in pockets.data.iter().enumerate() {
-        if claimable[p as usize] && labels.data[i] == 0 {
-            starts.extend(neighbours(i, w, h).filter(|&j| labels.data[j] != 0));
+    for r in pockets.runs.iter().filter(|r| claimable[r.label as usize]) {
+        let row = r.y as usize * w;
+        for i in row + r.x0 as usize..row + r.x1 as usize {
+            if labels.data[i] == 0 {
+                starts.extend(neighbours(i, w, h).filter(|&j| labels.data[j] != 0));
+            }
         }
     }
     starts.sort_unstable();
@@ -75,7 +71,7 @@ pub(crate) fn claim_enclosed_unknown(labels: &mut Labels, grid: &OccupancyGrid, 
 /// not holes in a room, and side by side they would make polygon rings
 /// that touch.
 pub(crate) fn fill_specks(labels: &mut Labels, max_px: usize) {
-    let (w, h) = (labels.width as usize, labels.height as usize);
+    let w = labels.width as usize;
     let unlabelled_data = labels
         .data
         .iter()
@@ -83,22 +79,23 @@ pub(crate) fn fill_specks(labels: &mut Labels, max_px: usize) {
         .collect();
     let unlabelled = Mask::from_raw(labels.width, labels.height, unlabelled_data)
         .unwrap_or_else(|| Mask::new(labels.width, labels.height));
-    let specks = label_components(&unlabelled, false);
-    let n = specks.count as usize + 1;
+    let specks = label_runs(&unlabelled, false);
     let area = specks.areas();
     // The one label around each speck: 0 = none yet, u32::MAX = several or the border.
-    let mut around = vec![0u32; n];
-    for y in 0..h {
-        for x in 0..w {
-            let i = y * w + x;
-            let s = specks.data[i] as usize;
-            if s == 0 || around[s] == u32::MAX {
-                continue;
-            }
-            if x == 0 || y == 0 || x + 1 == w || y + 1 == h {
-                around[s] = u32::MAX;
-                continue;
-            }
+    let mut around = vec![0u32; area.len()];
+    for (s, touches) in around.iter_mut().zip(specks.touches_border()) {
+        if touches {
+            *s = u32::MAX;
+        }
+    }
+    for r in &specks.runs {
+        let s = r.label as usize;
+        if around[s] == u32::MAX {
+            continue;
+        }
+        // Not on the border, so all four neighbours are in the image.
+        let row = r.y as usize * w;
+        for i in row + r.x0 as usize..row + r.x1 as usize {
             for j in [i - 1, i + 1, i - w, i + w] {
                 let l = labels.data[j];
                 if l != 0 && around[s] != l {
@@ -107,10 +104,11 @@ pub(crate) fn fill_specks(labels: &mut Labels, max_px: usize) {
             }
         }
     }
-    for (l, &s) in labels.data.iter_mut().zip(&specks.data) {
-        let s = s as usize;
-        if s != 0 && area[s] <= max_px && around[s] != 0 && around[s] != u32::MAX {
-            *l = around[s];
+    for r in &specks.runs {
+        let s = r.label as usize;
+        if area[s] <= max_px && around[s] != 0 && around[s] != u32::MAX {
+            let row = r.y as usize * w;
+            labels.data[row + r.x0 as usize..row + r.x1 as usize].fill(around[s]);
         }
     }
 }

@@ -2,7 +2,7 @@
 //! with markers from the distance transform so corridors are not cut up.
 
 use crate::imaging::{
-    Labels, Mask, NO_PARENT, label_components, max_distance, threshold_tree, watershed,
+    Labels, Mask, NO_PARENT, label_runs, max_distance, threshold_tree, watershed,
 };
 
 /// Basins of the free space: markers are the components of the places
@@ -157,26 +157,31 @@ pub(crate) fn fill_unreached(basins: &mut Labels, reachable: &[bool], min_px: us
     if rest.iter().all(|&p| p == 0) {
         return;
     }
-    let mut extra = label_components(&rest, true);
+    let extra = label_runs(&rest, true);
     let areas = extra.areas();
-    extra.data.iter_mut().for_each(|e| {
-        if areas[*e as usize] < min_px {
-            *e = 0;
+    // Kept groups numbered by first appearance (runs are in raster order).
+    let mut number = vec![0u32; areas.len()];
+    let mut kept = 0;
+    for r in extra
+        .runs
+        .iter()
+        .filter(|r| areas[r.label as usize] >= min_px)
+    {
+        let n = &mut number[r.label as usize];
+        if *n == 0 {
+            kept += 1;
+            *n = kept;
         }
-    });
-    extra.compact();
-    for (b, &e) in basins.data.iter_mut().zip(&extra.data) {
-        if e != 0 {
-            *b = basins.count + e;
-        }
+        let i = r.y as usize * w as usize;
+        basins.data[i + r.x0 as usize..i + r.x1 as usize].fill(basins.count + *n);
     }
-    basins.count += extra.count;
+    basins.count += kept;
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::imaging::{ascii_mask, distance_to_background};
+    use crate::imaging::{ascii_mask, distance_to_background, label_components};
 
     #[test]
     fn two_rooms_split_at_the_doorway() {

@@ -1,4 +1,5 @@
-//! Connected-component labelling over runs of foreground pixels.
+//! Connected-component labelling over runs of foreground pixels, as a
+//! label image or as the runs themselves.
 //!
 //! Written here rather than taken from imageproc's `connected_components`:
 //! that one unites pixel by pixel and was a fifth of the extraction's time
@@ -95,6 +96,86 @@ impl Labels {
     }
 }
 
+/// One run of a [`RunLabels`]: pixels `x0..x1` of row `y`, of component `label`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Run {
+    /// Row.
+    pub y: u32,
+    /// First column.
+    pub x0: u32,
+    /// One past the last column.
+    pub x1: u32,
+    /// Component, 1..=count.
+    pub label: u32,
+}
+
+/// Connected components as runs of foreground pixels in raster order (what
+/// [`label_runs`] returns): enough for per-component facts (area, box,
+/// border) without painting a whole [`Labels`] image.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct RunLabels {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// The runs, in raster order.
+    pub runs: Vec<Run>,
+    /// Largest label used.
+    pub count: u32,
+}
+
+impl RunLabels {
+    /// Pixel count of every label, indexed by label (index 0 unused, 0).
+    pub fn areas(&self) -> Vec<usize> {
+        let mut a = vec![0usize; self.count as usize + 1];
+        for r in &self.runs {
+            a[r.label as usize] += (r.x1 - r.x0) as usize;
+        }
+        a
+    }
+
+    /// Per label, whether one of its pixels is on the image's edge (index 0 false).
+    pub fn touches_border(&self) -> Vec<bool> {
+        let mut b = vec![false; self.count as usize + 1];
+        for r in &self.runs {
+            if r.y == 0 || r.y + 1 == self.height || r.x0 == 0 || r.x1 == self.width {
+                b[r.label as usize] = true;
+            }
+        }
+        b
+    }
+
+    /// Bounding box `[min_col, min_row, max_col, max_row]` of every label,
+    /// as [`Labels::bounding_boxes`].
+    pub fn bounding_boxes(&self) -> Vec<[u32; 4]> {
+        let mut bbox = vec![[u32::MAX, u32::MAX, 0u32, 0u32]; self.count as usize + 1];
+        for r in &self.runs {
+            let b = &mut bbox[r.label as usize];
+            b[0] = b[0].min(r.x0);
+            b[1] = b[1].min(r.y);
+            b[2] = b[2].max(r.x1 - 1);
+            b[3] = b[3].max(r.y);
+        }
+        bbox
+    }
+
+    /// The label image.
+    pub fn paint(&self) -> Labels {
+        let w = self.width as usize;
+        let mut data = vec![0u32; w * self.height as usize];
+        for r in &self.runs {
+            let i = r.y as usize * w;
+            data[i + r.x0 as usize..i + r.x1 as usize].fill(r.label);
+        }
+        Labels {
+            width: self.width,
+            height: self.height,
+            data,
+            count: self.count,
+        }
+    }
+}
+
 /// Labels the foreground components of `mask`, 8-connected if `eight` else
 /// 4-connected, numbered 1..=n in raster order of their first pixel.
 ///
@@ -104,6 +185,19 @@ impl Labels {
 /// assert_eq!(label_components(&m, true).data, vec![1, 0, 2, 2, 0]);
 /// ```
 pub fn label_components(mask: &Mask, eight: bool) -> Labels {
+    label_runs(mask, eight).paint()
+}
+
+/// [`label_components`] as runs, without painting the label image.
+///
+/// ```
+/// use nrgdb::imaging::{binarize, label_runs};
+/// let m = binarize(5, 2, &[255, 0, 255, 255, 0, 0, 0, 0, 0, 255], 250);
+/// let r = label_runs(&m, true);
+/// assert_eq!((r.count, r.areas()), (2, vec![0, 1, 3]));
+/// assert_eq!((r.runs[2].y, r.runs[2].x0, r.runs[2].label), (1, 4, 2));
+/// ```
+pub fn label_runs(mask: &Mask, eight: bool) -> RunLabels {
     let (width, height) = mask.dimensions();
     let (w, h) = (width as usize, height as usize);
     let src = mask.as_raw();
@@ -143,10 +237,10 @@ pub fn label_components(mask: &Mask, eight: bool) -> Labels {
         }
     }
     row_first.push(runs.len());
-    // Number the roots in order of first appearance and paint the runs.
+    // Number the roots in order of first appearance.
     let mut label_of_root = vec![0u32; runs.len()];
     let mut count = 0u32;
-    let mut data = vec![0u32; w * h];
+    let mut out = Vec::with_capacity(runs.len());
     for y in 0..h {
         for (id, &(x0, x1)) in runs
             .iter()
@@ -159,13 +253,18 @@ pub fn label_components(mask: &Mask, eight: bool) -> Labels {
                 count += 1;
                 label_of_root[root] = count;
             }
-            data[y * w + x0 as usize..y * w + x1 as usize].fill(label_of_root[root]);
+            out.push(Run {
+                y: y as u32,
+                x0,
+                x1,
+                label: label_of_root[root],
+            });
         }
     }
-    Labels {
+    RunLabels {
         width,
         height,
-        data,
+        runs: out,
         count,
     }
 }
@@ -252,6 +351,23 @@ mod tests {
                 };
                 theirs.compact();
                 assert_eq!(ours, theirs, "{w}x{h} eight={eight}");
+                let runs = label_runs(&m, eight);
+                assert_eq!(
+                    runs.areas()[1..],
+                    theirs.areas()[1..],
+                    "{w}x{h} eight={eight}"
+                );
+                let on_edge: Vec<bool> = (0..=theirs.count)
+                    .map(|l| {
+                        l != 0
+                            && theirs.data.iter().enumerate().any(|(i, &v)| {
+                                let (x, y) = (i as u32 % w, i as u32 / w);
+                                v == l && (x == 0 || y == 0 || x + 1 == w || y + 1 == h)
+                            })
+                    })
+                    .collect();
+                assert_eq!(runs.touches_border(), on_edge, "{w}x{h} eight={eight}");
+                assert_eq!(runs.bounding_boxes(), theirs.bounding_boxes());
             }
         }
     }

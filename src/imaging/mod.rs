@@ -18,7 +18,7 @@ mod watershed;
 pub use adjacency::{Adjacency, region_adjacency};
 pub use binarize::binarize;
 pub use distance::{distance_to_background, max_distance, squared_distance_to_foreground};
-pub use label::{Labels, label_components};
+pub use label::{Labels, Run, RunLabels, label_components, label_runs};
 pub use morphology::{close, dilate, erode, open};
 pub use skeleton::skeletonize;
 pub use threshold_tree::{NO_PARENT, ThresholdTree, threshold_tree};
