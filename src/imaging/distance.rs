@@ -97,6 +97,9 @@ pub fn distance_to_background(mask: &Mask) -> Vec<f32> {
 /// assert_eq!(max_distance(&[]), 0.0);
 /// ```
 pub fn max_distance(dist: &[f32]) -> f32 {
+    if dist.len() < 64 {
+        return dist.iter().copied().fold(0.0, f32::max);
+    }
     let mut lanes = [0.0f32; 16];
     let chunks = dist.chunks_exact(lanes.len());
     let rest = chunks.remainder();

@@ -83,11 +83,18 @@ pub fn threshold_tree(depth: &[u8], width: u32, height: u32) -> ThresholdTree {
             let x = p - y * w;
             let (x0, x1) = (x.saturating_sub(1), (x + 1).min(w - 1));
             let (y0, y1) = (y.saturating_sub(1), (y + 1).min(h - 1));
+            let mut root = find(&mut sets, p as u32);
             for yy in y0..=y1 {
                 for q in yy * w + x0..=yy * w + x1 {
                     let dq = depth[q] as usize;
                     if dq > k || (dq == k && q < p) {
-                        union(&mut sets, p as u32, q as u32);
+                        let other = find(&mut sets, q as u32);
+                        if other != root {
+                            // Union by index: the smaller root stays.
+                            let (lo, hi) = (root.min(other), root.max(other));
+                            sets[hi as usize] = lo;
+                            root = lo;
+                        }
                     }
                 }
             }
@@ -135,13 +142,6 @@ fn find(sets: &mut [u32], mut i: u32) -> u32 {
         i = grand;
     }
     i
-}
-
-fn union(sets: &mut [u32], a: u32, b: u32) {
-    let (ra, rb) = (find(sets, a), find(sets, b));
-    if ra != rb {
-        sets[ra.max(rb) as usize] = ra.min(rb);
-    }
 }
 
 #[cfg(test)]

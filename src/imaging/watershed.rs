@@ -36,14 +36,18 @@ pub fn watershed(elevation: &[u16], markers: &Labels, allowed: &[bool]) -> Label
     };
     // Seed: every unlabelled allowed neighbour of a marker pixel.
     let mut queued: Vec<bool> = out.data.iter().map(|&l| l != 0).collect();
-    for i in 0..n {
-        if out.data[i] == 0 {
-            continue;
-        }
-        for j in neighbours(i, w, h) {
-            if !queued[j] && allowed[j] {
-                queued[j] = true;
-                push(&mut queues, elevation[j] as usize, j as u32);
+    for y in 0..h {
+        for x in 0..w {
+            let i = y * w + x;
+            if out.data[i] == 0 {
+                continue;
+            }
+            let (nb, k) = neighbour_array(i, x, y, w, h);
+            for &j in &nb[..k] {
+                if !queued[j] && allowed[j] {
+                    queued[j] = true;
+                    push(&mut queues, elevation[j] as usize, j as u32);
+                }
             }
         }
     }
@@ -54,7 +58,7 @@ pub fn watershed(elevation: &[u16], markers: &Labels, allowed: &[bool]) -> Label
             continue;
         };
         let i = i as usize;
-        let (nb, k) = neighbour_array(i, w, h);
+        let (nb, k) = neighbour_array(i, i % w, i / w, w, h);
         let nb = &nb[..k];
         // Take the label of the first labelled neighbour (all are from the same flood front).
         let label = nb
@@ -74,10 +78,9 @@ pub fn watershed(elevation: &[u16], markers: &Labels, allowed: &[bool]) -> Label
     out
 }
 
-/// The 4-neighbours of pixel `i` inside a `w × h` image, in the order of
-/// [`neighbours`], as an array and its length (one division, not two).
-fn neighbour_array(i: usize, w: usize, h: usize) -> ([usize; 4], usize) {
-    let (x, y) = (i % w, i / w);
+/// The 4-neighbours of pixel `i` inside a `w × h` image (up, left, right,
+/// down), as an array and its length; `(x, y)` are `i`'s column and row.
+fn neighbour_array(i: usize, x: usize, y: usize, w: usize, h: usize) -> ([usize; 4], usize) {
     let mut out = [0; 4];
     let mut k = 0;
     for (ok, j) in [
@@ -92,16 +95,6 @@ fn neighbour_array(i: usize, w: usize, h: usize) -> ([usize; 4], usize) {
         }
     }
     (out, k)
-}
-
-/// The 4-neighbours of pixel `i` inside a `w × h` image.
-fn neighbours(i: usize, w: usize, h: usize) -> impl Iterator<Item = usize> {
-    let (x, y) = (i % w, i / w);
-    let up = (y > 0).then(|| i - w);
-    let down = (y + 1 < h).then(|| i + w);
-    let left = (x > 0).then(|| i - 1);
-    let right = (x + 1 < w).then(|| i + 1);
-    [up, left, right, down].into_iter().flatten()
 }
 
 #[cfg(test)]
