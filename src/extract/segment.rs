@@ -86,13 +86,14 @@ fn split_markers(
     for k in 2..=max_k {
         let mut touched = Vec::new();
         for c in 0..nodes as u32 {
-            if tree.level[c as usize] == k && tree.area[c as usize] as usize >= split_min_px {
-                if let Some(m) = marker_of(c, &is_marker) {
-                    if big_children[m as usize].is_empty() {
-                        touched.push(m);
-                    }
-                    big_children[m as usize].push(c);
+            if tree.level[c as usize] != k || (tree.area[c as usize] as usize) < split_min_px {
+                continue;
+            }
+            if let Some(m) = marker_of(c, &is_marker) {
+                if big_children[m as usize].is_empty() {
+                    touched.push(m);
                 }
+                big_children[m as usize].push(c);
             }
         }
         for m in touched {

@@ -219,7 +219,11 @@ mod tests {
                 seed = seed
                     .wrapping_mul(6364136223846793005)
                     .wrapping_add(1442695040888963407);
-                image::Luma([if (seed >> 33) % keep == 0 { 0 } else { 255 }])
+                image::Luma([if (seed >> 33).is_multiple_of(keep) {
+                    0
+                } else {
+                    255
+                }])
             });
             assert_eq!(distance_to_background(&m), reference(&m), "{w}x{h}");
         }

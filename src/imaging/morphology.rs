@@ -306,7 +306,7 @@ mod tests {
                 seed = seed
                     .wrapping_mul(6364136223846793005)
                     .wrapping_add(1442695040888963407);
-                image::Luma([if (seed >> 33) % (2 + u64::from(round % 9)) == 0 {
+                image::Luma([if (seed >> 33).is_multiple_of(2 + u64::from(round % 9)) {
                     0
                 } else {
                     255

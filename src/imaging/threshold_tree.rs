@@ -85,8 +85,9 @@ pub fn threshold_tree(depth: &[u8], width: u32, height: u32) -> ThresholdTree {
             let (y0, y1) = (y.saturating_sub(1), (y + 1).min(h - 1));
             let mut root = find(&mut sets, p as u32);
             for yy in y0..=y1 {
-                for q in yy * w + x0..=yy * w + x1 {
-                    let dq = depth[q] as usize;
+                let first = yy * w + x0;
+                for (q, &dq) in (first..).zip(&depth[first..=yy * w + x1]) {
+                    let dq = dq as usize;
                     if dq > k || (dq == k && q < p) {
                         let other = find(&mut sets, q as u32);
                         if other != root {
