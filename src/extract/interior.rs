@@ -6,14 +6,24 @@
 use std::collections::VecDeque;
 
 use crate::grid::{Cell, OccupancyGrid};
-use crate::imaging::{Labels, Mask, label_runs};
+use crate::imaging::{Labels, Mask, Run, label_runs};
 
 /// Grows `labels` into every 8-connected component of unknown cells that
-/// does not touch the image border (what touches it is the outside) and
-/// has at most `max_px` pixels (larger ones are unexplored rooms, or walls
-/// drawn grey). Growth is a breadth-first flood from the labelled pixels,
-/// 4-connected, so a pocket between two spaces is shared at the middle.
-pub(crate) fn claim_enclosed_unknown(labels: &mut Labels, grid: &OccupancyGrid, max_px: usize) {
+/// does not touch the image border (what touches it is the outside), has
+/// at most `max_px` pixels (larger ones are unexplored rooms) and is
+/// surrounded by space: at least half of the pixels bordering it are
+/// labelled. The inside of a wall drawn as two lines with grey between is
+/// bordered by the lines, so it stays out. Growth is a breadth-first flood
+/// from the labelled pixels, 4-connected, so a pocket between two spaces is
+/// shared at the middle; labels from `fixed_from` up (doors, whose shape is
+/// already cut) do not grow.
+pub(crate) fn claim_enclosed_unknown(
+    labels: &mut Labels,
+    grid: &OccupancyGrid,
+    max_px: usize,
+    thick_px: usize,
+    fixed_from: u32,
+) {
     let (w, h) = (grid.width as usize, grid.height as usize);
     if max_px == 0 || w == 0 || h == 0 {
         return;
@@ -28,8 +38,44 @@ pub(crate) fn claim_enclosed_unknown(labels: &mut Labels, grid: &OccupancyGrid, 
     let pockets = label_runs(&unknown, true);
     let area = pockets.areas();
     let on_border = pockets.touches_border();
-    let claimable: Vec<bool> = (0..area.len())
+    let n = area.len();
+    // Only small pockets inside the map can be claimed; the rim and the
+    // square test are done for those alone.
+    let candidate: Vec<bool> = (0..n)
         .map(|p| p != 0 && !on_border[p] && area[p] <= max_px)
+        .collect();
+    // Per pocket: (labelled, all) pixel sides bordering it. A 4-neighbour
+    // outside an 8-connected pocket is not unknown.
+    let mut rim = vec![(0usize, 0usize); n];
+    let unknown = unknown.as_raw();
+    for r in pockets.runs.iter().filter(|r| candidate[r.label as usize]) {
+        let rim = &mut rim[r.label as usize];
+        let row = r.y as usize * w;
+        for i in row + r.x0 as usize..row + r.x1 as usize {
+            for j in neighbours(i, w, h).filter(|&j| unknown[j] == 0) {
+                rim.1 += 1;
+                rim.0 += usize::from(labels.data[j] != 0);
+            }
+        }
+    }
+    let needs_square: Vec<bool> = (0..n)
+        .map(|p| candidate[p] && 2 * rim[p].0 < rim[p].1)
+        .collect();
+    let mut runs_of = vec![Vec::new(); n];
+    for r in pockets
+        .runs
+        .iter()
+        .filter(|r| needs_square[r.label as usize])
+    {
+        runs_of[r.label as usize].push(*r);
+    }
+    let bbox = pockets.bounding_boxes();
+    let claimable: Vec<bool> = (0..n)
+        .map(|p| {
+            candidate[p]
+                && (!needs_square[p]
+                    || pocket_holds_square(&runs_of[p], p as u32, bbox[p], thick_px))
+        })
         .collect();
     if !claimable.contains(&true) {
         return;
@@ -40,14 +86,17 @@ pub(crate) fn claim_enclosed_unknown(labels: &mut Labels, grid: &OccupancyGrid, 
         in_pocket[i + r.x0 as usize..i + r.x1 as usize].fill(true);
     }
     let open = |i: usize, labels: &Labels| labels.data[i] == 0 && in_pocket[i];
-    // The flood starts from the labelled pixels next to an open one, in
-    // raster order: found from the open pixels, which are few.
+    // The flood starts from the growing labelled pixels next to an open
+    // one, in raster order: found from the open pixels, which are few.
     let mut starts = Vec::new();
     for r in pockets.runs.iter().filter(|r| claimable[r.label as usize]) {
         let row = r.y as usize * w;
         for i in row + r.x0 as usize..row + r.x1 as usize {
             if labels.data[i] == 0 {
-                starts.extend(neighbours(i, w, h).filter(|&j| labels.data[j] != 0));
+                starts.extend(neighbours(i, w, h).filter(|&j| {
+                    let l = labels.data[j];
+                    l != 0 && l < fixed_from
+                }));
             }
         }
     }
@@ -63,6 +112,49 @@ pub(crate) fn claim_enclosed_unknown(labels: &mut Labels, grid: &OccupancyGrid, 
             }
         }
     }
+}
+
+/// [`holds_square`] for the pocket `id` given by its runs and bounding box
+/// (`[x0, y0, x1, y1]`, inclusive), painted into an image of the box alone.
+fn pocket_holds_square(runs: &[Run], id: u32, bbox: [u32; 4], side: usize) -> bool {
+    let [x0, y0, x1, y1] = bbox;
+    if x0 > x1 || y0 > y1 {
+        return side == 0;
+    }
+    let (bw, bh) = (x1 + 1 - x0, y1 + 1 - y0);
+    let mut local = Labels::new(bw, bh);
+    for r in runs {
+        let i = (r.y - y0) as usize * bw as usize;
+        local.data[i + (r.x0 - x0) as usize..i + (r.x1 - x0) as usize].fill(id);
+    }
+    let whole = [0, 0, bw as usize - 1, bh as usize - 1];
+    holds_square(&local, id, whole, side)
+}
+
+/// Whether the pixels labelled `id` inside `bbox` (`[x0, y0, x1, y1]`,
+/// inclusive) contain a `side` × `side` square, by a summed-area table.
+fn holds_square(labels: &Labels, id: u32, bbox: [usize; 4], side: usize) -> bool {
+    let [x0, y0, x1, y1] = bbox;
+    let (bw, bh) = (x1 + 1 - x0, y1 + 1 - y0);
+    if side == 0 || bw < side || bh < side {
+        return side == 0;
+    }
+    let w = labels.width as usize;
+    // sat[(y + 1) * (bw + 1) + x + 1] = count of `id` pixels in [0..=x] × [0..=y].
+    let mut sat = vec![0u32; (bw + 1) * (bh + 1)];
+    for y in 0..bh {
+        let mut row = 0;
+        for x in 0..bw {
+            row += u32::from(labels.data[(y0 + y) * w + x0 + x] == id);
+            sat[(y + 1) * (bw + 1) + x + 1] = sat[y * (bw + 1) + x + 1] + row;
+        }
+    }
+    let full = (side * side) as u32;
+    let at = |x: usize, y: usize| sat[y * (bw + 1) + x];
+    (side..=bh).any(|y| {
+        (side..=bw)
+            .any(|x| at(x, y) + at(x - side, y - side) - at(x - side, y) - at(x, y - side) == full)
+    })
 }
 
 /// Gives every unlabelled 4-connected speck of at most `max_px` pixels that
@@ -152,13 +244,69 @@ mod tests {
         }
         labels.count = 2;
         let mut small = labels.clone();
-        claim_enclosed_unknown(&mut labels, &g, 4);
+        claim_enclosed_unknown(&mut labels, &g, 4, 2, 3);
         assert_eq!((labels.data[33], labels.data[34]), (1, 1));
         assert_eq!(labels.data[0], 0, "outside stays unlabelled");
         assert_eq!(labels.data.iter().filter(|&&l| l == 1).count(), 9);
         // A pocket above the size limit is left alone.
-        claim_enclosed_unknown(&mut small, &g, 1);
+        claim_enclosed_unknown(&mut small, &g, 1, 2, 3);
         assert_eq!((small.data[33], small.data[34]), (0, 0));
+    }
+
+    #[test]
+    fn wall_insides_are_not_claimed() {
+        // A wall drawn as two lines with grey between, open at a doorway on
+        // the left that belongs to room 1.
+        let g = OccupancyGrid::from_ascii(
+            "##########
+             #........#
+             #..#######
+             #..??????#
+             #..#######
+             #........#
+             ##########",
+            0.1,
+        );
+        let mut labels = Labels::new(g.width, g.height);
+        for (i, c) in g.cells.iter().enumerate() {
+            if *c == Cell::Free {
+                labels.data[i] = if i / 10 < 4 { 1 } else { 2 };
+            }
+        }
+        labels.count = 2;
+        let before = labels.clone();
+        claim_enclosed_unknown(&mut labels, &g, 100, 2, 3);
+        assert_eq!(labels, before, "the wall's inside stays unlabelled");
+    }
+
+    #[test]
+    fn squares_inside_a_label() {
+        // Label 1: an L of width 2 and a 3 x 3 block.
+        let labels = Labels {
+            width: 6,
+            height: 3,
+            data: vec![1, 1, 0, 1, 1, 1, 1, 1, 0, 1, 1, 1, 1, 1, 1, 1, 1, 1],
+            count: 1,
+        };
+        assert!(holds_square(&labels, 1, [0, 0, 5, 2], 3));
+        assert!(!holds_square(&labels, 1, [0, 0, 2, 2], 3));
+        assert!(holds_square(&labels, 1, [0, 0, 2, 2], 2));
+    }
+
+    #[test]
+    fn doors_do_not_grow_into_pockets() {
+        // A pocket with door 2 on three sides and room 1 below: only
+        // the room grows into it.
+        let g = OccupancyGrid::from_ascii(".....\n..?..\n.....", 0.1);
+        let mut labels = Labels::new(g.width, g.height);
+        for (i, c) in g.cells.iter().enumerate() {
+            if *c == Cell::Free {
+                labels.data[i] = if i == 12 { 1 } else { 2 };
+            }
+        }
+        labels.count = 2;
+        claim_enclosed_unknown(&mut labels, &g, 100, 2, 2);
+        assert_eq!(labels.data[7], 1);
     }
 
     #[test]

@@ -21,6 +21,10 @@ use crate::model::{Connection, Nrg, Space, SpaceId, SpaceKind};
 /// Unlabelled specks smaller than this (m²) inside one space join it.
 const MIN_HOLE_M2: f64 = 0.25;
 
+/// Unknown pockets no thicker than this (m) bordered mostly by obstacles
+/// are the insides of walls, not of furniture: they stay out of spaces.
+const WALL_MAX_M: f64 = 0.3;
+
 /// The result of [`extract`].
 #[derive(Debug, Clone)]
 pub struct Extraction {
@@ -152,6 +156,8 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         &mut labels,
         grid,
         (params.unknown_pocket_max_m2 / (res * res)).floor() as usize,
+        (WALL_MAX_M / res).ceil() as usize,
+        n_regions + 1,
     );
     fill_specks(&mut labels, (MIN_HOLE_M2 / (res * res)).floor() as usize);
     clock.lap("doors");
