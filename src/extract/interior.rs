@@ -329,4 +329,150 @@ mod tests {
         assert_eq!(labels.data[18], 0, "speck between 1 and 2 stays");
         assert_eq!(labels.data[0], 0, "border stays");
     }
+
+    /// The former claim: per-pixel passes over a painted pocket image.
+    fn reference_claim(
+        labels: &mut Labels,
+        grid: &OccupancyGrid,
+        max_px: usize,
+        thick_px: usize,
+        fixed_from: u32,
+    ) {
+        use crate::imaging::label_components;
+        let (w, h) = (grid.width as usize, grid.height as usize);
+        let unknown = Mask::from_fn(grid.width, grid.height, |x, y| {
+            image::Luma([
+                if grid.cells[y as usize * w + x as usize] == Cell::Unknown {
+                    255
+                } else {
+                    0
+                },
+            ])
+        });
+        let pockets = label_components(&unknown, true);
+        let n = pockets.count as usize + 1;
+        let (mut area, mut on_border) = (vec![0usize; n], vec![false; n]);
+        let mut bbox = vec![[usize::MAX, usize::MAX, 0, 0]; n];
+        let mut rim = vec![(0usize, 0usize); n];
+        for (i, &p) in pockets.data.iter().enumerate().filter(|(_, p)| **p != 0) {
+            let p = p as usize;
+            area[p] += 1;
+            let (x, y) = (i % w, i / w);
+            on_border[p] |= x == 0 || y == 0 || x + 1 == w || y + 1 == h;
+            let b = &mut bbox[p];
+            *b = [b[0].min(x), b[1].min(y), b[2].max(x), b[3].max(y)];
+            for j in neighbours(i, w, h).filter(|&j| pockets.data[j] as usize != p) {
+                rim[p].1 += 1;
+                rim[p].0 += usize::from(labels.data[j] != 0);
+            }
+        }
+        let claimable: Vec<bool> = (0..n)
+            .map(|p| {
+                p != 0
+                    && !on_border[p]
+                    && area[p] <= max_px
+                    && (2 * rim[p].0 >= rim[p].1
+                        || holds_square(&pockets, p as u32, bbox[p], thick_px))
+            })
+            .collect();
+        let open = |i: usize, l: &Labels| l.data[i] == 0 && claimable[pockets.data[i] as usize];
+        let mut queue: VecDeque<usize> = (0..w * h)
+            .filter(|&i| labels.data[i] != 0 && labels.data[i] < fixed_from)
+            .filter(|&i| neighbours(i, w, h).any(|j| open(j, labels)))
+            .collect();
+        while let Some(i) = queue.pop_front() {
+            let l = labels.data[i];
+            for j in neighbours(i, w, h) {
+                if open(j, labels) {
+                    labels.data[j] = l;
+                    queue.push_back(j);
+                }
+            }
+        }
+    }
+
+    /// The former speck filling: per-pixel passes over a painted speck image.
+    fn reference_specks(labels: &mut Labels, max_px: usize) {
+        use crate::imaging::label_components;
+        let (w, h) = (labels.width as usize, labels.height as usize);
+        let unlabelled = Mask::from_fn(labels.width, labels.height, |x, y| {
+            image::Luma([if labels.data[y as usize * w + x as usize] == 0 {
+                255
+            } else {
+                0
+            }])
+        });
+        let specks = label_components(&unlabelled, false);
+        let n = specks.count as usize + 1;
+        let (mut area, mut around) = (vec![0usize; n], vec![0u32; n]);
+        for (i, &s) in specks.data.iter().enumerate().filter(|(_, s)| **s != 0) {
+            let s = s as usize;
+            area[s] += 1;
+            let (x, y) = (i % w, i / w);
+            if x == 0 || y == 0 || x + 1 == w || y + 1 == h {
+                around[s] = u32::MAX;
+            }
+            for j in neighbours(i, w, h) {
+                let l = labels.data[j];
+                if l != 0 && around[s] != l {
+                    around[s] = if around[s] == 0 { l } else { u32::MAX };
+                }
+            }
+        }
+        for (l, &s) in labels.data.iter_mut().zip(&specks.data) {
+            let s = s as usize;
+            if s != 0 && area[s] <= max_px && around[s] != 0 && around[s] != u32::MAX {
+                *l = around[s];
+            }
+        }
+    }
+
+    #[test]
+    fn agrees_with_the_per_pixel_versions_on_random_maps() {
+        let mut seed = 21u64;
+        let mut rand = move |m: u64| {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 33) % m
+        };
+        let mut claimed = 0;
+        for round in 0..60u32 {
+            let (w, h) = (3 + round % 29, 3 + (round * 7) % 23);
+            // Blobs of unknown and obstacles in free space, labels in blocks.
+            let cells: Vec<Cell> = (0..w * h)
+                .map(|_| match rand(10) {
+                    0..=1 => Cell::Unknown,
+                    2 => Cell::Occupied,
+                    _ => Cell::Free,
+                })
+                .collect();
+            let grid = OccupancyGrid::from_cells(w, h, 0.1, [0.0; 3], cells);
+            let block = 2 + rand(5) as u32;
+            let mut labels = Labels::new(w, h);
+            for (i, c) in grid.cells.iter().enumerate() {
+                let (x, y) = (i as u32 % w, i as u32 / w);
+                if *c == Cell::Free {
+                    labels.data[i] = 1 + (x / block) + 3 * (y / block);
+                }
+            }
+            labels.count = labels.data.iter().copied().max().unwrap_or(0);
+            for (max_px, thick, fixed) in [(4, 2, 3), (30, 1, 100), (1000, 3, 5)] {
+                let (mut ours, mut theirs) = (labels.clone(), labels.clone());
+                claim_enclosed_unknown(&mut ours, &grid, max_px, thick, fixed);
+                reference_claim(&mut theirs, &grid, max_px, thick, fixed);
+                assert_eq!(ours, theirs, "claim {w}x{h} {max_px} {thick} {fixed}");
+                claimed += ours
+                    .data
+                    .iter()
+                    .zip(&labels.data)
+                    .filter(|(a, b)| a != b)
+                    .count();
+                fill_specks(&mut ours, max_px);
+                reference_specks(&mut theirs, max_px);
+                assert_eq!(ours, theirs, "specks {w}x{h} {max_px}");
+            }
+        }
+        assert!(claimed > 100, "only {claimed} pixels claimed");
+    }
 }

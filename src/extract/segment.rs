@@ -307,4 +307,51 @@ mod tests {
         }
         assert!(splits > 50, "only {splits} cases split a marker");
     }
+
+    #[test]
+    fn unreached_groups_agree_with_the_painted_version() {
+        let mut seed = 17u64;
+        let mut rand = move |m: u64| {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 33) % m
+        };
+        for round in 0..40u32 {
+            let (w, h) = (2 + round % 19, 2 + (round * 5) % 17);
+            let reach: Vec<bool> = (0..w * h).map(|_| rand(3) != 0).collect();
+            let mut basins = Labels::new(w, h);
+            for (b, &r) in basins.data.iter_mut().zip(&reach) {
+                if r && rand(2) == 0 {
+                    *b = 1 + rand(3) as u32;
+                }
+            }
+            basins.count = 3;
+            for min_px in [0, 1, 3, 8] {
+                let mut ours = basins.clone();
+                fill_unreached(&mut ours, &reach, min_px);
+                // The former version: paint, drop small groups, compact, add.
+                let rest = Mask::from_fn(w, h, |x, y| {
+                    let i = (y * w + x) as usize;
+                    image::Luma([u8::from(basins.data[i] == 0 && reach[i])])
+                });
+                let mut extra = label_components(&rest, true);
+                let areas = extra.areas();
+                extra.data.iter_mut().for_each(|e| {
+                    if areas[*e as usize] < min_px {
+                        *e = 0;
+                    }
+                });
+                extra.compact();
+                let mut theirs = basins.clone();
+                for (b, &e) in theirs.data.iter_mut().zip(&extra.data) {
+                    if e != 0 {
+                        *b = theirs.count + e;
+                    }
+                }
+                theirs.count += extra.count;
+                assert_eq!(ours, theirs, "{w}x{h} min {min_px}");
+            }
+        }
+    }
 }
