@@ -58,7 +58,12 @@ pub fn watershed(elevation: &[u16], markers: &Labels, allowed: &[bool]) -> Label
             continue;
         };
         let i = i as usize;
-        let (nb, k) = neighbour_array(i, i % w, i / w, w, h);
+        // Indices fit in u32 (the queues hold them so); u32 division is cheaper.
+        let (x, y) = (
+            (i as u32 % w as u32) as usize,
+            (i as u32 / w as u32) as usize,
+        );
+        let (nb, k) = neighbour_array(i, x, y, w, h);
         let nb = &nb[..k];
         // Take the label of the first labelled neighbour (all are from the same flood front).
         let label = nb
