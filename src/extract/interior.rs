@@ -105,7 +105,8 @@ fn holds_square(labels: &Labels, id: u32, bbox: [usize; 4], side: usize) -> bool
     let full = (side * side) as u32;
     let at = |x: usize, y: usize| sat[y * (bw + 1) + x];
     (side..=bh).any(|y| {
-        (side..=bw).any(|x| at(x, y) + at(x - side, y - side) - at(x - side, y) - at(x, y - side) == full)
+        (side..=bw)
+            .any(|x| at(x, y) + at(x - side, y - side) - at(x - side, y) - at(x, y - side) == full)
     })
 }
 

@@ -1,6 +1,7 @@
 //! Raster algorithms on binary masks and label images: binarisation,
 //! morphology, exact Euclidean distance, connected components, marker
-//! watershed, skeletonisation and region adjacency.
+//! watershed, skeletonisation, region adjacency, the dominant edge
+//! orientation and turning a mask.
 //!
 //! Owns pixel-level algorithms only; knows nothing of maps, metres or the
 //! model. Uses `image`/`imageproc`; must not import anything from the crate.
@@ -11,7 +12,9 @@ mod binarize;
 mod distance;
 mod label;
 mod morphology;
+mod orientation;
 mod skeleton;
+mod turn;
 mod watershed;
 
 pub use adjacency::{Adjacency, region_adjacency};
@@ -19,7 +22,9 @@ pub use binarize::binarize;
 pub use distance::{distance_to_background, squared_distance_to_foreground};
 pub use label::{Labels, label_components};
 pub use morphology::{close, dilate, erode, open};
+pub use orientation::dominant_orientation;
 pub use skeleton::skeletonize;
+pub use turn::{Turn, line_pixels, turn_mask};
 pub use watershed::watershed;
 
 /// A binary image: non-zero pixels are the foreground (255 by convention).
