@@ -4,8 +4,10 @@
 
 use super::Mask;
 
-/// Most boundary pixels used (evenly subsampled).
-const MAX_POINTS: usize = 4000;
+/// Most boundary pixels used for the 1° search and for the 0.1° refinement
+/// (evenly subsampled).
+const COARSE_POINTS: usize = 1500;
+const FINE_POINTS: usize = 4000;
 
 /// The angle θ in `[0°, 90°)` (degrees, counter-clockwise in image
 /// coordinates with y down) that makes the boundary of `mask` most
@@ -25,26 +27,41 @@ const MAX_POINTS: usize = 4000;
 /// assert!(dominant_orientation(&m) < 0.5 || dominant_orientation(&m) > 89.5);
 /// ```
 pub fn dominant_orientation(mask: &Mask) -> f64 {
-    let points = boundary_points(mask);
-    if points.is_empty() {
+    let fine_points = subsample(boundary_points(mask), FINE_POINTS);
+    if fine_points.is_empty() {
         return 0.0;
     }
-    let score = |deg: f64| sharpness(&points, deg.to_radians());
-    let coarse = (0..90)
-        .map(f64::from)
-        .max_by(|a, b| score(*a).total_cmp(&score(*b)))
-        .unwrap_or(0.0);
-    let fine = (-10..=10)
-        .map(|k| coarse + f64::from(k) * 0.1)
-        .max_by(|a, b| score(*a).total_cmp(&score(*b)))
-        .unwrap_or(coarse);
-    if score(fine) < 1.05 * score(0.0) {
+    let coarse_points = subsample(fine_points.clone(), COARSE_POINTS);
+    let mut bins = Vec::new();
+    let mut best = |points: &[[f64; 2]], angles: &mut dyn Iterator<Item = f64>| {
+        let mut top = (f64::NEG_INFINITY, 0.0);
+        for deg in angles {
+            let s = sharpness(points, deg.to_radians(), &mut bins);
+            if s > top.0 {
+                top = (s, deg);
+            }
+        }
+        top
+    };
+    let (_, coarse) = best(&coarse_points, &mut (0..90).map(f64::from));
+    let (top, fine) = best(
+        &fine_points,
+        &mut (-10..=10).map(|k| coarse + f64::from(k) * 0.1),
+    );
+    let (at_zero, _) = best(&fine_points, &mut std::iter::once(0.0));
+    if top < 1.05 * at_zero {
         return 0.0;
     }
     fine.rem_euclid(90.0)
 }
 
-/// Foreground pixels with a background 4-neighbour, subsampled evenly.
+/// Every `k`-th point, so at most `max` remain.
+fn subsample(points: Vec<[f64; 2]>, max: usize) -> Vec<[f64; 2]> {
+    let step = points.len().div_ceil(max).max(1);
+    points.into_iter().step_by(step).collect()
+}
+
+/// Foreground pixels with a background 4-neighbour.
 fn boundary_points(mask: &Mask) -> Vec<[f64; 2]> {
     let (w, h) = (mask.width() as usize, mask.height() as usize);
     let d = mask.as_raw();
@@ -57,25 +74,24 @@ fn boundary_points(mask: &Mask) -> Vec<[f64; 2]> {
             }
         }
     }
-    let step = pts.len().div_ceil(MAX_POINTS).max(1);
-    pts.into_iter().step_by(step).collect()
+    pts
 }
 
 /// Sum of squared 1-px bin counts of the points projected on both axes
-/// turned by `a` radians.
-fn sharpness(points: &[[f64; 2]], a: f64) -> f64 {
+/// turned by `a` radians (`bins` is scratch space).
+fn sharpness(points: &[[f64; 2]], a: f64, bins: &mut Vec<u32>) -> f64 {
     let (s, c) = a.sin_cos();
+    // Image coordinates are ≥ 0, so projections lie within ±(x + y).
+    let reach = points.iter().map(|p| p[0] + p[1]).fold(0.0, f64::max);
+    let size = 2 * (reach.ceil() as usize) + 2;
     let mut total = 0.0;
     for axis in [(c, s), (-s, c)] {
-        let proj: Vec<i64> = points
-            .iter()
-            .map(|p| (p[0] * axis.0 + p[1] * axis.1).floor() as i64)
-            .collect();
-        let lo = proj.iter().copied().min().unwrap_or(0);
-        let hi = proj.iter().copied().max().unwrap_or(0);
-        let mut bins = vec![0u32; (hi - lo + 1) as usize];
-        for v in proj {
-            bins[(v - lo) as usize] += 1;
+        bins.clear();
+        bins.resize(size, 0);
+        for p in points {
+            // Shifted by `reach` to be non-negative, so truncation is floor.
+            let v = p[0] * axis.0 + p[1] * axis.1 + reach;
+            bins[v as usize] += 1;
         }
         total += bins
             .iter()
