@@ -3,15 +3,16 @@
 //! and the means, plain and furnished separately.
 //!
 //! ```text
-//! cargo run --release --example eval_maps [-- MAPS_DIR [--method ccl] [--params p.toml] [--color OUT_DIR]]
+//! cargo run --release --example eval_maps [-- MAPS_DIR [--method ccl] [--params p.toml] [--pictures OUT_DIR]]
 //! ```
 //! MAPS_DIR defaults to `$NRGDB_SHARED/maps` (NRGDB_SHARED defaults to `../shared`).
-//! `--color OUT_DIR` also writes each map's segmentation as a colour PNG.
+//! `--pictures OUT_DIR` also writes each map's evaluation picture (`<name>_eval.png`, see
+//! `nrgdb::eval::evaluation_picture`): found and missed doorway lines, right and wrong doors.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use nrgdb::eval::{Evaluation, evaluate, load_ground_truth};
+use nrgdb::eval::{Evaluation, evaluate, evaluation_picture, load_ground_truth};
 use nrgdb::extract::{ExtractParams, Method, extract};
 use nrgdb::grid::{LoadOptions, load_map};
 
@@ -19,14 +20,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
     let mut dir: Option<PathBuf> = None;
     let mut params = ExtractParams::default();
-    let mut color: Option<PathBuf> = None;
+    let mut pictures: Option<PathBuf> = None;
     while let Some(a) = args.next() {
         match a.as_str() {
             "--method" => params.method = args.next().unwrap_or_default().parse::<Method>()?,
             "--params" => {
                 params = toml::from_str(&std::fs::read_to_string(args.next().unwrap_or_default())?)?
             }
-            "--color" => color = args.next().map(PathBuf::from),
+            "--pictures" => pictures = args.next().map(PathBuf::from),
             _ => dir = Some(PathBuf::from(a)),
         }
     }
@@ -77,32 +78,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             format!("{}/{}", e.rooms.segments, e.rooms.gt_rooms),
             ms
         );
-        if let Some(out) = &color {
+        if let Some(out) = &pictures {
             std::fs::create_dir_all(out)?;
-            let w = x.labels.width as usize;
-            let img = image::RgbImage::from_fn(x.labels.width, x.labels.height, |c, r| {
-                let i = r as usize * w + c as usize;
-                let l = x.labels.data[i];
-                if l == 0 {
-                    let g = grid.grey[i] / 2;
-                    image::Rgb([g, g, g])
-                } else if x
-                    .nrg
-                    .spaces()
-                    .get(l as usize - 1)
-                    .is_some_and(|s| s.kind.as_str() == "door")
-                {
-                    image::Rgb([255, 0, 0])
-                } else {
-                    let h = l.wrapping_mul(2_654_435_761);
-                    image::Rgb([
-                        64 + (h >> 24) as u8 / 2,
-                        64 + (h >> 16) as u8 / 2,
-                        64 + (h >> 8) as u8 / 2,
-                    ])
-                }
-            });
-            img.save(out.join(format!("{name}.png")))?;
+            evaluation_picture(&grid, &gt, &x).save(out.join(format!("{name}_eval.png")))?;
         }
         let g = if name.starts_with("rose2") {
             2

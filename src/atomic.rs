@@ -22,10 +22,18 @@ where
         Some(p) if !p.as_os_str().is_empty() => p,
         _ => Path::new("."),
     };
-    let tmp = tempfile::Builder::new()
-        .prefix(".nrgdb-")
-        .suffix(".tmp")
-        .tempfile_in(dir)?;
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(".nrgdb-").suffix(".tmp");
+    // The file gets the permissions `File::create` would give it: those of
+    // the file it replaces, or 0o666 less the umask (a temporary file's
+    // default, 0o600, would hide outputs from other users).
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let mode = std::fs::metadata(path).map_or(0o666, |m| m.permissions().mode() & 0o7777);
+        builder.permissions(std::fs::Permissions::from_mode(mode));
+    }
+    let tmp = builder.tempfile_in(dir)?;
     let mut writer = BufWriter::new(tmp);
     fill(&mut writer)?;
     let tmp = writer.into_inner().map_err(|e| e.into_error())?;
@@ -42,6 +50,23 @@ pub fn write(path: &Path, bytes: &[u8]) -> io::Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[cfg(unix)]
+    #[test]
+    fn outputs_get_the_permissions_a_plain_create_gives() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = tempfile::tempdir().unwrap();
+        let mode = |p: &Path| std::fs::metadata(p).unwrap().permissions().mode() & 0o777;
+        let plain = dir.path().join("plain.txt");
+        std::fs::File::create(&plain).unwrap();
+        let ours = dir.path().join("ours.txt");
+        write(&ours, b"x").unwrap();
+        assert_eq!(mode(&ours), mode(&plain));
+        // Replacing a file keeps its permissions.
+        std::fs::set_permissions(&ours, std::fs::Permissions::from_mode(0o640)).unwrap();
+        write(&ours, b"y").unwrap();
+        assert_eq!(mode(&ours), 0o640);
+    }
 
     #[test]
     fn failed_write_leaves_old_file_and_no_temp() {

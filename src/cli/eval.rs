@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr};
-use nrgdb::eval::{Evaluation, evaluate, load_ground_truth};
+use nrgdb::eval::{Evaluation, evaluate, evaluation_picture, load_ground_truth};
 use nrgdb::extract::extract;
 
 use super::extract::MapArgs;
@@ -28,6 +28,12 @@ pub struct Args {
     /// Print JSON instead of a table.
     #[arg(long)]
     pub json: bool,
+    /// Also write a picture of where extraction and ground truth disagree (one map only):
+    /// spaces in pale colours and door spaces orange over the map; GT doorway lines green
+    /// where a door was found, magenta where none was; each detected door ringed, blue when
+    /// it matched a line, red when it matched none.
+    #[arg(long, value_name = "FILE.png")]
+    pub picture: Option<PathBuf>,
 }
 
 /// Runs `nrgdb eval`.
@@ -45,7 +51,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
                     )
                 })?,
             };
-            let e = evaluate_one(&args.map, map, &gt)?;
+            let e = evaluate_one(&args.map, map, &gt, args.picture.as_deref())?;
             print_one(&e, args.json, out).into_diagnostic()?;
             Ok(ExitCode::SUCCESS)
         }
@@ -66,12 +72,26 @@ fn sibling_gt(map: &Path) -> Option<PathBuf> {
     path.is_file().then_some(path)
 }
 
-fn evaluate_one(args: &MapArgs, map: &Path, gt: &Path) -> miette::Result<Evaluation> {
+fn evaluate_one(
+    args: &MapArgs,
+    map: &Path,
+    gt: &Path,
+    picture: Option<&Path>,
+) -> miette::Result<Evaluation> {
     let (grid, params) = args.load(map)?;
     let gt = load_ground_truth(gt, &grid).into_diagnostic()?;
     let x = extract(&grid, &params)
         .into_diagnostic()
         .wrap_err_with(|| format!("{}: extraction failed", map.display()))?;
+    if let Some(path) = picture {
+        let img = evaluation_picture(&grid, &gt, &x);
+        let mut png = Vec::new();
+        img.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
+            .into_diagnostic()?;
+        nrgdb::atomic::write(path, &png)
+            .into_diagnostic()
+            .wrap_err_with(|| format!("cannot write {}", path.display()))?;
+    }
     Ok(evaluate(&gt, &x, grid.resolution))
 }
 
@@ -80,6 +100,9 @@ fn run_many(args: &Args, inputs: &[PathBuf], out: &mut dyn Write) -> miette::Res
         miette::bail!(
             "--gt names one ground truth: with several maps each uses <stem>_gt.png beside it"
         );
+    }
+    if args.picture.is_some() {
+        miette::bail!("--picture draws one map: give a single map");
     }
     let bar = progress::bar(inputs.len() as u64, "eval");
     let mut rows: Vec<(String, Evaluation)> = Vec::new();
@@ -92,7 +115,7 @@ fn run_many(args: &Args, inputs: &[PathBuf], out: &mut dyn Write) -> miette::Res
         bar.set_message(stem.clone());
         match sibling_gt(map) {
             None => notes.push(format!("{stem}: skipped, no {} beside it", gt_name(map))),
-            Some(gt) => match evaluate_one(&args.map, map, &gt) {
+            Some(gt) => match evaluate_one(&args.map, map, &gt, None) {
                 Ok(e) => rows.push((stem, e)),
                 Err(e) => {
                     failed += 1;

@@ -113,6 +113,22 @@ pub fn room_scores(gt: &Labels, segments: &Labels) -> RoomScores {
 /// Door recall/precision: a detected door (its pixel centroid) matches a GT
 /// doorway line when it lies within `radius_px` of one of the line's pixels.
 pub fn door_scores(gt: &GroundTruth, doors: &[[f64; 2]], radius_px: f64) -> Detection {
+    let m = door_matches(gt, doors, radius_px);
+    let hits = |v: &[bool]| v.iter().filter(|&&b| b).count();
+    detection(hits(&m.lines), gt.doors.len(), hits(&m.doors), doors.len())
+}
+
+/// Which GT doorway lines and which detected doors matched (see [`door_scores`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct DoorMatches {
+    /// Per GT doorway line: a detected door lies within the radius.
+    pub lines: Vec<bool>,
+    /// Per detected door: it lies within the radius of a GT line.
+    pub doors: Vec<bool>,
+}
+
+/// The matches behind [`door_scores`], item by item.
+pub fn door_matches(gt: &GroundTruth, doors: &[[f64; 2]], radius_px: f64) -> DoorMatches {
     let (w, h) = (gt.rooms.width, gt.rooms.height);
     let mut mask = Mask::new(w, h);
     for line in &gt.doors {
@@ -127,14 +143,14 @@ pub fn door_scores(gt: &GroundTruth, doors: &[[f64; 2]], radius_px: f64) -> Dete
         (x >= 0.0 && y >= 0.0 && x < f64::from(w) && y < f64::from(h))
             .then(|| y as usize * w as usize + x as usize)
     };
-    let matched_det = doors
+    let doors_hit = doors
         .iter()
-        .filter(|c| at(c).is_some_and(|i| sq[i] <= r2))
-        .count();
-    let matched_gt = gt
+        .map(|c| at(c).is_some_and(|i| sq[i] <= r2))
+        .collect();
+    let lines_hit = gt
         .doors
         .iter()
-        .filter(|line| {
+        .map(|line| {
             doors.iter().any(|c| {
                 line.pixels.iter().any(|&p| {
                     let (px, py) = (f64::from(p % w), f64::from(p / w));
@@ -142,8 +158,11 @@ pub fn door_scores(gt: &GroundTruth, doors: &[[f64; 2]], radius_px: f64) -> Dete
                 })
             })
         })
-        .count();
-    detection(matched_gt, gt.doors.len(), matched_det, doors.len())
+        .collect();
+    DoorMatches {
+        lines: lines_hit,
+        doors: doors_hit,
+    }
 }
 
 fn detection(matched_gt: usize, gt: usize, matched_det: usize, detected: usize) -> Detection {
@@ -210,6 +229,21 @@ pub fn connection_scores(gt: &GroundTruth, x: &Extraction) -> Detection {
     detection(hit, gt_pairs.len(), hit, det_pairs.len())
 }
 
+/// Pixel centroids (`[col, row]`) of the extraction's door spaces.
+pub fn door_centroids(x: &Extraction) -> Vec<[f64; 2]> {
+    x.nrg
+        .spaces()
+        .iter()
+        .filter(|s| s.kind == SpaceKind::Door)
+        .filter_map(|s| x.pixel_centroids.get(&s.id).copied())
+        .collect()
+}
+
+/// The door matching radius, 0.5 m, in pixels of a map of `resolution` m/px.
+pub fn door_radius_px(resolution: f64) -> f64 {
+    0.5 / resolution
+}
+
 /// Every score for one extraction. `resolution` converts the 0.5 m door radius to pixels.
 pub fn evaluate(gt: &GroundTruth, x: &Extraction, resolution: f64) -> Evaluation {
     let mut segments = x.labels.clone();
@@ -225,16 +259,9 @@ pub fn evaluate(gt: &GroundTruth, x: &Extraction, resolution: f64) -> Evaluation
             *l = 0;
         }
     }
-    let door_centroids: Vec<[f64; 2]> = x
-        .nrg
-        .spaces()
-        .iter()
-        .filter(|s| s.kind == SpaceKind::Door)
-        .filter_map(|s| x.pixel_centroids.get(&s.id).copied())
-        .collect();
     Evaluation {
         rooms: room_scores(&gt.rooms, &segments),
-        doors: door_scores(gt, &door_centroids, 0.5 / resolution),
+        doors: door_scores(gt, &door_centroids(x), door_radius_px(resolution)),
         connections: connection_scores(gt, x),
     }
 }

@@ -2,18 +2,22 @@
 //!
 //! Owns the metrics: room-segmentation recall/precision exactly as IPA's
 //! `evaluation_segmentation.cpp` (BENCHMARK.md §1.1), door recall/precision
-//! against the GT's doorway lines, and connection recall/precision. Uses
+//! against the GT's doorway lines, connection recall/precision, and a
+//! picture of where extraction and ground truth disagree. Uses
 //! grid, imaging, extract, sim and model; must not use store, server or the
 //! terminal.
 
 mod error;
 mod ground_truth;
 mod metrics;
+mod picture;
 mod simulated;
 
 pub use error::EvalError;
 pub use ground_truth::{DoorLine, GroundTruth, load_ground_truth};
 pub use metrics::{
-    Detection, Evaluation, RoomScores, connection_scores, door_scores, evaluate, room_scores,
+    Detection, DoorMatches, Evaluation, RoomScores, connection_scores, door_centroids,
+    door_matches, door_radius_px, door_scores, evaluate, room_scores,
 };
+pub use picture::{DOOR_RIGHT, DOOR_WRONG, LINE_FOUND, LINE_MISSED, evaluation_picture};
 pub use simulated::{SimulatedScore, evaluate_simulated};

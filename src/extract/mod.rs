@@ -26,6 +26,7 @@ mod polygon;
 mod resample;
 mod segment;
 mod simplify;
+mod wall_gaps;
 
 pub use error::ExtractError;
 pub use params::{ExtractParams, Method};

@@ -75,7 +75,8 @@ pub struct ExtractParams {
     /// wider than `2 core_radius_m`). Default 1.0 m².
     pub split_min_core_m2: f64,
     /// A boundary between two spaces whose passage is at most this wide is a
-    /// door; wider boundaries are open connections. Default 1.6 m.
+    /// door; wider boundaries are open connections. Default 1.8 m (double
+    /// doors; IPA maps have 1.7 m openings between rooms and corridors).
     pub door_width_max_m: f64,
     /// Borders narrower than this, or shorter (fewer pixels along the
     /// border, both sides counted), are corner contacts, not doorways: no
@@ -91,6 +92,15 @@ pub struct ExtractParams {
     /// one doorway (a speck of noise does not make two doors); farther apart
     /// they are separate doors. Default 0.5 m.
     pub door_join_m: f64,
+    /// A gap between door_width_min_m and door_width_max_m in a straight
+    /// wall (rows or columns of the map) with at least this much wall on
+    /// either side, open to free space on both faces of the wall, is a
+    /// doorway, even where it is as wide as the corridor it opens onto.
+    /// 0 turns this off. Default 0.3 m.
+    pub wall_jamb_m: f64,
+    /// Walls thicker than this hold no doorway gaps (a longer narrow
+    /// passage is a corridor). Default 1.2 m.
+    pub wall_thickness_max_m: f64,
     /// Thickness of a door space across the doorway. Default 0.3 m.
     pub door_depth_m: f64,
     /// Spaces smaller than this merge into their longest-bordering neighbour
@@ -119,10 +129,12 @@ impl Default for ExtractParams {
             min_free_area_m2: 1.0,
             core_radius_m: 0.5,
             split_min_core_m2: 1.0,
-            door_width_max_m: 1.6,
+            door_width_max_m: 1.8,
             door_width_min_m: 0.4,
             door_constriction: 0.8,
             door_join_m: 0.5,
+            wall_jamb_m: 0.3,
+            wall_thickness_max_m: 1.2,
             door_depth_m: 0.3,
             min_room_area_m2: 1.0,
             corridor_min_elongation: 2.5,
@@ -148,6 +160,8 @@ impl ExtractParams {
             ("door_width_min_m", self.door_width_min_m),
             ("door_constriction", self.door_constriction),
             ("door_join_m", self.door_join_m),
+            ("wall_jamb_m", self.wall_jamb_m),
+            ("wall_thickness_max_m", self.wall_thickness_max_m),
             ("door_depth_m", self.door_depth_m),
             ("min_room_area_m2", self.min_room_area_m2),
             ("corridor_min_elongation", self.corridor_min_elongation),

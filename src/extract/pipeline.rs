@@ -1,7 +1,7 @@
 //! The extraction pipeline: clean → distance → segment → merge → doors →
 //! graph → polygons → [`Nrg`].
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 use std::time::{Duration, Instant};
 
 use super::ccl::segment_ccl;
@@ -13,6 +13,7 @@ use super::merge::merge_small;
 use super::polygon::{bounding_boxes, outline};
 use super::resample::{coarsen, pixel_centroids, refine};
 use super::segment::segment_basins;
+use super::wall_gaps::{GapLimits, close_gaps, reopen_gaps, wall_gaps};
 use super::{ExtractError, ExtractParams, Method};
 use crate::grid::OccupancyGrid;
 use crate::imaging::{Labels, distance_to_background, max_distance};
@@ -96,7 +97,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         last: Instant::now(),
         timings: Vec::new(),
     };
-    let free = clean_free(
+    let mut free = clean_free(
         grid,
         params.noise_radius_m,
         params.min_free_area_m2,
@@ -108,6 +109,21 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
             min_area_m2: params.min_free_area_m2,
         });
     }
+    let gaps = match params.method {
+        Method::Watershed if params.wall_jamb_m > 0.0 => {
+            let px = |m: f64| (m / res).round() as usize;
+            wall_gaps(
+                &free.clean,
+                GapLimits {
+                    width: (px(params.door_width_min_m), px(params.door_width_max_m)),
+                    jamb: px(params.wall_jamb_m).max(1),
+                    depth: px(params.wall_thickness_max_m).max(1),
+                },
+            )
+        }
+        _ => Vec::new(),
+    };
+    close_gaps(&mut free.clean, &mut free.reachable, &gaps);
     clock.lap("clean");
     let dist = distance_to_background(&free.clean);
     clock.lap("distance");
@@ -134,6 +150,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         &mut regions,
         (params.min_room_area_m2 / (res * res)).ceil() as usize,
     );
+    reopen_gaps(&mut regions, &gaps);
     clock.lap("merge");
     let all = borders(&regions, &dist, (params.door_join_m / res).round() as i64);
     let door_px = params.door_width_max_m / res;
@@ -143,11 +160,28 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         let (a, c) = (b.pair.0 as usize, b.pair.1 as usize);
         params.door_constriction * widest[a].min(widest[c])
     };
+    let gap_at: HashMap<u32, usize> = gaps
+        .iter()
+        .enumerate()
+        .flat_map(|(k, g)| g.line.iter().map(move |&p| (p, k)))
+        .collect();
+    let crosses_gap = |b: &Border| {
+        let mut hits: HashMap<usize, usize> = HashMap::new();
+        for k in b.pixels.iter().filter_map(|p| gap_at.get(p)) {
+            *hits.entry(*k).or_default() += 1;
+        }
+        hits.iter().any(|(&k, &n)| 2 * n >= gaps[k].line.len())
+    };
     let doors: Vec<&Border> = all
         .iter()
-        .filter(|b| b.width_px >= door_min_px && b.width_px <= door_px)
-        .filter(|b| b.pixels.len() as f64 >= door_min_px)
-        .filter(|b| b.width_px <= constriction(b))
+        .filter(|b| {
+            // A doorway in a wall is a door whatever the widths around it.
+            crosses_gap(b)
+                || (b.width_px >= door_min_px
+                    && b.width_px <= door_px
+                    && b.pixels.len() as f64 >= door_min_px
+                    && b.width_px <= constriction(b))
+        })
         .collect();
     let door_pairs: Vec<(u32, u32)> = doors.iter().map(|b| b.pair).collect();
     let n_regions = regions.count;

@@ -1,6 +1,7 @@
 //! Raster algorithms on binary masks and label images: binarisation,
 //! morphology, exact Euclidean distance, connected components, marker
-//! watershed, skeletonisation, level-set component trees and region adjacency.
+//! watershed, skeletonisation, level-set component trees, region
+//! adjacency, the dominant edge orientation and turning a mask.
 //!
 //! Owns pixel-level algorithms only; knows nothing of maps, metres or the
 //! model. Uses `image`/`imageproc`; must not import anything from the crate.
@@ -11,8 +12,10 @@ mod binarize;
 mod distance;
 mod label;
 mod morphology;
+mod orientation;
 mod skeleton;
 mod threshold_tree;
+mod turn;
 mod watershed;
 
 pub use adjacency::{Adjacency, region_adjacency};
@@ -20,8 +23,10 @@ pub use binarize::binarize;
 pub use distance::{distance_to_background, max_distance, squared_distance_to_foreground};
 pub use label::{Labels, Run, RunLabels, label_components, label_runs};
 pub use morphology::{close, dilate, erode, open};
+pub use orientation::dominant_orientation;
 pub use skeleton::skeletonize;
 pub use threshold_tree::{NO_PARENT, ThresholdTree, threshold_tree};
+pub use turn::{Turn, line_pixels, turn_mask};
 pub use watershed::watershed;
 
 /// A binary image: non-zero pixels are the foreground (255 by convention).

@@ -230,4 +230,26 @@ fn eval_over_a_folder_scores_maps_with_a_ground_truth_and_skips_the_rest() {
         ],
     );
     assert_eq!(out.status.code(), Some(2));
+    // --picture draws one map: its size, and the found doorway line in green.
+    let out = nrgdb(
+        dir.path(),
+        &["eval", "maps/a.yaml", "--picture", "a_eval.png"],
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let pic = image::open(dir.path().join("a_eval.png"))
+        .unwrap()
+        .to_rgb8();
+    assert_eq!(pic.dimensions(), (40, 20));
+    let found = pic
+        .pixels()
+        .filter(|p| p.0 == nrgdb::eval::LINE_FOUND)
+        .count();
+    assert!(found > 0, "the doorway line is drawn as found");
+    let out = nrgdb(dir.path(), &["eval", "maps", "--picture", "x.png"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(!dir.path().join("x.png").exists());
 }

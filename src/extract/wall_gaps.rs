@@ -1,0 +1,331 @@
+//! Doorway gaps in straight walls: a short run of free pixels along a row
+//! (or column) with a wall run on either side, through a wall no thicker
+//! than a limit, with free space on both faces of the wall. Such a gap is a
+//! doorway even when it is as wide as the corridor it opens onto, where the
+//! distance transform shows no constriction.
+
+use crate::imaging::{Labels, Mask, dominant_orientation, line_pixels, turn_mask};
+
+/// One doorway gap: the line across it (pixels, row-major indices) at the
+/// middle of the wall's thickness, and its width in pixels.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct WallGap {
+    /// The pixels of the line across the doorway.
+    pub line: Vec<u32>,
+    /// The doorway's width (pixels along the line).
+    pub width_px: usize,
+}
+
+/// Limits of [`wall_gaps`], in pixels.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct GapLimits {
+    /// Narrowest and widest doorway.
+    pub width: (usize, usize),
+    /// Wall run needed on either side of the gap (the door jambs).
+    pub jamb: usize,
+    /// Thickest wall a doorway may pass through.
+    pub depth: usize,
+}
+
+/// Finds doorway gaps in the walls of `free` (non-zero = free; everything
+/// else is wall for this purpose) that run along the map's two dominant
+/// directions: the map is turned so they lie along rows and columns, gaps
+/// are found there and their lines drawn back into the map (4-connected,
+/// reaching a pixel and a half into the jambs, free pixels only).
+pub(crate) fn wall_gaps(free: &Mask, limits: GapLimits) -> Vec<WallGap> {
+    let deg = dominant_orientation(free);
+    if deg.min(90.0 - deg) < 0.5 {
+        return axis_gaps(free, limits);
+    }
+    let (turned, turn) = turn_mask(free, deg);
+    let tw = turned.width() as usize;
+    let centre = |i: u32| {
+        [
+            (i as usize % tw) as f64 + 0.5,
+            (i as usize / tw) as f64 + 0.5,
+        ]
+    };
+    axis_gaps(&turned, limits)
+        .into_iter()
+        .filter_map(|g| {
+            let (a, b) = (centre(*g.line.first()?), centre(*g.line.last()?));
+            let len = ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2))
+                .sqrt()
+                .max(1e-9);
+            let u = [(b[0] - a[0]) / len * 1.5, (b[1] - a[1]) / len * 1.5];
+            let (a, b) = ([a[0] - u[0], a[1] - u[1]], [b[0] + u[0], b[1] + u[1]]);
+            let line: Vec<u32> =
+                line_pixels(turn.back(a), turn.back(b), free.width(), free.height())
+                    .into_iter()
+                    .filter(|&p| free.as_raw()[p as usize] != 0)
+                    .collect();
+            (!line.is_empty()).then_some(WallGap {
+                line,
+                width_px: g.width_px,
+            })
+        })
+        .collect()
+}
+
+/// [`wall_gaps`] for walls along rows and columns.
+fn axis_gaps(free: &Mask, limits: GapLimits) -> Vec<WallGap> {
+    let (w, h) = (free.width() as usize, free.height() as usize);
+    let data = free.as_raw();
+    let mut out = scan(
+        h,
+        w,
+        |line, k| data[line * w + k] != 0,
+        limits,
+        |line, k| (line * w + k) as u32,
+    );
+    out.extend(scan(
+        w,
+        h,
+        |line, k| data[k * w + line] != 0,
+        limits,
+        |line, k| (k * w + line) as u32,
+    ));
+    out
+}
+
+/// Closes each gap's line in the free mask and the reachable pixels, so
+/// the segmentation treats it as wall.
+pub(crate) fn close_gaps(clean: &mut Mask, reachable: &mut [bool], gaps: &[WallGap]) {
+    for &p in gaps.iter().flat_map(|g| &g.line) {
+        clean.as_mut()[p as usize] = 0;
+        reachable[p as usize] = false;
+    }
+}
+
+/// Gives each closed line pixel the smallest label among its 4-neighbours
+/// off the line, so the two sides of a doorway meet along its line.
+pub(crate) fn reopen_gaps(labels: &mut Labels, gaps: &[WallGap]) {
+    let (w, h) = (labels.width as usize, labels.height as usize);
+    for gap in gaps {
+        for &p in &gap.line {
+            let i = p as usize;
+            let (x, y) = (i % w, i / w);
+            let around = [
+                (x > 0).then(|| i - 1),
+                (x + 1 < w).then(|| i + 1),
+                (y > 0).then(|| i - w),
+                (y + 1 < h).then(|| i + w),
+            ];
+            let best = around
+                .into_iter()
+                .flatten()
+                .filter(|j| !gap.line.contains(&(*j as u32)))
+                .map(|j| labels.data[j])
+                .filter(|&l| l != 0)
+                .min();
+            if let Some(l) = best {
+                labels.data[i] = l;
+            }
+        }
+    }
+}
+
+/// A gap in one scan line: `[start, end)` along the line.
+type Run = (usize, usize);
+
+/// Scans `lines` lines of `len` pixels (`is_free(line, k)`), finds gaps in
+/// each, stacks gaps of consecutive lines that overlap, and keeps stacks
+/// thin enough with free space beyond both ends. `index(line, k)` maps back
+/// to the image.
+fn scan(
+    lines: usize,
+    len: usize,
+    is_free: impl Fn(usize, usize) -> bool,
+    limits: GapLimits,
+    index: impl Fn(usize, usize) -> u32,
+) -> Vec<WallGap> {
+    let gaps: Vec<Vec<Run>> = (0..lines)
+        .map(|l| gaps_in_line(len, |k| is_free(l, k), limits))
+        .collect();
+    let mut used: Vec<Vec<bool>> = gaps.iter().map(|g| vec![false; g.len()]).collect();
+    let mut out = Vec::new();
+    for first in 0..lines {
+        for gi in 0..gaps[first].len() {
+            if used[first][gi] {
+                continue;
+            }
+            // Follow the stack down through lines whose gap matches this one.
+            let (mut lo, mut hi) = gaps[first][gi];
+            let mut last = first;
+            used[first][gi] = true;
+            while last + 1 < lines {
+                let next = gaps[last + 1]
+                    .iter()
+                    .position(|&(s, e)| 2 * (e.min(hi).saturating_sub(s.max(lo))) >= hi - lo);
+                let Some(ni) = next else { break };
+                used[last + 1][ni] = true;
+                (lo, hi) = (lo.max(gaps[last + 1][ni].0), hi.min(gaps[last + 1][ni].1));
+                last += 1;
+            }
+            let depth = last + 1 - first;
+            // Beyond both faces of the wall (within two lines, for ragged
+            // walls) the free run through the gap's middle must be wider than
+            // the gap by a jamb on either side.
+            let open_line = |l: usize| {
+                let mid = (lo + hi) / 2;
+                if l >= lines || !is_free(l, mid) {
+                    return false;
+                }
+                let left = (0..mid).rev().take_while(|&k| is_free(l, k)).count();
+                let right = (mid..len).take_while(|&k| is_free(l, k)).count();
+                left + right >= (hi - lo) + 2 * limits.jamb
+            };
+            let before = (1..=2).any(|d| first.checked_sub(d).is_some_and(open_line));
+            let after = (1..=2).any(|d| open_line(last + d));
+            let wide_enough = hi - lo >= limits.width.0;
+            if depth <= limits.depth && wide_enough && before && after {
+                let mid = first + depth / 2;
+                out.push(WallGap {
+                    line: (lo..hi).map(|k| index(mid, k)).collect(),
+                    width_px: hi - lo,
+                });
+            }
+        }
+    }
+    out
+}
+
+/// Maximal free runs of one line whose width is within the limits and
+/// that have at least `jamb` wall pixels on either side.
+fn gaps_in_line(len: usize, is_free: impl Fn(usize) -> bool, limits: GapLimits) -> Vec<Run> {
+    let mut out = Vec::new();
+    let mut k = 0;
+    // End of the last wall run and its length.
+    let mut wall_run = 0usize;
+    while k < len {
+        if !is_free(k) {
+            wall_run += 1;
+            k += 1;
+            continue;
+        }
+        let start = k;
+        while k < len && is_free(k) {
+            k += 1;
+        }
+        let end = k;
+        let width = end - start;
+        let after = (end..len.min(end + limits.jamb))
+            .take_while(|&j| !is_free(j))
+            .count();
+        if wall_run >= limits.jamb
+            && after >= limits.jamb
+            && (limits.width.0..=limits.width.1).contains(&width)
+        {
+            out.push((start, end));
+        }
+        wall_run = 0;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::imaging::ascii_mask;
+
+    /// `.` free, `#` wall.
+    fn free_mask(text: &str) -> Mask {
+        let mut m = ascii_mask(text);
+        m.iter_mut().for_each(|p| *p = 255 - *p);
+        m
+    }
+
+    const LIMITS: GapLimits = GapLimits {
+        width: (2, 4),
+        jamb: 2,
+        depth: 2,
+    };
+
+    #[test]
+    fn a_doorway_in_a_horizontal_wall() {
+        let m = free_mask(
+            "..........
+             ..........
+             ###...####
+             ###...####
+             ..........
+             ..........",
+        );
+        let g = axis_gaps(&m, LIMITS);
+        assert_eq!(g.len(), 1);
+        assert_eq!(g[0].width_px, 3);
+        // The middle of the two wall rows is the second (row 3).
+        assert_eq!(g[0].line, vec![33, 34, 35]);
+    }
+
+    #[test]
+    fn a_doorway_in_a_vertical_wall() {
+        let m = free_mask(
+            "...#...
+             ...#...
+             .......
+             .......
+             ...#...
+             ...#...",
+        );
+        let g = axis_gaps(&m, LIMITS);
+        assert_eq!(g.len(), 1);
+        assert_eq!(g[0].line, vec![17, 24]);
+    }
+
+    #[test]
+    fn a_doorway_in_a_turned_wall() {
+        // Two rooms 24 px deep, a wall 3 px thick with a 10 px doorway
+        // between them, all turned by 30°.
+        let (s, c) = 30f64.to_radians().sin_cos();
+        let m = Mask::from_fn(120, 120, |x, y| {
+            let (dx, dy) = (f64::from(x) - 60.0, f64::from(y) - 60.0);
+            let (u, v) = (dx * c + dy * s, -dx * s + dy * c);
+            let inside = u.abs() < 40.0 && v.abs() < 25.0;
+            let wall = v.abs() < 1.5 && u.abs() >= 5.0;
+            image::Luma([if inside && !wall { 255 } else { 0 }])
+        });
+        let limits = GapLimits {
+            width: (6, 14),
+            jamb: 4,
+            depth: 4,
+        };
+        let g = wall_gaps(&m, limits);
+        assert_eq!(g.len(), 1, "{g:?}");
+        assert!((9..=11).contains(&g[0].width_px));
+        // The line lies across the doorway: near the centre, 10-14 px long.
+        for &p in &g[0].line {
+            let (x, y) = (f64::from(p % 120) - 59.5, f64::from(p / 120) - 59.5);
+            assert!((x * x + y * y).sqrt() <= 8.0, "pixel ({x}, {y})");
+        }
+        assert!((8..=16).contains(&g[0].line.len()));
+    }
+
+    #[test]
+    fn corridors_niches_and_wide_openings_are_no_doorways() {
+        // A vertical corridor 3 wide: every row is a gap, but the stack is
+        // too deep.
+        let corridor = free_mask(
+            "##...##
+             ##...##
+             ##...##
+             ##...##
+             ##...##",
+        );
+        assert!(axis_gaps(&corridor, LIMITS).is_empty());
+        // A niche: free on one face of the wall only.
+        let niche = free_mask(
+            "........
+             ##...###
+             ########",
+        );
+        assert!(axis_gaps(&niche, LIMITS).is_empty());
+        // An opening wider than the widest doorway.
+        let wide = free_mask(
+            "..........
+             ##......##
+             ..........",
+        );
+        assert!(axis_gaps(&wide, LIMITS).is_empty());
+    }
+}
