@@ -1,7 +1,7 @@
 //! The extraction pipeline: clean → distance → segment → merge → doors →
 //! graph → polygons → [`Nrg`].
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::{BTreeMap, HashMap, HashSet};
 use std::time::{Duration, Instant};
 
 use super::ccl::segment_ccl;
@@ -172,6 +172,14 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         }
         hits.iter().any(|(&k, &n)| 2 * n >= gaps[k].line.len())
     };
+    // Pairs of regions that also meet wider than any door: openly joined,
+    // so a narrow stretch between them elsewhere (a nook between furniture
+    // and a wall) is no doorway.
+    let open_pairs: HashSet<(u32, u32)> = all
+        .iter()
+        .filter(|b| b.width_px > door_px)
+        .map(|b| b.pair)
+        .collect();
     let doors: Vec<&Border> = all
         .iter()
         .filter(|b| {
@@ -180,7 +188,8 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
                 || (b.width_px >= door_min_px
                     && b.width_px <= door_px
                     && b.pixels.len() as f64 >= door_min_px
-                    && b.width_px <= constriction(b))
+                    && b.width_px <= constriction(b)
+                    && !open_pairs.contains(&b.pair))
         })
         .collect();
     let door_pairs: Vec<(u32, u32)> = doors.iter().map(|b| b.pair).collect();
@@ -335,4 +344,52 @@ fn build(
     connections.dedup_by_key(|c| (c.a, c.b));
     let nrg = Nrg::new(spaces, connections)?;
     Ok((labels, nrg, centroids))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_narrow_stretch_beside_a_wide_opening_is_no_door() {
+        // Two 6 x 6 m rooms at 0.1 m/px; the wall between them has a 2.5 m
+        // opening at the top and, 1.5 m further down, a 0.8 m gap.
+        let mut rows = vec!["#".repeat(123)];
+        for y in 0..60 {
+            let open = (5..30).contains(&y) || (45..53).contains(&y);
+            rows.push(format!(
+                "#{}{}{}#",
+                ".".repeat(60),
+                if open { "." } else { "#" },
+                ".".repeat(60)
+            ));
+        }
+        rows.push("#".repeat(123));
+        let grid = OccupancyGrid::from_ascii(&rows.join("\n"), 0.1);
+        // The 0.8 m gap in a straight wall is a doorway gap (a door
+        // whatever else joins the rooms); without gap detection it is a
+        // narrow border stretch like a nook between furniture and a wall.
+        let with_gaps = extract(&grid, &ExtractParams::default()).unwrap();
+        let doors = |x: &Extraction| {
+            x.nrg
+                .spaces()
+                .iter()
+                .filter(|s| s.kind == SpaceKind::Door)
+                .count()
+        };
+        assert_eq!(doors(&with_gaps), 1);
+        let params = ExtractParams {
+            wall_jamb_m: 0.0,
+            ..ExtractParams::default()
+        };
+        let x = extract(&grid, &params).unwrap();
+        let kinds: Vec<&str> = x.nrg.spaces().iter().map(|s| s.kind.as_str()).collect();
+        assert_eq!(kinds.len(), 2, "{kinds:?}");
+        assert!(!kinds.contains(&"door"), "{kinds:?}");
+        assert_eq!(x.nrg.connections().len(), 1);
+        assert_eq!(
+            x.nrg.connections()[0].kind,
+            crate::model::ConnectionKind::Open
+        );
+    }
 }
