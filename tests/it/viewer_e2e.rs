@@ -293,5 +293,36 @@ async fn viewer_svg_endpoint_draws_routes_and_diffs_and_names_bad_parameters() {
             .status,
         404
     );
+    // A revision extracted from an occupancy grid is drawn over it, unless
+    // map=false; one imported from a model file has no map to draw.
+    let grid = nrgdb::grid::OccupancyGrid::from_ascii(
+        &["#".repeat(30), format!("#{}#", ".".repeat(28))]
+            .into_iter()
+            .chain(std::iter::repeat_n(format!("#{}#", ".".repeat(28)), 18))
+            .chain(["#".repeat(30)])
+            .collect::<Vec<_>>()
+            .join("\n"),
+        0.1,
+    );
+    let x = nrgdb::extract::extract(&grid, &nrgdb::extract::ExtractParams::default()).unwrap();
+    nrgdb::store::Store::open(&server.db)
+        .unwrap()
+        .import_with_grid(
+            "floor",
+            &x.nrg,
+            nrgdb::store::ImportMeta::new("scan", "test"),
+            Some(&grid),
+        )
+        .unwrap();
+    let with_map = server.get("/maps/floor/revisions/1/svg").await;
+    assert_eq!(with_map.status, 200, "{}", with_map.text());
+    assert_eq!(with_map.text().matches("<image class=\"map\"").count(), 1);
+    let without = server.get("/maps/floor/revisions/1/svg?map=false").await;
+    assert_eq!(without.text().matches("<image class=\"map\"").count(), 0);
+    assert!(!plain.text().contains("<image class=\"map\""));
+    server
+        .get("/maps/floor/revisions/1/svg?map=perhaps")
+        .await
+        .assert_error(400, "map");
     server.stop().await;
 }

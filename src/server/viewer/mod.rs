@@ -24,7 +24,7 @@ use crate::server::state::AppState;
 pub const INDEX_HTML: &str = include_str!("index.html");
 
 /// Query parameters of the SVG endpoint.
-pub const SVG_PARAMS: [ParamDoc; 2] = [
+pub const SVG_PARAMS: [ParamDoc; 3] = [
     q(
         "route",
         "string",
@@ -36,6 +36,12 @@ pub const SVG_PARAMS: [ParamDoc; 2] = [
         "string",
         false,
         "draw what changed since this revision number",
+    ),
+    q(
+        "map",
+        "boolean",
+        false,
+        "draw the revision's occupancy map underneath when the store has it (default true)",
     ),
 ];
 
@@ -76,10 +82,11 @@ pub async fn svg(
     Path((map, rev)): Path<(String, String)>,
     uri: Uri,
 ) -> Result<Response, ApiError> {
-    let p = Params::parse(&uri, &["route", "diff"])?;
+    let p = Params::parse(&uri, &["route", "diff", "map"])?;
     let rev = parse_rev("rev", &rev)?;
     let route = p.get("route").map(str::to_string);
     let diff: Option<u32> = p.opt("diff", "a revision number")?;
+    let with_map = p.opt::<bool>("map", "true or false")?.unwrap_or(true);
     let timeout = state.config().timeout;
     let body = state
         .blocking(move |ctx| {
@@ -112,9 +119,17 @@ pub async fn svg(
                 title: Some(title),
                 ..RenderOptions::default()
             };
+            let grid = if with_map {
+                let seq = u32::try_from(r.revision).map_err(|_| {
+                    ApiError::Internal(format!("revision {} too large", r.revision))
+                })?;
+                ctx.store().grid(&map, Some(seq))?
+            } else {
+                None
+            };
             let scene = Scene {
                 nrg: &r.nrg,
-                map: None,
+                map: grid.as_ref(),
                 route: overlay.as_ref(),
                 diff: changes.as_ref(),
                 options: &options,
