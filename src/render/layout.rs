@@ -92,6 +92,8 @@ pub fn layout(scene: &Scene<'_>) -> Result<Drawing, RenderError> {
         for (change, list) in [
             (Change::Removed, &diff.removed),
             (Change::Changed, &diff.changed),
+            (Change::Merged, &diff.merged),
+            (Change::Split, &diff.split),
             (Change::Added, &diff.added),
         ] {
             for o in list {

@@ -84,11 +84,18 @@ pub fn legend(scene: &Scene<'_>, at: [f64; 2]) -> (Vec<Item>, f64) {
         y += ROW_PX;
     }
     if let Some(diff) = scene.diff {
-        for (change, n) in [
+        // Split and merged get a row only when there are any.
+        let rows = [
             (Change::Added, diff.added.len()),
             (Change::Removed, diff.removed.len()),
             (Change::Changed, diff.changed.len()),
-        ] {
+            (Change::Split, diff.split.len()),
+            (Change::Merged, diff.merged.len()),
+        ];
+        for (change, n) in rows
+            .into_iter()
+            .filter(|&(c, n)| n > 0 || !matches!(c, Change::Split | Change::Merged))
+        {
             items.push(Item::Polygon {
                 rings: vec![swatch(y)],
                 fill: None,

@@ -127,8 +127,9 @@ impl OverlaySpace {
 }
 
 /// The spaces that changed between two revisions: added (only in the new),
-/// removed (only in the old, drawn with their old outline) and changed
-/// (geometry, kind or name; drawn with their new outline).
+/// removed (only in the old, drawn with their old outline), changed
+/// (geometry, kind or name; drawn with their new outline), and the parts
+/// of split spaces and the results of merges (new outlines).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct DiffOverlay {
     /// Spaces only in the new revision.
@@ -137,12 +138,20 @@ pub struct DiffOverlay {
     pub removed: Vec<OverlaySpace>,
     /// Spaces in both, changed.
     pub changed: Vec<OverlaySpace>,
+    /// The parts an old space was split into.
+    pub split: Vec<OverlaySpace>,
+    /// The spaces several old spaces were merged into.
+    pub merged: Vec<OverlaySpace>,
 }
 
 impl DiffOverlay {
     /// Whether nothing changed.
     pub fn is_empty(&self) -> bool {
-        self.added.is_empty() && self.removed.is_empty() && self.changed.is_empty()
+        self.added.is_empty()
+            && self.removed.is_empty()
+            && self.changed.is_empty()
+            && self.split.is_empty()
+            && self.merged.is_empty()
     }
 }
 

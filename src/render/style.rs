@@ -60,7 +60,7 @@ pub fn route_stroke() -> Stroke {
     Stroke::solid(VERMILLION.with_alpha(230), 5.0)
 }
 
-/// The three kinds of change.
+/// The kinds of change drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Change {
     /// Only in the new revision.
@@ -69,6 +69,10 @@ pub enum Change {
     Removed,
     /// In both, different.
     Changed,
+    /// A part of a split space.
+    Split,
+    /// The result of a merge.
+    Merged,
 }
 
 impl Change {
@@ -78,25 +82,32 @@ impl Change {
             Change::Added => "added",
             Change::Removed => "removed",
             Change::Changed => "changed",
+            Change::Split => "split",
+            Change::Merged => "merged",
         }
     }
 
     /// Outline: added blue solid, removed black dashed, changed reddish
-    /// purple dotted.
+    /// purple dotted, split vermillion dash-dot, merged black long dashes.
     pub fn stroke(self) -> Stroke {
         match self {
             Change::Added => Stroke::solid(BLUE, 3.0),
             Change::Removed => Stroke::dashed(BLACK, 3.0, &[7.0, 4.0]),
             Change::Changed => Stroke::dashed(REDDISH_PURPLE, 3.0, &[2.0, 3.0]),
+            Change::Split => Stroke::dashed(VERMILLION, 3.0, &[8.0, 3.0, 2.0, 3.0]),
+            Change::Merged => Stroke::dashed(BLACK, 3.0, &[12.0, 4.0]),
         }
     }
 
-    /// Hatching: added "/", removed "\", changed vertical.
+    /// Hatching: added "/", removed "\", changed vertical, split
+    /// horizontal, merged steep "/".
     pub fn hatch(self) -> Hatch {
         let (colour, angle_deg) = match self {
             Change::Added => (BLUE, 45.0),
             Change::Removed => (BLACK, 135.0),
             Change::Changed => (REDDISH_PURPLE, 90.0),
+            Change::Split => (VERMILLION, 0.0),
+            Change::Merged => (BLACK, 67.5),
         };
         Hatch {
             colour: colour.with_alpha(200),

@@ -361,6 +361,14 @@ mod tests {
         let svg = svg_of(&nrg, Some(&route), Some(&diff));
         assert_eq!(svg.matches("id=\"route\"").count(), 1);
         assert!(svg.contains("class=\"diff removed\" data-space=\"99\""));
+        assert!(!svg.contains(">split ("), "no split row without splits");
+        let split = DiffOverlay {
+            split: vec![OverlaySpace::of(&gone)],
+            ..DiffOverlay::default()
+        };
+        let with_split = svg_of(&nrg, None, Some(&split));
+        assert!(with_split.contains("class=\"diff split\" data-space=\"99\""));
+        assert!(with_split.contains(">split (1)<"), "legend row");
         assert!(svg.contains("<pattern id=\"hatch0\""));
         assert!(svg.contains("fill=\"url(#hatch0)\""));
         assert!(svg.contains("route 3.6 m"));

@@ -48,6 +48,7 @@ fn overlays(nrg: &Nrg) -> (RouteOverlay, DiffOverlay) {
         added: vec![OverlaySpace::of(nrg.space(SpaceId(12)).unwrap())],
         removed: vec![OverlaySpace::of(&gone)],
         changed: vec![OverlaySpace::of(nrg.space(SpaceId(11)).unwrap())],
+        ..DiffOverlay::default()
     };
     (route, diff)
 }
