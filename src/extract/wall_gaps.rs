@@ -165,20 +165,28 @@ fn scan(
             let depth = last + 1 - first;
             // Beyond both faces of the wall (within two lines, for ragged
             // walls) the free run through the gap's middle must be wider than
-            // the gap by a jamb on either side.
-            let open_line = |l: usize| {
+            // the gap by a jamb on either side, and on at least one face it
+            // must reach past both jambs: both jambs end there, as a wall's
+            // do. (A corridor piece between two facing doorways has one side
+            // wall running on past the piece on both faces.)
+            // Per line: None = closed; Some(true) = open past both jambs.
+            let open_line = |l: usize| -> Option<bool> {
                 let mid = (lo + hi) / 2;
                 if l >= lines || !is_free(l, mid) {
-                    return false;
+                    return None;
                 }
                 let left = (0..mid).rev().take_while(|&k| is_free(l, k)).count();
                 let right = (mid..len).take_while(|&k| is_free(l, k)).count();
-                left + right >= (hi - lo) + 2 * limits.jamb
+                (left + right >= (hi - lo) + 2 * limits.jamb).then_some(
+                    left >= (mid - lo) + limits.jamb && right >= (hi - mid) + limits.jamb,
+                )
             };
-            let before = (1..=2).any(|d| first.checked_sub(d).is_some_and(open_line));
-            let after = (1..=2).any(|d| open_line(last + d));
+            let face = |ls: &mut dyn Iterator<Item = usize>| ls.filter_map(open_line).max();
+            let before = face(&mut (1..=2).filter_map(|d| first.checked_sub(d)));
+            let after = face(&mut (1..=2).map(|d| last + d));
+            let faces_open = matches!((before, after), (Some(a), Some(b)) if a || b);
             let wide_enough = hi - lo >= limits.width.0;
-            if depth <= limits.depth && wide_enough && before && after {
+            if depth <= limits.depth && wide_enough && faces_open {
                 let mid = first + depth / 2;
                 out.push(WallGap {
                     line: (lo..hi).map(|k| index(mid, k)).collect(),
@@ -313,6 +321,17 @@ mod tests {
              ##...##",
         );
         assert!(axis_gaps(&corridor, LIMITS).is_empty());
+        // A corridor piece (columns 5-7) between two doorways of a room on
+        // the left: its right wall runs on past the piece on both faces.
+        let piece = free_mask(
+            "........####
+             ........####
+             ...##...####
+             ...##...####
+             ........####
+             ........####",
+        );
+        assert!(axis_gaps(&piece, LIMITS).is_empty());
         // A niche: free on one face of the wall only.
         let niche = free_mask(
             "........
