@@ -94,8 +94,9 @@ pub struct ExtractParams {
     pub door_join_m: f64,
     /// A gap between door_width_min_m and door_width_max_m in a straight
     /// wall (rows or columns of the map) with at least this much wall on
-    /// either side, open to free space on both faces of the wall, is a
-    /// doorway, even where it is as wide as the corridor it opens onto.
+    /// either side, open to free space on both faces of the wall (past both
+    /// jambs on at least one face), is a doorway, even where it is as wide
+    /// as the corridor it opens onto.
     /// 0 turns this off. Default 0.3 m.
     pub wall_jamb_m: f64,
     /// Walls thicker than this hold no doorway gaps (a longer narrow
