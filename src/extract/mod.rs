@@ -6,10 +6,13 @@
 //! leave this module except as the label image of an [`Extraction`].
 //!
 //! Stages (see `pipeline.rs`): free space cleaned of LiDAR rays and islands
-//! (`clean`), exact distance transform, segmentation (`segment`: distance
-//! markers + Meyer watershed, or `ccl`: the paper's Experiment I), merging of
-//! tiny regions (`merge`), door spaces cut across narrow borders (`doors`),
-//! region adjacency, labelling and refinement (`graph`), outlines (`polygon`).
+//! (`clean`), doorway gaps in straight walls closed (`wall_gaps`), exact
+//! distance transform, segmentation (`segment`: distance markers + Meyer
+//! watershed, or `ccl`: the paper's Experiment I), merging of tiny regions
+//! (`merge`), door spaces cut across doorway gaps and narrow borders
+//! (`doors`), unknown pockets and specks joined to their spaces
+//! (`interior`), region adjacency, labelling and refinement (`graph`),
+//! outlines (`polygon`).
 
 mod ccl;
 mod clean;
