@@ -48,3 +48,22 @@ async fn diff_between_two_revisions() {
         .assert_error(404, "map");
     s.stop().await;
 }
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn a_request_past_the_time_bound_is_503() {
+    let s = TestServer::start(|c| c.timeout = std::time::Duration::from_millis(1)).await;
+    let mut store = nrgdb::store::Store::open(&s.db).unwrap();
+    for rooms in [1500, 1501] {
+        store
+            .import(
+                "big",
+                &nrgdb::fixtures::corridor_building(rooms),
+                nrgdb::store::ImportMeta::new("", "test"),
+            )
+            .unwrap();
+    }
+    let r = s.get("/maps/big/diff?from=1&to=2&align=never").await;
+    assert_eq!(r.status, 503, "{}", r.text());
+    assert_eq!(r.json()["code"], "Timeout", "{}", r.text());
+    s.stop().await;
+}

@@ -286,6 +286,14 @@ async fn map_yaml_and_image_are_extracted() {
     let route = s.get("/maps/floor/route?from=1,5&to=11,5").await.json();
     assert_eq!(route["code"], "Ok", "{route}");
     assert_eq!(route["routes"][0]["doors"].as_array().unwrap().len(), 2);
+    // The grid is kept with the revision: the SVG is drawn over it.
+    let grid = nrgdb::store::Store::open(&s.db)
+        .unwrap()
+        .grid("floor", None)
+        .unwrap();
+    assert!(grid.is_some());
+    let svg = s.get("/maps/floor/revisions/1/svg").await.text();
+    assert_eq!(svg.matches("<image class=\"map\"").count(), 1);
     s.stop().await;
 }
 

@@ -15,7 +15,7 @@ use serde_json::json;
 
 use super::{ParamDoc, q};
 use crate::extract::{ExtractParams, extract};
-use crate::grid::{LoadOptions, load_map};
+use crate::grid::{LoadOptions, OccupancyGrid, load_map};
 use crate::model::Nrg;
 use crate::server::auth::require_write;
 use crate::server::body::read_limited;
@@ -114,7 +114,7 @@ fn extract_map(
     yaml: &[u8],
     image: &[u8],
     image_name: &str,
-) -> Result<(Nrg, serde_json::Value), ApiError> {
+) -> Result<(Nrg, OccupancyGrid, serde_json::Value), ApiError> {
     let bad = |e: String| ApiError::BadUpload(e);
     let mut doc: serde_yaml_ng::Value =
         serde_yaml_ng::from_slice(yaml).map_err(|e| bad(format!("map YAML: {e}")))?;
@@ -151,11 +151,15 @@ fn extract_map(
     let params = ExtractParams::default();
     let extraction = extract(&grid, &params).map_err(|e| bad(format!("extraction: {e}")))?;
     let params = serde_json::to_value(&params).unwrap_or(serde_json::Value::Null);
-    Ok((extraction.nrg, params))
+    Ok((extraction.nrg, grid, params))
 }
 
 /// The model and import metadata described by a multipart body.
-fn from_multipart(body: &[u8], boundary: &str, meta: &mut ImportMeta) -> Result<Nrg, ApiError> {
+/// A model to import, and the occupancy grid it was extracted from (kept
+/// with the revision, see [`crate::store::Store::grid`]).
+type Upload = (Nrg, Option<OccupancyGrid>);
+
+fn from_multipart(body: &[u8], boundary: &str, meta: &mut ImportMeta) -> Result<Upload, ApiError> {
     let parts = multipart::parse(body, boundary).map_err(|e| ApiError::BadUpload(e.to_string()))?;
     let mut yaml = None;
     let mut image = None;
@@ -182,19 +186,19 @@ fn from_multipart(body: &[u8], boundary: &str, meta: &mut ImportMeta) -> Result<
     match (yaml, image, model) {
         (Some(y), Some(i), None) => {
             let image_name = name(i, "map.pgm");
-            let (nrg, params) = extract_map(y.data, i.data, &image_name)?;
+            let (nrg, grid, params) = extract_map(y.data, i.data, &image_name)?;
             let mut bytes = y.data.to_vec();
             bytes.extend_from_slice(i.data);
             meta.source_name = Some(format!("{} + {image_name}", name(y, "map.yaml")));
             meta.source_sha256 = Some(sha256_hex(&bytes));
             meta.params = Some(params);
-            Ok(nrg)
+            Ok((nrg, Some(grid)))
         }
         (None, None, Some((k, p))) => {
             let file = name(p, "upload");
             let nrg = read_model(k, p.data, &file)?;
             *meta = std::mem::take(meta).with_source(file, p.data);
-            Ok(nrg)
+            Ok((nrg, None))
         }
         (Some(_), None, _) => Err(ApiError::BadUpload(
             "a map YAML needs its image (a PGM or PNG part)".into(),
@@ -233,7 +237,7 @@ pub async fn upload(
     );
     let done = state
         .blocking(move |ctx| {
-            let nrg = if let Some(b) = multipart::boundary(&content_type) {
+            let (nrg, grid) = if let Some(b) = multipart::boundary(&content_type) {
                 from_multipart(&bytes, &b, &mut meta)?
             } else {
                 let kind = kind_of_type(&content_type).filter(|k| !matches!(k, Kind::MapYaml | Kind::Image));
@@ -244,9 +248,9 @@ pub async fn upload(
                 };
                 let nrg = read_model(kind, &bytes, "body")?;
                 meta = std::mem::take(&mut meta).with_source("upload", &bytes);
-                nrg
+                (nrg, None)
             };
-            Ok(ctx.store().import(&map, &nrg, meta)?)
+            Ok(ctx.store().import_with_grid(&map, &nrg, meta, grid.as_ref())?)
         })
         .await?;
     let info = &done.revision;
