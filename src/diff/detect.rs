@@ -240,7 +240,7 @@ fn matched(old: &Space, new: &Space, iou: f64, params: &DiffParams) -> SpaceChan
         new_area_m2: Some(new.area_m2),
         names: renamed.then(|| [old.name.clone(), new.name.clone()]),
         door_width_m: widths,
-        space: (!same_but_id(old, new)).then(|| new.clone()),
+        space: (!old.same_but_id(new)).then(|| new.clone()),
     }
 }
 
@@ -266,25 +266,6 @@ fn alone(space: &Space, in_b: bool, part: bool) -> SpaceChange {
         door_width_m: None,
         space: in_b.then(|| space.clone()),
     }
-}
-
-/// Whether two spaces are equal bit for bit except for their ids.
-pub(crate) fn same_but_id(a: &Space, b: &Space) -> bool {
-    let bits = |r: &[[f64; 2]]| -> Vec<u64> {
-        r.iter()
-            .flat_map(|p| [p[0].to_bits(), p[1].to_bits()])
-            .collect()
-    };
-    a.kind == b.kind
-        && a.name == b.name
-        && a.anchor.map(f64::to_bits) == b.anchor.map(f64::to_bits)
-        && bits(&a.polygon) == bits(&b.polygon)
-        && a.holes.len() == b.holes.len()
-        && a.holes
-            .iter()
-            .zip(&b.holes)
-            .all(|(x, y)| bits(x) == bits(y))
-        && a.attributes.iter().eq(b.attributes.iter())
 }
 
 fn connection_changes(

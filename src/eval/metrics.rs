@@ -229,6 +229,18 @@ pub fn connection_scores(gt: &GroundTruth, x: &Extraction) -> Detection {
     detection(hit, gt_pairs.len(), hit, det_pairs.len())
 }
 
+/// Per label of the extraction's label image (index = label): whether it
+/// is a door space.
+pub(crate) fn door_labels(x: &Extraction) -> Vec<bool> {
+    (0..=x.labels.count)
+        .map(|l| {
+            x.nrg
+                .space(SpaceId(l))
+                .is_some_and(|s| s.kind == SpaceKind::Door)
+        })
+        .collect()
+}
+
 /// Pixel centroids (`[col, row]`) of the extraction's door spaces.
 pub fn door_centroids(x: &Extraction) -> Vec<[f64; 2]> {
     x.nrg
@@ -247,13 +259,7 @@ pub fn door_radius_px(resolution: f64) -> f64 {
 /// Every score for one extraction. `resolution` converts the 0.5 m door radius to pixels.
 pub fn evaluate(gt: &GroundTruth, x: &Extraction, resolution: f64) -> Evaluation {
     let mut segments = x.labels.clone();
-    let is_door: Vec<bool> = std::iter::once(false)
-        .chain((1..=segments.count).map(|id| {
-            x.nrg
-                .space(SpaceId(id))
-                .is_some_and(|s| s.kind == SpaceKind::Door)
-        }))
-        .collect();
+    let is_door = door_labels(x);
     for l in &mut segments.data {
         if is_door.get(*l as usize).copied().unwrap_or(false) {
             *l = 0;

@@ -6,10 +6,9 @@
 use image::{Rgb, RgbImage};
 
 use super::GroundTruth;
-use super::metrics::{door_centroids, door_matches, door_radius_px};
+use super::metrics::{door_centroids, door_labels, door_matches, door_radius_px};
 use crate::extract::Extraction;
 use crate::grid::{Cell, OccupancyGrid};
-use crate::model::{SpaceId, SpaceKind};
 
 /// Colour of a GT doorway line a detected door matched.
 pub const LINE_FOUND: [u8; 3] = [0, 158, 115];
@@ -30,11 +29,7 @@ const DOOR_SPACE: [u8; 3] = [230, 159, 0];
 /// centroid, blue when it matched a line and red when it matched none.
 pub fn evaluation_picture(grid: &OccupancyGrid, gt: &GroundTruth, x: &Extraction) -> RgbImage {
     let (w, h) = (grid.width, grid.height);
-    let is_door = |l: u32| {
-        x.nrg
-            .space(SpaceId(l))
-            .is_some_and(|s| s.kind == SpaceKind::Door)
-    };
+    let is_door = door_labels(x);
     let mut img = RgbImage::from_fn(w, h, |col, row| {
         let i = (row * w + col) as usize;
         let label = x.labels.data.get(i).copied().unwrap_or(0);
@@ -43,7 +38,7 @@ pub fn evaluation_picture(grid: &OccupancyGrid, gt: &GroundTruth, x: &Extraction
             (0, Cell::Free) => [255, 255, 255],
             (0, Cell::Occupied) => [0, 0, 0],
             (0, Cell::Unknown) => [150, 150, 150],
-            (l, _) if is_door(l) => DOOR_SPACE,
+            (l, _) if is_door.get(l as usize).copied().unwrap_or(false) => DOOR_SPACE,
             (l, _) => pale(l),
         })
     });

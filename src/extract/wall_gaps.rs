@@ -4,6 +4,7 @@
 //! doorway even when it is as wide as the corridor it opens onto, where the
 //! distance transform shows no constriction.
 
+use super::interior::neighbours;
 use crate::imaging::{Labels, Mask, dominant_orientation, line_pixels, turn_mask};
 
 /// One doorway gap: the line across it (pixels, row-major indices) at the
@@ -104,16 +105,7 @@ pub(crate) fn reopen_gaps(labels: &mut Labels, gaps: &[WallGap]) {
     for gap in gaps {
         for &p in &gap.line {
             let i = p as usize;
-            let (x, y) = (i % w, i / w);
-            let around = [
-                (x > 0).then(|| i - 1),
-                (x + 1 < w).then(|| i + 1),
-                (y > 0).then(|| i - w),
-                (y + 1 < h).then(|| i + w),
-            ];
-            let best = around
-                .into_iter()
-                .flatten()
+            let best = neighbours(i, w, h)
                 .filter(|j| !gap.line.contains(&(*j as u32)))
                 .map(|j| labels.data[j])
                 .filter(|&l| l != 0)

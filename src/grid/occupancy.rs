@@ -11,6 +11,17 @@ pub enum Cell {
     Unknown,
 }
 
+impl Cell {
+    /// The ROS map_server grey of the cell: free 255, occupied 0, unknown 205.
+    pub fn grey(self) -> u8 {
+        match self {
+            Cell::Free => 255,
+            Cell::Occupied => 0,
+            Cell::Unknown => 205,
+        }
+    }
+}
+
 /// A loaded occupancy grid: cells in row-major order, row 0 at the top of the
 /// image (ROS image convention).
 #[derive(Debug, Clone, PartialEq)]
@@ -44,14 +55,7 @@ impl OccupancyGrid {
         origin: [f64; 3],
         cells: Vec<Cell>,
     ) -> OccupancyGrid {
-        let grey = cells
-            .iter()
-            .map(|c| match c {
-                Cell::Free => 255,
-                Cell::Occupied => 0,
-                Cell::Unknown => 205,
-            })
-            .collect();
+        let grey = cells.iter().map(|c| c.grey()).collect();
         OccupancyGrid {
             width,
             height,

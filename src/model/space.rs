@@ -126,6 +126,27 @@ impl Space {
         self.area_m2 = (polygon_area(&self.polygon).abs() - holes).max(0.0);
     }
 
+    /// Whether `other` equals this space bit for bit (so -0.0 and 0.0
+    /// differ; attributes key for key, in order), ids aside.
+    pub fn same_but_id(&self, other: &Space) -> bool {
+        let bits = |r: &[Point]| -> Vec<u64> {
+            r.iter()
+                .flat_map(|p| [p[0].to_bits(), p[1].to_bits()])
+                .collect()
+        };
+        self.kind == other.kind
+            && self.name == other.name
+            && self.anchor.map(f64::to_bits) == other.anchor.map(f64::to_bits)
+            && bits(&self.polygon) == bits(&other.polygon)
+            && self.holes.len() == other.holes.len()
+            && self
+                .holes
+                .iter()
+                .zip(&other.holes)
+                .all(|(x, y)| bits(x) == bits(y))
+            && self.attributes.iter().eq(other.attributes.iter())
+    }
+
     /// The name if set, else `"<kind> <id>"` (e.g. "room 12").
     pub fn label(&self) -> String {
         match &self.name {

@@ -95,15 +95,7 @@ pub(crate) fn insert_grid(
     seq: u32,
     grid: &OccupancyGrid,
 ) -> Result<(), StoreError> {
-    let grey: Vec<u8> = grid
-        .cells
-        .iter()
-        .map(|c| match c {
-            Cell::Free => 255,
-            Cell::Occupied => 0,
-            Cell::Unknown => 205,
-        })
-        .collect();
+    let grey: Vec<u8> = grid.cells.iter().map(|c| c.grey()).collect();
     let mut png = Vec::new();
     PngEncoder::new(&mut png)
         .write_image(&grey, grid.width, grid.height, ExtendedColorType::L8)

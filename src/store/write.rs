@@ -327,26 +327,9 @@ fn insert_space(conn: &Connection, map_id: i64, seq: u32, s: &Space) -> Result<(
     Ok(())
 }
 
-/// Bit-exact equality of what a space row stores (so -0.0 and 0.0 differ).
+/// Bit-exact equality of what a space row stores (see [`Space::same_but_id`]).
 fn same_space(a: &Space, b: &Space) -> bool {
-    let bits = |r: &Vec<[f64; 2]>| -> Vec<u64> {
-        r.iter()
-            .flat_map(|p| [p[0].to_bits(), p[1].to_bits()])
-            .collect()
-    };
-    a.id == b.id
-        && a.kind == b.kind
-        && a.name == b.name
-        && a.anchor[0].to_bits() == b.anchor[0].to_bits()
-        && a.anchor[1].to_bits() == b.anchor[1].to_bits()
-        && bits(&a.polygon) == bits(&b.polygon)
-        && a.holes.len() == b.holes.len()
-        && a.holes
-            .iter()
-            .zip(&b.holes)
-            .all(|(x, y)| bits(x) == bits(y))
-        // Values and key order (a revision reads back key for key).
-        && a.attributes.iter().eq(b.attributes.iter())
+    a.id == b.id && a.same_but_id(b)
 }
 
 fn same_link(a: &Link, b: &Link) -> bool {
