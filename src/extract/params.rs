@@ -92,13 +92,18 @@ pub struct ExtractParams {
     /// one doorway (a speck of noise does not make two doors); farther apart
     /// they are separate doors. Default 0.5 m.
     pub door_join_m: f64,
-    /// A gap between door_width_min_m and door_width_max_m in a straight
-    /// wall (rows or columns of the map) with at least this much wall on
-    /// either side, open to free space on both faces of the wall (past both
-    /// jambs on at least one face), is a doorway, even where it is as wide
-    /// as the corridor it opens onto.
-    /// 0 turns this off. Default 0.3 m.
+    /// A gap between `door_width_min_m` and `wall_gap_width_max_m` in a
+    /// straight wall (along the map's dominant directions) with at least
+    /// this much wall on one side and a wall end on the other (a doorway
+    /// next to a corner has a jamb only as thick as the wall it meets),
+    /// open to free space on both faces of the wall (past both jambs on at
+    /// least one face), is a doorway, even where it is as wide as the
+    /// corridor it opens onto. 0 turns this off. Default 0.3 m.
     pub wall_jamb_m: f64,
+    /// Widest doorway gap in a wall (see `wall_jamb_m`): the walls on both
+    /// sides are evidence a border in open space lacks, so it may be wider
+    /// than `door_width_max_m` (IPA's cubicle fronts are 2 m). Default 2.1 m.
+    pub wall_gap_width_max_m: f64,
     /// Walls thicker than this hold no doorway gaps (a longer narrow
     /// passage is a corridor). Default 1.2 m.
     pub wall_thickness_max_m: f64,
@@ -135,6 +140,7 @@ impl Default for ExtractParams {
             door_constriction: 0.8,
             door_join_m: 0.5,
             wall_jamb_m: 0.3,
+            wall_gap_width_max_m: 2.1,
             wall_thickness_max_m: 1.2,
             door_depth_m: 0.3,
             min_room_area_m2: 1.0,
@@ -162,6 +168,7 @@ impl ExtractParams {
             ("door_constriction", self.door_constriction),
             ("door_join_m", self.door_join_m),
             ("wall_jamb_m", self.wall_jamb_m),
+            ("wall_gap_width_max_m", self.wall_gap_width_max_m),
             ("wall_thickness_max_m", self.wall_thickness_max_m),
             ("door_depth_m", self.door_depth_m),
             ("min_room_area_m2", self.min_room_area_m2),

@@ -115,7 +115,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
             wall_gaps(
                 &free.clean,
                 GapLimits {
-                    width: (px(params.door_width_min_m), px(params.door_width_max_m)),
+                    width: (px(params.door_width_min_m), px(params.wall_gap_width_max_m)),
                     jamb: px(params.wall_jamb_m).max(1),
                     depth: px(params.wall_thickness_max_m).max(1),
                 },

@@ -155,12 +155,13 @@ fn scan(
                 last += 1;
             }
             let depth = last + 1 - first;
-            // Beyond both faces of the wall (within two lines, for ragged
-            // walls) the free run through the gap's middle must be wider than
-            // the gap by a jamb on either side, and on at least one face it
-            // must reach past both jambs: both jambs end there, as a wall's
-            // do. (A corridor piece between two facing doorways has one side
-            // wall running on past the piece on both faces.)
+            // Beyond both faces of the wall (within a jamb's length, for
+            // ragged walls and jambs thicker than the doorway) the free run
+            // through the gap's middle must be wider than the gap by a jamb,
+            // and on at least one face it must reach past both jambs: both
+            // jambs end there, as a wall's do. (A corridor piece between two
+            // facing doorways has one side wall running on past the piece on
+            // both faces.)
             // Per line: None = closed; Some(true) = open past both jambs.
             let open_line = |l: usize| -> Option<bool> {
                 let mid = (lo + hi) / 2;
@@ -169,17 +170,37 @@ fn scan(
                 }
                 let left = (0..mid).rev().take_while(|&k| is_free(l, k)).count();
                 let right = (mid..len).take_while(|&k| is_free(l, k)).count();
-                (left + right >= (hi - lo) + 2 * limits.jamb).then_some(
+                (left + right >= (hi - lo) + limits.jamb).then_some(
                     left >= (mid - lo) + limits.jamb && right >= (hi - mid) + limits.jamb,
                 )
             };
             let face = |ls: &mut dyn Iterator<Item = usize>| ls.filter_map(open_line).max();
-            let before = face(&mut (1..=2).filter_map(|d| first.checked_sub(d)));
-            let after = face(&mut (1..=2).map(|d| last + d));
+            let reach = limits.jamb.max(2);
+            let before = face(&mut (1..=reach).filter_map(|d| first.checked_sub(d)));
+            let after = face(&mut (1..=reach).map(|d| last + d));
             let faces_open = matches!((before, after), (Some(a), Some(b)) if a || b);
             let wide_enough = hi - lo >= limits.width.0;
-            if depth <= limits.depth && wide_enough && faces_open {
-                let mid = first + depth / 2;
+            // Each jamb is a wall along the line (at least `jamb` of it, in
+            // some line of the stack) or the end of a wall across it that
+            // reaches a jamb past the doorway's thickness (a doorway beside
+            // a corner, a cubicle's open front); never a speck.
+            let mid = first + depth / 2;
+            let along = |ks: &dyn Fn() -> Box<dyn Iterator<Item = usize>>| {
+                (first..=last).any(|l| {
+                    ks().take(limits.jamb)
+                        .take_while(|&k| !is_free(l, k))
+                        .count()
+                        >= limits.jamb
+                })
+            };
+            let across = |k: usize| {
+                let up = (0..=mid).rev().take_while(|&l| !is_free(l, k)).count();
+                let down = (mid + 1..lines).take_while(|&l| !is_free(l, k)).count();
+                up + down >= depth + limits.jamb
+            };
+            let left_jamb = lo > 0 && (along(&|| Box::new((0..lo).rev())) || across(lo - 1));
+            let right_jamb = hi < len && (along(&|| Box::new(hi..len)) || across(hi));
+            if depth <= limits.depth && wide_enough && faces_open && left_jamb && right_jamb {
                 out.push(WallGap {
                     line: (lo..hi).map(|k| index(mid, k)).collect(),
                     width_px: hi - lo,
@@ -190,8 +211,9 @@ fn scan(
     out
 }
 
-/// Maximal free runs of one line whose width is within the limits and
-/// that have at least `jamb` wall pixels on either side.
+/// Maximal free runs of one line whose width is within the limits, with
+/// at least `jamb` wall pixels on one side and some wall on the other
+/// (the stack decides whether that is a jamb).
 fn gaps_in_line(len: usize, is_free: impl Fn(usize) -> bool, limits: GapLimits) -> Vec<Run> {
     let mut out = Vec::new();
     let mut k = 0;
@@ -212,8 +234,8 @@ fn gaps_in_line(len: usize, is_free: impl Fn(usize) -> bool, limits: GapLimits) 
         let after = (end..len.min(end + limits.jamb))
             .take_while(|&j| !is_free(j))
             .count();
-        if wall_run >= limits.jamb
-            && after >= limits.jamb
+        if wall_run.max(after) >= limits.jamb
+            && wall_run.min(after) >= 1
             && (limits.width.0..=limits.width.1).contains(&width)
         {
             out.push((start, end));
@@ -300,6 +322,55 @@ mod tests {
         }
         assert!((8..=16).contains(&g[0].line.len()));
     }
+
+    #[test]
+    fn a_doorway_beside_a_corner() {
+        // A cubicle open to the corridor above: its front has a jamb on the
+        // left only; on the right the opening ends at the cubicle's thin
+        // side wall (column 7), which runs across the line, with the next
+        // cubicle beyond it.
+        let m = free_mask(
+            ".............
+             .............
+             ###....#.....
+             #......#.....
+             #......#.....
+             ########.....",
+        );
+        let g = axis_gaps(&m, LIMITS_CORNER);
+        assert_eq!(g.len(), 1, "{g:?}");
+        assert_eq!(g[0].width_px, 4);
+        assert_eq!(g[0].line, vec![29, 30, 31, 32]);
+        // Without the side wall running down there is no jamb on the right.
+        let open = free_mask(
+            ".............
+             .............
+             ###....#.....
+             #............
+             #............
+             ########.....",
+        );
+        assert!(axis_gaps(&open, LIMITS_CORNER).is_empty());
+    }
+
+    #[test]
+    fn a_speck_is_no_jamb() {
+        // A gap between a wall and a one-pixel speck in open space.
+        let m = free_mask(
+            "............
+             ............
+             ####.....#..
+             ............
+             ............",
+        );
+        assert!(axis_gaps(&m, LIMITS).is_empty());
+    }
+
+    const LIMITS_CORNER: GapLimits = GapLimits {
+        width: (2, 6),
+        jamb: 2,
+        depth: 2,
+    };
 
     #[test]
     fn corridors_niches_and_wide_openings_are_no_doorways() {
