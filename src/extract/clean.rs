@@ -22,8 +22,13 @@ pub(crate) fn clean_free(
     noise_radius_m: f64,
     min_area_m2: f64,
     furniture_m: f64,
+    wall_gap_m: f64,
 ) -> FreeSpace {
-    let free = free_without_furniture(grid, furniture_m / grid.resolution);
+    let free = free_without_furniture(
+        grid,
+        furniture_m / grid.resolution,
+        wall_gap_m / grid.resolution,
+    );
     let r = noise_radius_m / grid.resolution;
     let mut clean = if r >= 0.5 {
         open(&free, r)
@@ -69,7 +74,7 @@ mod tests {
              ##########????",
             0.1,
         );
-        let f = clean_free(&g, 0.1, 0.05, 0.0);
+        let f = clean_free(&g, 0.1, 0.05, 0.0, 0.0);
         let w = g.width as usize;
         assert_eq!(f.clean.as_raw()[2 * w + 10], 0, "ray removed");
         assert_eq!(f.clean.as_raw()[4 * w + 11], 0, "island removed");

@@ -102,6 +102,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         params.noise_radius_m,
         params.min_free_area_m2,
         params.furniture_max_m,
+        params.wall_gap_width_max_m,
     );
     if free.clean.iter().all(|&p| p == 0) {
         return Err(ExtractError::NoSpace {
