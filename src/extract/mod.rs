@@ -24,6 +24,7 @@ mod interior;
 mod merge;
 mod output;
 mod params;
+mod passages;
 mod pipeline;
 mod polygon;
 mod resample;

@@ -10,10 +10,11 @@ use super::doors::{Border, borders, cut_doors};
 use super::graph::topology;
 use super::interior::{claim_enclosed_unknown, fill_specks};
 use super::merge::merge_small;
+use super::passages::give_passages_to_narrow_side;
 use super::polygon::{bounding_boxes, outline};
 use super::resample::{coarsen, pixel_centroids, refine};
 use super::segment::segment_basins;
-use super::wall_gaps::{GapLimits, close_gaps, reopen_gaps, wall_gaps};
+use super::wall_gaps::{GapLimits, WallGap, close_gaps, reopen_gaps, wall_gaps};
 use super::{ExtractError, ExtractParams, Method};
 use crate::grid::OccupancyGrid;
 use crate::imaging::{Labels, distance_to_background, max_distance};
@@ -153,46 +154,19 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     );
     reopen_gaps(&mut regions, &gaps);
     clock.lap("merge");
-    let all = borders(&regions, &dist, (params.door_join_m / res).round() as i64);
-    let door_px = params.door_width_max_m / res;
-    let door_min_px = params.door_width_min_m / res;
+    let join_px = (params.door_join_m / res).round() as i64;
+    let all = borders(&regions, &dist, join_px);
     let widest = widest_passages(&regions, &dist);
-    let constriction = |b: &Border| {
-        let (a, c) = (b.pair.0 as usize, b.pair.1 as usize);
-        params.door_constriction * widest[a].min(widest[c])
+    let doors = select_doors(&all, &widest, &gaps, params, res);
+    // Doors found mid-passage move to the passage's mouth.
+    let window_px = (2.0 * params.door_width_max_m / res).ceil() as usize;
+    let all = if give_passages_to_narrow_side(&mut regions, &dist, &doors, &widest, window_px) {
+        borders(&regions, &dist, join_px)
+    } else {
+        all
     };
-    let gap_at: HashMap<u32, usize> = gaps
-        .iter()
-        .enumerate()
-        .flat_map(|(k, g)| g.line.iter().map(move |&p| (p, k)))
-        .collect();
-    let crosses_gap = |b: &Border| {
-        let mut hits: HashMap<usize, usize> = HashMap::new();
-        for k in b.pixels.iter().filter_map(|p| gap_at.get(p)) {
-            *hits.entry(*k).or_default() += 1;
-        }
-        hits.iter().any(|(&k, &n)| 2 * n >= gaps[k].line.len())
-    };
-    // Pairs of regions that also meet wider than any door: openly joined,
-    // so a narrow stretch between them elsewhere (a nook between furniture
-    // and a wall) is no doorway.
-    let open_pairs: HashSet<(u32, u32)> = all
-        .iter()
-        .filter(|b| b.width_px > door_px)
-        .map(|b| b.pair)
-        .collect();
-    let doors: Vec<&Border> = all
-        .iter()
-        .filter(|b| {
-            // A doorway in a wall is a door whatever the widths around it.
-            crosses_gap(b)
-                || (b.width_px >= door_min_px
-                    && b.width_px <= door_px
-                    && b.pixels.len() as f64 >= door_min_px
-                    && b.width_px <= constriction(b)
-                    && !open_pairs.contains(&b.pair))
-        })
-        .collect();
+    let widest = widest_passages(&regions, &dist);
+    let doors = select_doors(&all, &widest, &gaps, params, res);
     let door_pairs: Vec<(u32, u32)> = doors.iter().map(|b| b.pair).collect();
     let n_regions = regions.count;
     let mut labels = cut_doors(&regions, &doors, (params.door_depth_m / res).max(1.0));
@@ -230,6 +204,57 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         pixel_centroids,
         timings: clock.timings,
     })
+}
+
+/// The borders of `all` that are doors: those along a doorway gap's line,
+/// and those between `door_width_min_m` and `door_width_max_m` wide that
+/// are a constriction of the narrower region (`widest`: each region's
+/// widest inscribed diameter, px) and whose regions do not also meet wider
+/// than any door.
+fn select_doors<'a>(
+    all: &'a [Border],
+    widest: &[f64],
+    gaps: &[WallGap],
+    params: &ExtractParams,
+    res: f64,
+) -> Vec<&'a Border> {
+    let door_px = params.door_width_max_m / res;
+    let door_min_px = params.door_width_min_m / res;
+    let constriction = |b: &Border| {
+        let (a, c) = (b.pair.0 as usize, b.pair.1 as usize);
+        params.door_constriction * widest[a].min(widest[c])
+    };
+    let gap_at: HashMap<u32, usize> = gaps
+        .iter()
+        .enumerate()
+        .flat_map(|(k, g)| g.line.iter().map(move |&p| (p, k)))
+        .collect();
+    let crosses_gap = |b: &Border| {
+        let mut hits: HashMap<usize, usize> = HashMap::new();
+        for k in b.pixels.iter().filter_map(|p| gap_at.get(p)) {
+            *hits.entry(*k).or_default() += 1;
+        }
+        hits.iter().any(|(&k, &n)| 2 * n >= gaps[k].line.len())
+    };
+    // Pairs of regions that also meet wider than any door: openly joined,
+    // so a narrow stretch between them elsewhere (a nook between furniture
+    // and a wall) is no doorway.
+    let open_pairs: HashSet<(u32, u32)> = all
+        .iter()
+        .filter(|b| b.width_px > door_px)
+        .map(|b| b.pair)
+        .collect();
+    all.iter()
+        .filter(|b| {
+            // A doorway in a wall is a door whatever the widths around it.
+            crosses_gap(b)
+                || (b.width_px >= door_min_px
+                    && b.width_px <= door_px
+                    && b.pixels.len() as f64 >= door_min_px
+                    && b.width_px <= constriction(b)
+                    && !open_pairs.contains(&b.pair))
+        })
+        .collect()
 }
 
 /// The widest inscribed diameter (px) of every label.

@@ -1,0 +1,153 @@
+//! Doors at passage mouths: where two regions meet inside a passage of
+//! even width (a short corridor into a room), the watershed border lies
+//! wherever the two floods happened to meet, often mid-passage. A doorway
+//! is where the passage opens into the wider space, so the passage is given
+//! to the narrower region and the border moves to that mouth.
+
+use std::collections::VecDeque;
+
+use super::doors::Border;
+use crate::imaging::{Labels, Mask, distance_to_background};
+
+/// For each border in `doors`, finds the passage it lies in: the pixels of
+/// its two regions, within `window_px` of the border, that a disk a little
+/// wider than the border cannot reach (the free space opened by that
+/// disk), 4-connected to the border. If the passage is bounded (it stays
+/// inside the window) and opens into the wider region (`widest`, the
+/// widest inscribed diameter of each region), its pixels in the wider
+/// region go to the narrower one. Returns whether any label changed.
+pub(crate) fn give_passages_to_narrow_side(
+    labels: &mut Labels,
+    dist: &[f32],
+    doors: &[&Border],
+    widest: &[f64],
+    window_px: usize,
+) -> bool {
+    let mut changed = false;
+    for door in doors {
+        let (a, b) = door.pair;
+        let (narrow, wide) = if widest[a as usize] <= widest[b as usize] {
+            (a, b)
+        } else {
+            (b, a)
+        };
+        if let Some(passage) = passage(labels, dist, door, window_px) {
+            for p in passage {
+                if labels.data[p] == wide {
+                    labels.data[p] = narrow;
+                    changed = true;
+                }
+            }
+        }
+    }
+    changed
+}
+
+/// The passage pixels (image indices) around `door`'s border, or None if
+/// the passage is unbounded within the window or does not open into both
+/// regions.
+fn passage(labels: &Labels, dist: &[f32], door: &Border, window_px: usize) -> Option<Vec<usize>> {
+    let (w, h) = (labels.width as usize, labels.height as usize);
+    let (a, b) = door.pair;
+    // Disk radius: a little over half the passage width.
+    let r = (door.width_px / 2.0 * 1.15 + 1.0) as f32;
+    let xs = door.pixels.iter().map(|&p| p as usize % w);
+    let ys = door.pixels.iter().map(|&p| p as usize / w);
+    let (x0, x1) = (xs.clone().min()?, xs.max()?);
+    let (y0, y1) = (ys.clone().min()?, ys.max()?);
+    let (x0, y0) = (x0.saturating_sub(window_px), y0.saturating_sub(window_px));
+    let (x1, y1) = ((x1 + window_px + 1).min(w), (y1 + window_px + 1).min(h));
+    let (ww, wh) = (x1 - x0, y1 - y0);
+    let at = |x: usize, y: usize| (y0 + y) * w + x0 + x;
+    // The opening of the free space by the disk: pixels within r of a
+    // pixel at least r from any obstacle.
+    let centres = Mask::from_fn(ww as u32, wh as u32, |x, y| {
+        let i = at(x as usize, y as usize);
+        image::Luma([if labels.data[i] != 0 && dist[i] >= r {
+            0
+        } else {
+            255
+        }])
+    });
+    let to_centre = distance_to_background(&centres);
+    let opened = |x: usize, y: usize| to_centre[y * ww + x] <= r;
+    let mine = |i: usize| labels.data[i] == a || labels.data[i] == b;
+    // The passage: unopened pixels of the two regions joined to the border.
+    let mut seen = vec![false; ww * wh];
+    let mut queue: VecDeque<(usize, usize)> = VecDeque::new();
+    for &p in &door.pixels {
+        let (x, y) = (p as usize % w - x0, p as usize / w - y0);
+        if !opened(x, y) && !seen[y * ww + x] {
+            seen[y * ww + x] = true;
+            queue.push_back((x, y));
+        }
+    }
+    let mut out = Vec::new();
+    // Opened pixels of each region the passage touches.
+    let (mut opens_a, mut opens_b) = (false, false);
+    while let Some((x, y)) = queue.pop_front() {
+        if x == 0 || y == 0 || x + 1 == ww || y + 1 == wh {
+            return None;
+        }
+        out.push(at(x, y));
+        for (nx, ny) in [(x - 1, y), (x + 1, y), (x, y - 1), (x, y + 1)] {
+            let j = at(nx, ny);
+            if !mine(j) {
+                continue;
+            }
+            if opened(nx, ny) {
+                opens_a |= labels.data[j] == a;
+                opens_b |= labels.data[j] == b;
+            } else if !seen[ny * ww + nx] {
+                seen[ny * ww + nx] = true;
+                queue.push_back((nx, ny));
+            }
+        }
+    }
+    (opens_a && opens_b).then_some(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::extract::doors::borders;
+
+    #[test]
+    fn a_door_mid_passage_moves_to_the_mouth_of_the_wider_room() {
+        // A 4-px-wide passage (columns 8-11, rows 8-15) from a 7-px
+        // corridor (rows 1-7, region 1) down into a 13-px room (rows 16-28,
+        // region 2); the two regions meet mid-passage, at row 12.
+        let (w, h) = (20usize, 30usize);
+        let free = |x: usize, y: usize| y < 8 || (8..12).contains(&x) && y < 16 || y >= 16;
+        let mask = Mask::from_fn(w as u32, h as u32, |x, y| {
+            let f = free(x as usize, y as usize) && x > 0 && x < 19 && y > 0 && y < 29;
+            image::Luma([if f { 255 } else { 0 }])
+        });
+        let dist = distance_to_background(&mask);
+        let mut labels = Labels::new(w as u32, h as u32);
+        for y in 0..h {
+            for x in 0..w {
+                if mask.get_pixel(x as u32, y as u32)[0] != 0 {
+                    labels.data[y * w + x] = if y < 12 { 1 } else { 2 };
+                }
+            }
+        }
+        labels.count = 2;
+        let all = borders(&labels, &dist, 2);
+        assert_eq!(all.len(), 1);
+        let widest = [0.0, 7.0, 13.0];
+        assert!(give_passages_to_narrow_side(
+            &mut labels,
+            &dist,
+            &[&all[0]],
+            &widest,
+            12
+        ));
+        // The passage belongs to the corridor now; the border lies at the
+        // room's edge.
+        for y in 1..15 {
+            assert_eq!(labels.data[y * w + 9], 1, "row {y}");
+        }
+        assert_eq!(labels.data[18 * w + 9], 2);
+    }
+}
