@@ -118,7 +118,7 @@ mod tests {
         // corridor (rows 1-7, region 1) down into a 13-px room (rows 16-28,
         // region 2); the two regions meet mid-passage, at row 12.
         let (w, h) = (20usize, 30usize);
-        let free = |x: usize, y: usize| y < 8 || (8..12).contains(&x) && y < 16 || y >= 16;
+        let free = |x: usize, y: usize| !(8..16).contains(&y) || (8..12).contains(&x);
         let mask = Mask::from_fn(w as u32, h as u32, |x, y| {
             let f = free(x as usize, y as usize) && x > 0 && x < 19 && y > 0 && y < 29;
             image::Luma([if f { 255 } else { 0 }])
