@@ -86,7 +86,7 @@ pub struct ExtractParams {
     /// A border is a door only where it is a constriction: at most this
     /// fraction of the widest passage of the narrower space on either side
     /// (so a corridor's own width, between two parts of it, is no door).
-    /// 1 = any border under `door_width_max_m`. Default 0.8.
+    /// 1 = any border under `door_width_max_m`. Default 0.7.
     pub door_constriction: f64,
     /// Stretches of border between the same two spaces closer than this are
     /// one doorway (a speck of noise does not make two doors); farther apart
@@ -137,7 +137,7 @@ impl Default for ExtractParams {
             split_min_core_m2: 1.0,
             door_width_max_m: 1.8,
             door_width_min_m: 0.4,
-            door_constriction: 0.8,
+            door_constriction: 0.7,
             door_join_m: 0.5,
             wall_jamb_m: 0.3,
             wall_gap_width_max_m: 2.1,
