@@ -4,6 +4,13 @@
 //! merge when at least two spaces of A each lie mostly inside it. A part
 //! must be unmatched or matched to the whole itself, and overlap it by at
 //! least `min_part_m2`.
+//!
+//! Doors are measured by their doorway line, not their area (a door strip
+//! a pixel or two deep has none): a door is a part of a space of the other
+//! revision when at least `part_cover` of its doorway line lies inside it
+//! ([`super::door_match`]). Its share of the whole is then its area times
+//! that line share over the whole's area. Door–door pairs are never parts
+//! (doors are matched by doorway instead).
 
 use std::collections::{BTreeMap, HashMap};
 
@@ -21,14 +28,17 @@ pub(crate) fn splits_and_merges(
 ) -> (Vec<Split>, Vec<Merge>) {
     let mut split_parts: BTreeMap<usize, Vec<Part>> = BTreeMap::new();
     let mut merge_parts: BTreeMap<usize, Vec<Part>> = BTreeMap::new();
-    for &(i, j, inter) in &ov.pairs {
+    let mut add = |i: usize, j: usize, inter: f64, door_line: Option<f64>, [split, merge]: [bool; 2]| {
         let (old, new) = (ov.old_ids[i], ov.new_ids[j]);
-        if inter < params.min_part_m2 {
-            continue;
-        }
+        // Area pairs must overlap by `min_part_m2`; a door's line share
+        // stands in for the area share (see the module doc).
+        let covers = |own_area: f64| match door_line {
+            Some(share) => share >= params.part_cover,
+            None => inter >= params.min_part_m2 && inter >= params.part_cover * own_area,
+        };
         // `new` is a part of `old` split.
         let new_free = new_to_old.get(&new).is_none_or(|&o| o == old);
-        if new_free && inter >= params.part_cover * ov.new_area[j] && ov.old_area[i] > 0.0 {
+        if split && new_free && covers(ov.new_area[j]) && ov.old_area[i] > 0.0 {
             split_parts.entry(i).or_default().push(Part {
                 id: new,
                 share: inter / ov.old_area[i],
@@ -36,12 +46,28 @@ pub(crate) fn splits_and_merges(
         }
         // `old` is a part of `new` merged.
         let old_free = old_to_new.get(&old).is_none_or(|&(n, _)| n == new);
-        if old_free && inter >= params.part_cover * ov.old_area[i] && ov.new_area[j] > 0.0 {
+        if merge && old_free && covers(ov.old_area[i]) && ov.new_area[j] > 0.0 {
             merge_parts.entry(j).or_default().push(Part {
                 id: old,
                 share: inter / ov.new_area[j],
             });
         }
+    };
+    for &(i, j, inter) in &ov.pairs {
+        if !ov.old_is_door(i) && !ov.new_is_door(j) {
+            add(i, j, inter, None, [true, true]);
+        }
+    }
+    for &(i, j, share) in &ov.door_shares {
+        // A door of A may only be a part of a merge in B, a door of B only
+        // a part of a split of A.
+        let old_door = ov.old_is_door(i);
+        let door_area = if old_door {
+            ov.old_area[i]
+        } else {
+            ov.new_area[j]
+        };
+        add(i, j, door_area * share, Some(share), [!old_door, old_door]);
     }
     let by_share = |parts: &mut Vec<Part>| {
         parts.sort_by(|x, y| y.share.total_cmp(&x.share).then(x.id.cmp(&y.id)));
