@@ -333,7 +333,10 @@ mod tests {
         let square: Ring = vec![[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
         let hole: Ring = vec![[1.0, 1.0], [3.0, 1.0], [3.0, 3.0], [1.0, 3.0]];
         let rings = [square.clone(), hole];
-        assert_eq!(line_share([[-1.0, 2.0], [3.0, 2.0]], &[square.clone()]), 0.75);
+        assert_eq!(
+            line_share([[-1.0, 2.0], [3.0, 2.0]], std::slice::from_ref(&square)),
+            0.75
+        );
         // Through the hole: inside on [0, 1] and [3, 4] of [−1, 5].
         assert!((line_share([[-1.0, 2.0], [5.0, 2.0]], &rings) - 2.0 / 6.0).abs() < 1e-12);
         assert_eq!(line_share([[0.5, 0.5], [0.5, 0.5]], &rings), 1.0);

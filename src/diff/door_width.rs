@@ -154,7 +154,10 @@ mod tests {
             }
             let (wa, wb) = (turn([0.0, depth / 2.0]), turn([0.9, depth / 2.0]));
             for (p, q) in [(a, wa), (b, wb)] {
-                assert!((p[0] - q[0]).hypot(p[1] - q[1]) < 1e-9, "{depth}: {p:?} {q:?}");
+                assert!(
+                    (p[0] - q[0]).hypot(p[1] - q[1]) < 1e-9,
+                    "{depth}: {p:?} {q:?}"
+                );
             }
         }
     }
