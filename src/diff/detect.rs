@@ -4,9 +4,11 @@
 //!    ([`overlaps`]).
 //! 2. Identity: the optimal one-to-one matching on IoU ≥ `min_iou`
 //!    (Kuhn–Munkres, [`match_overlaps`]), the same rule the store uses to
-//!    keep ids, so a split room's largest part continues it.
-//! 3. Splits and merges by overlap fractions, independent of the matching
-//!    ([`super::split_merge`]).
+//!    keep ids, so a split room's largest part continues it; doors by
+//!    their doorway line (centres within `door_shift_m`) and the spaces
+//!    they join ([`super::door_match`]), whatever their thickness.
+//! 3. Splits and merges by overlap fractions (doors: by the share of their
+//!    doorway line), independent of the matching ([`super::split_merge`]).
 //! 4. Per matched pair: resized (relative and absolute area thresholds,
 //!    not reported for split or merged spaces, whose area change the split
 //!    or merge explains), re-kinded, renamed, door width
@@ -49,6 +51,10 @@ pub struct DiffParams {
     /// A door's width changed when it differs by more than this (default
     /// 0.15 m: three pixels at 0.05 m/px, one and a half at 0.1 m/px).
     pub door_width_tol_m: f64,
+    /// Two doors joining the same spaces are the same door when their
+    /// doorway centres lie at most this far apart (default 0.5 m, as the
+    /// store's matcher; see [`super::door_match`]).
+    pub door_shift_m: f64,
 }
 
 impl Default for DiffParams {
@@ -60,6 +66,7 @@ impl Default for DiffParams {
             part_cover: 0.5,
             min_part_m2: 0.1,
             door_width_tol_m: 0.15,
+            door_shift_m: MatchParams::default().door_shift_m,
         }
     }
 }
@@ -67,7 +74,7 @@ impl Default for DiffParams {
 impl DiffParams {
     /// Checks every threshold's range.
     pub fn validate(&self) -> Result<(), DiffError> {
-        let checks: [(&'static str, f64, bool, &'static str); 6] = [
+        let checks: [(&'static str, f64, bool, &'static str); 7] = [
             (
                 "min_iou",
                 self.min_iou,
@@ -102,6 +109,12 @@ impl DiffParams {
                 "door_width_tol_m",
                 self.door_width_tol_m,
                 self.door_width_tol_m >= 0.0,
+                "must be ≥ 0",
+            ),
+            (
+                "door_shift_m",
+                self.door_shift_m,
+                self.door_shift_m >= 0.0,
                 "must be ≥ 0",
             ),
         ];
@@ -145,6 +158,7 @@ pub(crate) fn diff_with_overlaps(
         ov,
         &MatchParams {
             min_iou: params.min_iou,
+            door_shift_m: params.door_shift_m,
         },
     );
     let old_to_new: HashMap<SpaceId, (SpaceId, f64)> =

@@ -23,12 +23,30 @@ use crate::model::{Point, Space};
 /// assert!((door_width(&door) - 0.9).abs() < 1e-9);
 /// ```
 pub fn door_width(space: &Space) -> f64 {
+    min_rectangle(&convex_hull(&space.polygon)).map_or(0.0, |(width, _)| width)
+}
+
+/// The doorway line of a door space: the midline of its minimum-area
+/// rectangle along the long side, from one jamb to the other. A strip one
+/// pixel or six pixels deep gives the same line; None for an empty
+/// polygon.
+pub(crate) fn doorway(space: &Space) -> Option<[Point; 2]> {
     let hull = convex_hull(&space.polygon);
+    match hull.as_slice() {
+        [] => None,
+        [p] => Some([*p, *p]),
+        _ => min_rectangle(&hull).map(|(_, line)| line),
+    }
+}
+
+/// The minimum-area rectangle around a convex hull (at least two points):
+/// its long side's length and its midline along that side.
+fn min_rectangle(hull: &[Point]) -> Option<(f64, [Point; 2])> {
     let n = hull.len();
     if n < 2 {
-        return 0.0;
+        return None;
     }
-    let mut best = (f64::INFINITY, 0.0);
+    let mut best: Option<(f64, f64, [Point; 2])> = None;
     for i in 0..n {
         let (a, b) = (hull[i], hull[(i + 1) % n]);
         let len = (b[0] - a[0]).hypot(b[1] - a[1]);
@@ -37,7 +55,7 @@ pub fn door_width(space: &Space) -> f64 {
         }
         let (ux, uy) = ((b[0] - a[0]) / len, (b[1] - a[1]) / len);
         let (mut lo_u, mut hi_u, mut lo_v, mut hi_v) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-        for p in &hull {
+        for p in hull {
             let (u, v) = (p[0] * ux + p[1] * uy, -p[0] * uy + p[1] * ux);
             lo_u = lo_u.min(u);
             hi_u = hi_u.max(u);
@@ -45,11 +63,20 @@ pub fn door_width(space: &Space) -> f64 {
             hi_v = hi_v.max(v);
         }
         let (w, h) = (hi_u - lo_u, hi_v - lo_v);
-        if w * h < best.0 {
-            best = (w * h, w.max(h));
+        if best.is_none_or(|(area, _, _)| w * h < area) {
+            // Back from (u, v) to (x, y): x = u·ux − v·uy, y = u·uy + v·ux.
+            let at = |u: f64, v: f64| [u * ux - v * uy, u * uy + v * ux];
+            let line = if w >= h {
+                let v = (lo_v + hi_v) / 2.0;
+                [at(lo_u, v), at(hi_u, v)]
+            } else {
+                let u = (lo_u + hi_u) / 2.0;
+                [at(u, lo_v), at(u, hi_v)]
+            };
+            best = Some((w * h, w.max(h), line));
         }
     }
-    best.1
+    best.map(|(_, width, line)| (width, line))
 }
 
 /// Andrew's monotone chain; counter-clockwise, no repeated point.
@@ -107,5 +134,31 @@ mod tests {
         assert!((door_width(&d) - 1.0).abs() < 1e-9);
         let empty = Space::new(SpaceId(2), SpaceKind::Door, [0.0, 0.0], vec![]);
         assert_eq!(door_width(&empty), 0.0);
+        assert_eq!(doorway(&empty), None);
+    }
+
+    #[test]
+    fn doorway_is_the_midline_whatever_the_depth() {
+        // A 0.9 m doorway at 30°, cut 0.3 m deep and as a line (no area).
+        let (s, c) = 30f64.to_radians().sin_cos();
+        let turn = |[x, y]: Point| [c * x - s * y, s * x + c * y];
+        for depth in [0.3, 0.0] {
+            let ring = [[0.0, 0.0], [0.9, 0.0], [0.9, depth], [0.0, depth]]
+                .map(turn)
+                .to_vec();
+            let door = Space::new(SpaceId(1), SpaceKind::Door, [0.0, 0.0], ring);
+            let [a, b] = doorway(&door).unwrap();
+            let (mut a, mut b) = (a, b);
+            if a[0] > b[0] {
+                std::mem::swap(&mut a, &mut b);
+            }
+            let (wa, wb) = (turn([0.0, depth / 2.0]), turn([0.9, depth / 2.0]));
+            for (p, q) in [(a, wa), (b, wb)] {
+                assert!(
+                    (p[0] - q[0]).hypot(p[1] - q[1]) < 1e-9,
+                    "{depth}: {p:?} {q:?}"
+                );
+            }
+        }
     }
 }

@@ -17,11 +17,19 @@
 //! When a room is split, the larger part keeps the old identity (it has the
 //! larger IoU); when two rooms merge, the merged room continues the one it
 //! overlaps most.
+//!
+//! Doors are matched apart, in three stages: (1) the non-door spaces by
+//! IoU as above; (2) doors to doors by their doorway line and the spaces
+//! they join ([`super::door_match`]: a door strip a pixel or two deep has
+//! almost no area, so overlap cannot tell whether two doors are one);
+//! (3) what is left, a door to a non-door space, by IoU again (a thick
+//! door strip that became part of a room is re-kinded, not replaced).
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::{BTreeMap, BTreeSet, HashMap};
 
 use pathfinding::prelude::{Matrix, kuhn_munkres};
 
+use super::door_match::{DoorSide, door_candidates, door_sides, line_share};
 use super::door_width::convex_hull;
 use super::overlap_area::{Edges, intersection_area_of};
 use crate::model::{Nrg, Point, Ring, Space, SpaceId, polygon_area};
@@ -33,11 +41,21 @@ pub struct MatchParams {
     /// space (0..1). The default 0.2 tolerates a room split in up to
     /// five parts while refusing a room and the door beside it.
     pub min_iou: f64,
+    /// Largest distance in metres between the centres of two doors'
+    /// doorway lines for them to be the same door (they must also join
+    /// the same spaces; see [`super::door_match`]). The default 0.5 m
+    /// absorbs re-cutting and alignment error and a door widened by up to
+    /// a metre on one side; a door moved farther along its wall, or to
+    /// another wall, is removed and added.
+    pub door_shift_m: f64,
 }
 
 impl Default for MatchParams {
     fn default() -> Self {
-        MatchParams { min_iou: 0.2 }
+        MatchParams {
+            min_iou: 0.2,
+            door_shift_m: 0.5,
+        }
     }
 }
 
@@ -48,12 +66,15 @@ pub struct SpaceMatch {
     pub old: SpaceId,
     /// The space's id in the new revision.
     pub new: SpaceId,
-    /// Intersection over union of the two polygons (0..1].
+    /// Intersection over union of the two polygons (0..1]; for doors,
+    /// which are matched by their doorway instead (see the module doc),
+    /// it may be 0: a door strip a pixel or two deep has no area.
     pub iou: f64,
 }
 
 /// Matches the spaces of `new` to the spaces of `old` they continue, by
-/// polygon overlap, one-to-one, maximising the summed IoU. The result is
+/// polygon overlap, one-to-one, maximising the summed IoU; doors by their
+/// doorway and the spaces they join (see the module doc). The result is
 /// sorted by the new id; unmatched spaces are simply absent.
 ///
 /// ```
@@ -73,7 +94,9 @@ pub fn match_spaces(old: &Nrg, new: &Nrg, params: &MatchParams) -> Vec<SpaceMatc
 }
 
 /// The positive-area overlaps between the spaces of two models: every pair
-/// whose polygons share area, with both areas (holes excluded).
+/// whose polygons share area, with both areas (holes excluded); and, for
+/// the doors, their doorway lines and how much of each lies inside the
+/// other model's non-door spaces.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Overlaps {
     /// Ids of the old model's spaces (in its order).
@@ -86,9 +109,27 @@ pub struct Overlaps {
     pub new_area: Vec<f64>,
     /// `(old index, new index, intersection area m²)`, intersection > 0.
     pub pairs: Vec<(usize, usize, f64)>,
+    /// `(old index, new index, share)` for a door of one model and a
+    /// non-door space of the other: the share (0..1] of the door's doorway
+    /// line inside the space, share > 0.
+    pub door_shares: Vec<(usize, usize, f64)>,
+    /// Per old space: its doorway and neighbours when it is a door.
+    pub(crate) old_sides: Vec<Option<DoorSide>>,
+    /// Per new space: its doorway and neighbours when it is a door.
+    pub(crate) new_sides: Vec<Option<DoorSide>>,
 }
 
 impl Overlaps {
+    /// Whether old space `i` is a door.
+    pub fn old_is_door(&self, i: usize) -> bool {
+        self.old_sides.get(i).is_some_and(Option::is_some)
+    }
+
+    /// Whether new space `j` is a door.
+    pub fn new_is_door(&self, j: usize) -> bool {
+        self.new_sides.get(j).is_some_and(Option::is_some)
+    }
+
     /// Intersection over union of pair `(i, j, inter)`.
     pub fn iou(&self, i: usize, j: usize, inter: f64) -> f64 {
         let union = self.old_area[i] + self.new_area[j] - inter;
@@ -105,8 +146,10 @@ impl Overlaps {
 pub fn overlaps(old: &Nrg, new: &Nrg) -> Overlaps {
     let old_shapes: Vec<Shape> = old.spaces().iter().map(Shape::new).collect();
     let new_shapes: Vec<Shape> = new.spaces().iter().map(Shape::new).collect();
+    let (old_sides, new_sides) = (door_sides(old), door_sides(new));
     let grid = BoxGrid::new(&old_shapes);
     let mut pairs: Vec<(usize, usize, f64)> = Vec::new();
+    let mut door_shares: Vec<(usize, usize, f64)> = Vec::new();
     let mut candidates = Vec::new();
     for (j, n) in new_shapes.iter().enumerate() {
         grid.candidates(n, &mut candidates);
@@ -114,6 +157,18 @@ pub fn overlaps(old: &Nrg, new: &Nrg) -> Overlaps {
             let o = &old_shapes[i];
             if !o.bbox_meets(n) {
                 continue;
+            }
+            // A door of one side in a non-door space of the other.
+            let line = match (&old_sides[i], &new_sides[j]) {
+                (Some(d), None) => d.line.map(|l| (l, n)),
+                (None, Some(d)) => d.line.map(|l| (l, o)),
+                _ => None,
+            };
+            if let Some((line, space)) = line {
+                let share = line_share(line, &space.rings);
+                if share > 0.0 {
+                    door_shares.push((i, j, share));
+                }
             }
             let inter = o.intersection_area(n);
             if inter > 0.0 && inter.is_finite() {
@@ -127,30 +182,62 @@ pub fn overlaps(old: &Nrg, new: &Nrg) -> Overlaps {
         old_area: old_shapes.iter().map(|s| s.area).collect(),
         new_area: new_shapes.iter().map(|s| s.area).collect(),
         pairs,
+        door_shares,
+        old_sides,
+        new_sides,
     }
 }
 
 /// The optimal one-to-one matching over precomputed overlaps (see
 /// [`match_spaces`]).
 pub fn match_overlaps(ov: &Overlaps, params: &MatchParams) -> Vec<SpaceMatch> {
-    let edges: Vec<(usize, usize, f64)> = ov
-        .pairs
-        .iter()
-        .map(|&(i, j, inter)| (i, j, ov.iou(i, j, inter)))
-        .filter(|&(_, _, iou)| iou >= params.min_iou && iou > 0.0)
+    let iou_edges = |keep: &dyn Fn(usize, usize) -> bool| -> Vec<(usize, usize, f64)> {
+        ov.pairs
+            .iter()
+            .filter(|&&(i, j, _)| keep(i, j))
+            .map(|&(i, j, inter)| (i, j, ov.iou(i, j, inter)))
+            .filter(|&(_, _, iou)| iou >= params.min_iou && iou > 0.0)
+            .collect()
+    };
+    let (n_old, n_new) = (ov.old_ids.len(), ov.new_ids.len());
+    // 1. Non-door spaces by IoU.
+    let mut pairs = solve(
+        &iou_edges(&|i, j| !ov.old_is_door(i) && !ov.new_is_door(j)),
+        n_old,
+        n_new,
+    );
+    // 2. Doors by their doorway and the spaces they join.
+    let rooms: HashMap<usize, usize> = pairs.iter().map(|&(i, j, _)| (i, j)).collect();
+    let doors = solve(&door_candidates(ov, &rooms, params), n_old, n_new);
+    pairs.extend(doors);
+    // 3. What is left, a door and a non-door space, by IoU.
+    let (old_done, new_done): (BTreeSet<usize>, BTreeSet<usize>) =
+        pairs.iter().map(|&(i, j, _)| (i, j)).unzip();
+    let mixed = iou_edges(&|i, j| {
+        ov.old_is_door(i) != ov.new_is_door(j) && !old_done.contains(&i) && !new_done.contains(&j)
+    });
+    pairs.extend(solve(&mixed, n_old, n_new));
+    let inter: HashMap<(usize, usize), f64> =
+        ov.pairs.iter().map(|&(i, j, a)| ((i, j), a)).collect();
+    let mut matches: Vec<SpaceMatch> = pairs
+        .into_iter()
+        .map(|(i, j, _)| SpaceMatch {
+            old: ov.old_ids[i],
+            new: ov.new_ids[j],
+            iou: inter.get(&(i, j)).map_or(0.0, |&a| ov.iou(i, j, a)),
+        })
         .collect();
-    let mut matches = Vec::new();
-    for component in components(&edges, ov.old_ids.len(), ov.new_ids.len()) {
-        for (i, j, iou) in assign(&component) {
-            matches.push(SpaceMatch {
-                old: ov.old_ids[i],
-                new: ov.new_ids[j],
-                iou,
-            });
-        }
-    }
     matches.sort_by_key(|m| m.new);
     matches
+}
+
+/// The optimal one-to-one assignment over scored edges, component by
+/// component.
+fn solve(edges: &[(usize, usize, f64)], n_old: usize, n_new: usize) -> Vec<(usize, usize, f64)> {
+    components(edges, n_old, n_new)
+        .iter()
+        .flat_map(|c| assign(c))
+        .collect()
 }
 
 /// Intersection over union of two spaces' polygons (holes included), 0
@@ -514,7 +601,14 @@ mod tests {
             rect(10, 0.4, 0.0, 2.4, 1.0),
             rect(11, -0.5, 0.0, 1.5, 1.0),
         ]);
-        let m = match_spaces(&old, &new, &MatchParams { min_iou: 0.1 });
+        let m = match_spaces(
+            &old,
+            &new,
+            &MatchParams {
+                min_iou: 0.1,
+                ..MatchParams::default()
+            },
+        );
         let pairs: Vec<(u32, u32)> = m.iter().map(|m| (m.new.0, m.old.0)).collect();
         assert_eq!(pairs, vec![(10, 2), (11, 1)]);
     }

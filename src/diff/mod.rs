@@ -2,7 +2,9 @@
 //!
 //! Owns the space matcher ([`match_spaces`]: which space of a new revision
 //! continues which space of its parent, by polygon overlap in the map
-//! frame; the store uses it to keep stable ids), the change detector
+//! frame, and doors by their doorway line and the spaces they join, so a
+//! door strip a pixel deep matches as well as a thick one; the store uses
+//! it to keep stable ids), the change detector
 //! ([`diff`] → [`ChangeSet`]: unchanged, added, removed, resized, split,
 //! merged, re-kinded, renamed spaces; connections added, removed and
 //! re-kinded; door width changes), its replay ([`apply`], with
@@ -34,6 +36,7 @@ mod apply;
 mod change_set;
 mod compare;
 mod detect;
+mod door_match;
 mod door_width;
 mod error;
 mod matching;

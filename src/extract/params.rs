@@ -107,7 +107,11 @@ pub struct ExtractParams {
     /// Walls thicker than this hold no doorway gaps (a longer narrow
     /// passage is a corridor). Default 1.2 m.
     pub wall_thickness_max_m: f64,
-    /// Thickness of a door space across the doorway. Default 0.3 m.
+    /// Thickness of a door space across the doorway. Default 0.1 m: a door
+    /// is a transition, and a thick one takes floor from the rooms it
+    /// joins (room recall on the IPA maps 95.98 % at 0.3 m, 96.72 % at
+    /// 0.1 m). The diff matches doors by their doorway line, not their
+    /// area, so thin doors are no harder to follow across revisions.
     pub door_depth_m: f64,
     /// Spaces smaller than this merge into their longest-bordering neighbour
     /// (small rooms above it are kept). Default 1.0 m².
@@ -142,7 +146,7 @@ impl Default for ExtractParams {
             wall_jamb_m: 0.3,
             wall_gap_width_max_m: 2.1,
             wall_thickness_max_m: 1.2,
-            door_depth_m: 0.3,
+            door_depth_m: 0.1,
             min_room_area_m2: 1.0,
             corridor_min_elongation: 2.5,
             simplify_m: 0.05,
