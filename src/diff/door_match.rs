@@ -22,9 +22,10 @@
 //! and they join the same spaces: every non-door space one opens onto
 //! corresponds to one the other opens onto, and back. Spaces correspond
 //! when the IoU matching (run first, on the non-door spaces only) pairs
-//! them, or when the smaller lies at least `min_iou` of its area inside
-//! the larger (a room split or merged around the door is still the room
-//! the door opens onto). Among the candidates the assignment is optimal
+//! them, or when the smaller lies at least `min_iou` of its area (or
+//! 1 m²) inside the larger (a room split or merged around the door, or
+//! one that took over the corridor piece beside it, is still the room the
+//! door opens onto). Among the candidates the assignment is optimal
 //! and one-to-one (Kuhn–Munkres on closeness, 1 − d / 2 `door_shift_m`),
 //! as for the other spaces.
 //!
@@ -141,6 +142,12 @@ pub(crate) fn line_share(line: [Point; 2], rings: &[Ring]) -> f64 {
     share.clamp(0.0, 1.0)
 }
 
+/// Two spaces sharing at least this much floor (m²) correspond for door
+/// matching even when it is under `min_iou` of the smaller: a room that
+/// took over the corridor piece beside a door is still a space the door
+/// opens onto.
+const SHARED_FLOOR_M2: f64 = 1.0;
+
 /// The candidate door pairs `(old index, new index, closeness)` given the
 /// matching of the non-door spaces (`matched`: old index → new index).
 pub(crate) fn door_candidates(
@@ -160,7 +167,7 @@ pub(crate) fn door_candidates(
         let smaller = ov.old_area[i].min(ov.new_area[j]);
         inter
             .get(&(i, j))
-            .is_some_and(|&a| smaller > 0.0 && a >= params.min_iou * smaller)
+            .is_some_and(|&a| smaller > 0.0 && a >= (params.min_iou * smaller).min(SHARED_FLOOR_M2))
     };
     let mut out = Vec::new();
     let reach = params.door_shift_m;
