@@ -56,7 +56,6 @@ pub fn evaluate_simulated(
 
 #[cfg(test)]
 mod tests {
-    use super::*;
     use crate::eval::GroundTruth;
     use crate::model::point_in_ring;
     use crate::sim::{FloorPlan, FloorPlanParams, GreyMap, ground_truth_image};
