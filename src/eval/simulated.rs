@@ -53,3 +53,64 @@ pub fn evaluate_simulated(
         evaluation: evaluate(&gt, &x, grid.resolution),
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::eval::GroundTruth;
+    use crate::model::point_in_ring;
+    use crate::sim::{FloorPlan, FloorPlanParams, GreyMap, ground_truth_image};
+
+    /// A perfect map of `plan` at 0.1 m/px: spaces and doorways free (254),
+    /// the rest occupied.
+    fn perfect_map(plan: &FloorPlan) -> GreyMap {
+        let (b, r) = (plan.bounds(), 0.1);
+        let origin_m = [b[0] - 1.0, b[1] - 1.0];
+        let width = ((b[2] - b[0] + 2.0) / r).ceil() as u32;
+        let height = ((b[3] - b[1] + 2.0) / r).ceil() as u32;
+        let rings: Vec<_> = plan
+            .corridors
+            .iter()
+            .chain(&plan.rooms)
+            .chain(plan.doors.iter().map(|d| &d.polygon))
+            .collect();
+        let mut grey = vec![0u8; (width * height) as usize];
+        for (i, g) in grey.iter_mut().enumerate() {
+            let (col, row) = (i as u32 % width, i as u32 / width);
+            let p = [
+                origin_m[0] + (f64::from(col) + 0.5) * r,
+                origin_m[1] + (f64::from(height - 1 - row) + 0.5) * r,
+            ];
+            if rings.iter().any(|ring| point_in_ring(p, ring)) {
+                *g = 254;
+            }
+        }
+        GreyMap {
+            width,
+            height,
+            resolution_m: r,
+            origin_m,
+            grey,
+        }
+    }
+
+    #[test]
+    fn simulated_ground_truth_has_a_doorway_line_per_door_and_none_elsewhere() {
+        for seed in 1..=4 {
+            let mut params = FloorPlanParams::new(seed);
+            params.wings = (2, 3);
+            let plan = FloorPlan::generate(&params).unwrap();
+            assert!(!plan.openings.is_empty(), "seed {seed}");
+            let map = perfect_map(&plan);
+            let img = ground_truth_image(&plan, &map);
+            let gt = GroundTruth::from_grey(map.width, map.height, &img, &map.grey);
+            // Corridors joined by open passages are one GT room: the
+            // connection GT has no corridor-corridor pair that no door can
+            // ever match, and a space that covers both corridors maps to it.
+            assert_eq!(gt.rooms.count as usize, plan.rooms.len() + 1, "seed {seed}");
+            assert_eq!(gt.doors.len(), plan.doors.len(), "seed {seed}");
+            for line in &gt.doors {
+                assert_eq!(line.rooms.len(), 2, "seed {seed}");
+            }
+        }
+    }
+}

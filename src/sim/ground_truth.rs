@@ -1,7 +1,14 @@
 //! The room-label ground truth in the IPA format (`*_gt.png` of the shared
 //! maps): a copy of the map where every true room and corridor is white
-//! (255) and a black line is drawn across every doorway and corridor
-//! opening, so that each space is its own 8-connected white component.
+//! (255) and a black line is drawn across every doorway, so that each room
+//! is its own 8-connected white component.
+//!
+//! Open passages between corridors get no line: evaluation reads every
+//! black line across free space as a doorway (door recall, the GT's door
+//! connections), and an open passage is none. Corridors joined by open
+//! passages are therefore one GT room, as they are one free region of the
+//! map with no doorway to split it; [`FloorPlan::truth`] still has them as
+//! separate corridors joined by an Open connection.
 
 use super::floor_plan::{FloorPlan, Segment};
 use super::log_odds::GreyMap;
@@ -10,7 +17,8 @@ use crate::model::{Point, point_in_ring};
 /// Grey image (row 0 at the top, same size and frame as `map`): map
 /// pixels > 250 outside the true spaces become 205 (so only spaces are
 /// white), pixels whose centre lies in a room, corridor or door space
-/// become 255, then door and opening lines are drawn black, 2 px wide.
+/// become 255, then a line is drawn black, 2 px wide, across every door
+/// (not across the open passages between corridors, see the module doc).
 pub fn ground_truth_image(plan: &FloorPlan, map: &GreyMap) -> Vec<u8> {
     let mut gt: Vec<u8> = map
         .grey
@@ -27,7 +35,7 @@ pub fn ground_truth_image(plan: &FloorPlan, map: &GreyMap) -> Vec<u8> {
     }
     let half = map.resolution_m * 1.01;
     let ext = plan.wall_thickness_m / 2.0;
-    let mut lines: Vec<Segment> = plan
+    let lines: Vec<Segment> = plan
         .doors
         .iter()
         .map(|d| {
@@ -36,7 +44,6 @@ pub fn ground_truth_image(plan: &FloorPlan, map: &GreyMap) -> Vec<u8> {
             [mid(f[0], g[0]), mid(f[1], g[1])]
         })
         .collect();
-    lines.extend(plan.openings.iter().map(|o| o.segment));
     for s in lines {
         let Some(s) = extend(s, ext) else { continue };
         let b = bbox(&s);
@@ -114,6 +121,47 @@ fn segment_distance(p: Point, s: Segment) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::sim::FloorPlanParams;
+
+    /// A map of `plan` that is free (254) everywhere, 0.05 m/px, 1 m border.
+    fn free_map(plan: &FloorPlan) -> GreyMap {
+        let b = plan.bounds();
+        let r = 0.05;
+        let origin_m = [b[0] - 1.0, b[1] - 1.0];
+        let width = ((b[2] - b[0] + 2.0) / r).ceil() as u32;
+        let height = ((b[3] - b[1] + 2.0) / r).ceil() as u32;
+        GreyMap {
+            width,
+            height,
+            resolution_m: r,
+            origin_m,
+            grey: vec![254; (width * height) as usize],
+        }
+    }
+
+    fn pixel(map: &GreyMap, img: &[u8], p: Point) -> u8 {
+        let col = ((p[0] - map.origin_m[0]) / map.resolution_m).floor() as usize;
+        let up = ((p[1] - map.origin_m[1]) / map.resolution_m).floor() as usize;
+        img[(map.height as usize - 1 - up) * map.width as usize + col]
+    }
+
+    #[test]
+    fn doorways_are_closed_but_open_passages_are_not() {
+        let mut params = FloorPlanParams::new(1);
+        params.wings = (2, 2);
+        let plan = FloorPlan::generate(&params).unwrap();
+        assert_eq!(plan.openings.len(), 1);
+        let map = free_map(&plan);
+        let gt = ground_truth_image(&plan, &map);
+        for d in &plan.doors {
+            assert_eq!(pixel(&map, &gt, d.centre()), 0, "door at {:?}", d.centre());
+        }
+        // The middle of the passage between the two corridors stays white:
+        // no doorway there, the corridors are one GT room.
+        let [a, b] = plan.openings[0].segment;
+        let mid = [(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0];
+        assert_eq!(pixel(&map, &gt, mid), 255);
+    }
 
     #[test]
     fn distance_to_segment_clamps_to_ends() {
