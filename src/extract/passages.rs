@@ -51,6 +51,9 @@ fn passage(labels: &Labels, dist: &[f32], door: &Border, window_px: usize) -> Op
     let (a, b) = door.pair;
     // Disk radius: a little over half the passage width.
     let r = (door.width_px / 2.0 * 1.15 + 1.0) as f32;
+    if !long_passage(labels, dist, door, r, window_px / 3) {
+        return None;
+    }
     let xs = door.pixels.iter().map(|&p| p as usize % w);
     let ys = door.pixels.iter().map(|&p| p as usize / w);
     let (x0, x1) = (xs.clone().min()?, xs.max()?);
@@ -107,6 +110,55 @@ fn passage(labels: &Labels, dist: &[f32], door: &Border, window_px: usize) -> Op
     (opens_a && opens_b).then_some(out)
 }
 
+/// Whether the passage through `door`'s border runs on for more than
+/// `min_px` (counting both sides): walking both ways across the border from
+/// its widest point, over labelled pixels no farther than `r` from an
+/// obstacle. A doorway through a thin wall opens out within a few pixels
+/// and is left as it is, which spares the opening of a window per door.
+fn long_passage(labels: &Labels, dist: &[f32], door: &Border, r: f32, min_px: usize) -> bool {
+    let w = labels.width as usize;
+    let n = door.pixels.len() as f64;
+    let xy = |p: u32| ((p as usize % w) as f64, (p as usize / w) as f64);
+    let (mx, my) = door
+        .pixels
+        .iter()
+        .map(|&p| xy(p))
+        .fold((0.0, 0.0), |(sx, sy), (x, y)| (sx + x / n, sy + y / n));
+    // The border's direction (principal axis); the walk goes across it.
+    let (sxx, syy, sxy) =
+        door.pixels
+            .iter()
+            .map(|&p| xy(p))
+            .fold((0.0, 0.0, 0.0), |(a, b, c), (x, y)| {
+                let (dx, dy) = (x - mx, y - my);
+                (a + dx * dx, b + dy * dy, c + dx * dy)
+            });
+    let along = 0.5 * (2.0 * sxy).atan2(sxx - syy);
+    let (ux, uy) = (-along.sin(), along.cos());
+    let Some(&start) = door
+        .pixels
+        .iter()
+        .max_by(|&&p, &&q| dist[p as usize].total_cmp(&dist[q as usize]))
+    else {
+        return false;
+    };
+    let (x0, y0) = xy(start);
+    let h = labels.height as f64;
+    let walk = |sign: f64| {
+        (1..=min_px)
+            .take_while(|&k| {
+                let (x, y) = (x0 + sign * ux * k as f64, y0 + sign * uy * k as f64);
+                if x < 0.0 || y < 0.0 || x >= w as f64 || y >= h {
+                    return false;
+                }
+                let i = y.round() as usize * w + x.round() as usize;
+                i < labels.data.len() && labels.data[i] != 0 && dist[i] <= r
+            })
+            .count()
+    };
+    walk(1.0) + walk(-1.0) >= min_px
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -149,5 +201,38 @@ mod tests {
             assert_eq!(labels.data[y * w + 9], 1, "row {y}");
         }
         assert_eq!(labels.data[18 * w + 9], 2);
+    }
+
+    #[test]
+    fn a_doorway_through_a_thin_wall_stays_put() {
+        // Two rooms (rows 1-9 and 11-28) joined by a 4-px doorway through a
+        // one-pixel wall at row 10: no passage to move the door along.
+        let (w, h) = (20usize, 30usize);
+        let mask = Mask::from_fn(w as u32, h as u32, |x, y| {
+            let wall = y == 10 && !(8..12).contains(&x);
+            let f = !wall && x > 0 && x < 19 && y > 0 && y < 29;
+            image::Luma([if f { 255 } else { 0 }])
+        });
+        let dist = distance_to_background(&mask);
+        let mut labels = Labels::new(w as u32, h as u32);
+        for y in 0..h {
+            for x in 0..w {
+                if mask.get_pixel(x as u32, y as u32)[0] != 0 {
+                    labels.data[y * w + x] = if y <= 10 { 1 } else { 2 };
+                }
+            }
+        }
+        labels.count = 2;
+        let all = borders(&labels, &dist, 2);
+        let before = labels.clone();
+        let widest = [0.0, 9.0, 18.0];
+        assert!(!give_passages_to_narrow_side(
+            &mut labels,
+            &dist,
+            &[&all[0]],
+            &widest,
+            12
+        ));
+        assert_eq!(labels.data, before.data);
     }
 }
