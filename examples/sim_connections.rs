@@ -7,12 +7,12 @@
 //! cargo run --release --example sim_connections -- SEED [--furnished] [--picture P.png]
 //! ```
 
-use std::collections::{BTreeMap, BTreeSet, HashMap};
+use std::collections::HashMap;
 
-use nrgdb::eval::{connection_scores, evaluation_picture, load_ground_truth};
+use nrgdb::eval::{connection_pairs, connection_scores, evaluation_picture, load_ground_truth};
 use nrgdb::extract::{ExtractParams, extract};
 use nrgdb::grid::{LoadOptions, load_map};
-use nrgdb::model::{ConnectionKind, SpaceKind, point_in_ring};
+use nrgdb::model::{SpaceKind, point_in_ring};
 use nrgdb::sim::{SimParams, simulate, write_simulation};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -72,7 +72,6 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for l in 1..=gt.rooms.count {
         println!("  gt {l}: {}", name(l));
     }
-    let mut gt_pairs = BTreeSet::new();
     println!("GT doorway lines: {}", gt.doors.len());
     for d in &gt.doors {
         let p = d.pixels[0];
@@ -83,11 +82,6 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             p / w,
             d.rooms
         );
-        for (i, &a) in d.rooms.iter().enumerate() {
-            for &b in &d.rooms[i + 1..] {
-                gt_pairs.insert((a.min(b), a.max(b)));
-            }
-        }
     }
     println!(
         "plan: {} corridors, {} rooms, {} doors, {} openings",
@@ -96,56 +90,26 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         b.plan.doors.len(),
         b.plan.openings.len()
     );
-    // best GT label per extracted label
-    let mut overlap: HashMap<(u32, u32), usize> = HashMap::new();
-    for (&s, &g) in x.labels.data.iter().zip(&gt.rooms.data) {
-        if s != 0 && g != 0 {
-            *overlap.entry((s, g)).or_insert(0) += 1;
-        }
-    }
-    let mut best: BTreeMap<u32, (usize, u32)> = BTreeMap::new();
-    for (&(s, g), &c) in &overlap {
-        let e = best.entry(s).or_insert((0, 0));
-        if (c, g) > *e {
-            *e = (c, g);
-        }
-    }
+    let pairs = connection_pairs(&gt, &x);
     println!("extracted spaces:");
     for s in x.nrg.spaces() {
         println!(
             "  {} {} -> gt {:?} conns {:?}",
             s.id,
             s.kind,
-            best.get(&s.id.0),
+            pairs.best_room.get(s.id.0 as usize),
             x.nrg
                 .connections_of(s.id)
                 .map(|c| (c.other(s.id).map(|o| o.0), c.kind.to_string()))
                 .collect::<Vec<_>>()
         );
     }
-    let mut det_pairs = BTreeSet::new();
-    for door in x.nrg.spaces().iter().filter(|s| s.kind == SpaceKind::Door) {
-        let sides: Vec<u32> = x
-            .nrg
-            .connections_of(door.id)
-            .filter(|c| c.kind == ConnectionKind::Door)
-            .filter_map(|c| c.other(door.id))
-            .filter_map(|o| best.get(&o.0).map(|b| b.1))
-            .collect();
-        for (i, &a) in sides.iter().enumerate() {
-            for &b in &sides[i + 1..] {
-                if a != b {
-                    det_pairs.insert((a.min(b), a.max(b)));
-                }
-            }
-        }
-    }
     println!("GT pairs not detected:");
-    for p in gt_pairs.difference(&det_pairs) {
+    for p in pairs.gt.difference(&pairs.detected) {
         println!("  {p:?} {} <-> {}", name(p.0), name(p.1));
     }
     println!("detected pairs not in GT:");
-    for p in det_pairs.difference(&gt_pairs) {
+    for p in pairs.detected.difference(&pairs.gt) {
         println!("  {p:?} {} <-> {}", name(p.0), name(p.1));
     }
     let c = connection_scores(&gt, &x);

@@ -182,10 +182,21 @@ fn detection(matched_gt: usize, gt: usize, matched_det: usize, detected: usize) 
     }
 }
 
-/// Connection recall/precision: GT room pairs joined by a doorway line
-/// against pairs of spaces joined through a detected door, each space mapped
-/// to the GT room it overlaps most.
-pub fn connection_scores(gt: &GroundTruth, x: &Extraction) -> Detection {
+/// The room pairs behind [`connection_scores`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct ConnectionPairs {
+    /// GT room pairs joined by a doorway line.
+    pub gt: BTreeSet<(u32, u32)>,
+    /// GT room pairs joined through a detected door.
+    pub detected: BTreeSet<(u32, u32)>,
+    /// The GT room each extracted space overlaps most (index = label; 0 =
+    /// none).
+    pub best_room: Vec<u32>,
+}
+
+/// The GT room pairs joined by a doorway line and those joined through a
+/// detected door, each space mapped to the GT room it overlaps most.
+pub fn connection_pairs(gt: &GroundTruth, x: &Extraction) -> ConnectionPairs {
     let mut gt_pairs: BTreeSet<(u32, u32)> = BTreeSet::new();
     for line in &gt.doors {
         for (i, &a) in line.rooms.iter().enumerate() {
@@ -225,8 +236,20 @@ pub fn connection_scores(gt: &GroundTruth, x: &Extraction) -> Detection {
             }
         }
     }
-    let hit = det_pairs.intersection(&gt_pairs).count();
-    detection(hit, gt_pairs.len(), hit, det_pairs.len())
+    ConnectionPairs {
+        gt: gt_pairs,
+        detected: det_pairs,
+        best_room: best.into_iter().map(|b| b.1).collect(),
+    }
+}
+
+/// Connection recall/precision: GT room pairs joined by a doorway line
+/// against pairs of spaces joined through a detected door, each space mapped
+/// to the GT room it overlaps most.
+pub fn connection_scores(gt: &GroundTruth, x: &Extraction) -> Detection {
+    let pairs = connection_pairs(gt, x);
+    let hit = pairs.detected.intersection(&pairs.gt).count();
+    detection(hit, pairs.gt.len(), hit, pairs.detected.len())
 }
 
 /// Per label of the extraction's label image (index = label): whether it

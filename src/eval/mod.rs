@@ -16,8 +16,9 @@ mod simulated;
 pub use error::EvalError;
 pub use ground_truth::{DoorLine, GroundTruth, load_ground_truth};
 pub use metrics::{
-    Detection, DoorMatches, Evaluation, RoomScores, connection_scores, door_centroids,
-    door_matches, door_radius_px, door_scores, evaluate, room_scores,
+    ConnectionPairs, Detection, DoorMatches, Evaluation, RoomScores, connection_pairs,
+    connection_scores, door_centroids, door_matches, door_radius_px, door_scores, evaluate,
+    room_scores,
 };
 pub use picture::{DOOR_RIGHT, DOOR_WRONG, LINE_FOUND, LINE_MISSED, evaluation_picture};
 pub use simulated::{SimulatedScore, evaluate_simulated};

@@ -164,27 +164,32 @@ mod tests {
     use super::*;
     use crate::extract::doors::borders;
 
-    #[test]
-    fn a_door_mid_passage_moves_to_the_mouth_of_the_wider_room() {
-        // A 4-px-wide passage (columns 8-11, rows 8-15) from a 7-px
-        // corridor (rows 1-7, region 1) down into a 13-px room (rows 16-28,
-        // region 2); the two regions meet mid-passage, at row 12.
+    /// A 20 × 30 map, free where `free(x, y)` inside a one-pixel frame,
+    /// labelled 1 above row `split` and 2 from it on; with its distances.
+    fn two_regions(free: impl Fn(usize, usize) -> bool, split: usize) -> (Labels, Vec<f32>) {
         let (w, h) = (20usize, 30usize);
-        let free = |x: usize, y: usize| !(8..16).contains(&y) || (8..12).contains(&x);
         let mask = Mask::from_fn(w as u32, h as u32, |x, y| {
             let f = free(x as usize, y as usize) && x > 0 && x < 19 && y > 0 && y < 29;
             image::Luma([if f { 255 } else { 0 }])
         });
         let dist = distance_to_background(&mask);
         let mut labels = Labels::new(w as u32, h as u32);
-        for y in 0..h {
-            for x in 0..w {
-                if mask.get_pixel(x as u32, y as u32)[0] != 0 {
-                    labels.data[y * w + x] = if y < 12 { 1 } else { 2 };
-                }
+        for (i, l) in labels.data.iter_mut().enumerate() {
+            if mask.as_raw()[i] != 0 {
+                *l = if i / w < split { 1 } else { 2 };
             }
         }
         labels.count = 2;
+        (labels, dist)
+    }
+
+    #[test]
+    fn a_door_mid_passage_moves_to_the_mouth_of_the_wider_room() {
+        // A 4-px-wide passage (columns 8-11, rows 8-15) from a 7-px
+        // corridor (rows 1-7, region 1) down into a 13-px room (rows 16-28,
+        // region 2); the two regions meet mid-passage, at row 12.
+        let (mut labels, dist) =
+            two_regions(|x, y| !(8..16).contains(&y) || (8..12).contains(&x), 12);
         let all = borders(&labels, &dist, 2);
         assert_eq!(all.len(), 1);
         let widest = [0.0, 7.0, 13.0];
@@ -198,31 +203,16 @@ mod tests {
         // The passage belongs to the corridor now; the border lies at the
         // room's edge.
         for y in 1..15 {
-            assert_eq!(labels.data[y * w + 9], 1, "row {y}");
+            assert_eq!(labels.data[y * 20 + 9], 1, "row {y}");
         }
-        assert_eq!(labels.data[18 * w + 9], 2);
+        assert_eq!(labels.data[18 * 20 + 9], 2);
     }
 
     #[test]
     fn a_doorway_through_a_thin_wall_stays_put() {
         // Two rooms (rows 1-9 and 11-28) joined by a 4-px doorway through a
         // one-pixel wall at row 10: no passage to move the door along.
-        let (w, h) = (20usize, 30usize);
-        let mask = Mask::from_fn(w as u32, h as u32, |x, y| {
-            let wall = y == 10 && !(8..12).contains(&x);
-            let f = !wall && x > 0 && x < 19 && y > 0 && y < 29;
-            image::Luma([if f { 255 } else { 0 }])
-        });
-        let dist = distance_to_background(&mask);
-        let mut labels = Labels::new(w as u32, h as u32);
-        for y in 0..h {
-            for x in 0..w {
-                if mask.get_pixel(x as u32, y as u32)[0] != 0 {
-                    labels.data[y * w + x] = if y <= 10 { 1 } else { 2 };
-                }
-            }
-        }
-        labels.count = 2;
+        let (mut labels, dist) = two_regions(|x, y| y != 10 || (8..12).contains(&x), 11);
         let all = borders(&labels, &dist, 2);
         let before = labels.clone();
         let widest = [0.0, 9.0, 18.0];
