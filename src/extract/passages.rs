@@ -148,11 +148,12 @@ fn long_passage(labels: &Labels, dist: &[f32], door: &Border, r: f32, min_px: us
         (1..=min_px)
             .take_while(|&k| {
                 let (x, y) = (x0 + sign * ux * k as f64, y0 + sign * uy * k as f64);
+                let (x, y) = (x.round(), y.round());
                 if x < 0.0 || y < 0.0 || x >= w as f64 || y >= h {
                     return false;
                 }
-                let i = y.round() as usize * w + x.round() as usize;
-                i < labels.data.len() && labels.data[i] != 0 && dist[i] <= r
+                let i = y as usize * w + x as usize;
+                labels.data[i] != 0 && dist[i] <= r
             })
             .count()
     };

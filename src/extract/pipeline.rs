@@ -157,16 +157,20 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     let join_px = (params.door_join_m / res).round() as i64;
     let all = borders(&regions, &dist, join_px);
     let widest = widest_passages(&regions, &dist);
-    let doors = select_doors(&all, &widest, &gaps, params, res);
-    // Doors found mid-passage move to the passage's mouth.
+    let first = select_doors(&all, &widest, &gaps, params, res);
+    // Doors found mid-passage move to the passage's mouth; the borders and
+    // doors are found again only if one did.
     let window_px = (2.0 * params.door_width_max_m / res).ceil() as usize;
-    let all = if give_passages_to_narrow_side(&mut regions, &dist, &doors, &widest, window_px) {
-        borders(&regions, &dist, join_px)
+    let first_doors: Vec<&Border> = first.iter().map(|&k| &all[k]).collect();
+    let moved = give_passages_to_narrow_side(&mut regions, &dist, &first_doors, &widest, window_px);
+    let (all, chosen) = if moved {
+        let all = borders(&regions, &dist, join_px);
+        let chosen = select_doors(&all, &widest_passages(&regions, &dist), &gaps, params, res);
+        (all, chosen)
     } else {
-        all
+        (all, first)
     };
-    let widest = widest_passages(&regions, &dist);
-    let doors = select_doors(&all, &widest, &gaps, params, res);
+    let doors: Vec<&Border> = chosen.iter().map(|&k| &all[k]).collect();
     let door_pairs: Vec<(u32, u32)> = doors.iter().map(|b| b.pair).collect();
     let n_regions = regions.count;
     let mut labels = cut_doors(&regions, &doors, (params.door_depth_m / res).max(1.0));
@@ -206,18 +210,18 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     })
 }
 
-/// The borders of `all` that are doors: those along a doorway gap's line,
-/// and those between `door_width_min_m` and `door_width_max_m` wide that
-/// are a constriction of the narrower region (`widest`: each region's
+/// The indices of the borders of `all` that are doors: those along a
+/// doorway gap's line, and those between `door_width_min_m` and
+/// `door_width_max_m` wide that are a constriction of the narrower region (`widest`: each region's
 /// widest inscribed diameter, px) and whose regions do not also meet wider
 /// than any door.
-fn select_doors<'a>(
-    all: &'a [Border],
+fn select_doors(
+    all: &[Border],
     widest: &[f64],
     gaps: &[WallGap],
     params: &ExtractParams,
     res: f64,
-) -> Vec<&'a Border> {
+) -> Vec<usize> {
     let door_px = params.door_width_max_m / res;
     let door_min_px = params.door_width_min_m / res;
     let constriction = |b: &Border| {
@@ -244,8 +248,9 @@ fn select_doors<'a>(
         .filter(|b| b.width_px > door_px)
         .map(|b| b.pair)
         .collect();
-    all.iter()
-        .filter(|b| {
+    (0..all.len())
+        .filter(|&k| {
+            let b = &all[k];
             // A doorway in a wall is a door whatever the widths around it.
             crosses_gap(b)
                 || (b.width_px >= door_min_px

@@ -185,21 +185,21 @@ fn scan(
             // reaches a jamb past the doorway's thickness (a doorway beside
             // a corner, a cubicle's open front); never a speck.
             let mid = first + depth / 2;
-            let along = |ks: &dyn Fn() -> Box<dyn Iterator<Item = usize>>| {
-                (first..=last).any(|l| {
-                    ks().take(limits.jamb)
-                        .take_while(|&k| !is_free(l, k))
-                        .count()
-                        >= limits.jamb
+            // A jamb's length of wall from `k` on, stepping by `step`.
+            let wall_from = |l: usize, k: usize, step: isize| {
+                (0..limits.jamb as isize).all(|i| {
+                    k.checked_add_signed(step * i)
+                        .is_some_and(|k| k < len && !is_free(l, k))
                 })
             };
+            let along = |k: usize, step: isize| (first..=last).any(|l| wall_from(l, k, step));
             let across = |k: usize| {
                 let up = (0..=mid).rev().take_while(|&l| !is_free(l, k)).count();
                 let down = (mid + 1..lines).take_while(|&l| !is_free(l, k)).count();
                 up + down >= depth + limits.jamb
             };
-            let left_jamb = lo > 0 && (along(&|| Box::new((0..lo).rev())) || across(lo - 1));
-            let right_jamb = hi < len && (along(&|| Box::new(hi..len)) || across(hi));
+            let left_jamb = lo > 0 && (along(lo - 1, -1) || across(lo - 1));
+            let right_jamb = hi < len && (along(hi, 1) || across(hi));
             if depth <= limits.depth && wide_enough && faces_open && left_jamb && right_jamb {
                 out.push(WallGap {
                     line: (lo..hi).map(|k| index(mid, k)).collect(),
