@@ -1,4 +1,5 @@
-//! Merging regions smaller than a minimum area into a neighbour.
+//! Merging regions: those smaller than a minimum area into a neighbour,
+//! and given pairs into one.
 
 use std::cmp::Reverse;
 use std::collections::{BTreeMap, BinaryHeap};
@@ -66,6 +67,30 @@ pub(crate) fn merge_small(labels: &mut Labels, min_px: usize) {
     labels.compact();
 }
 
+/// Merges each pair of regions into one, transitively; then renumbers.
+pub(crate) fn merge_pairs(labels: &mut Labels, pairs: &[(u32, u32)]) {
+    let n = labels.count as usize + 1;
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    fn find(parent: &mut [u32], mut l: u32) -> u32 {
+        while parent[l as usize] != l {
+            parent[l as usize] = parent[parent[l as usize] as usize];
+            l = parent[l as usize];
+        }
+        l
+    }
+    for &(a, b) in pairs {
+        let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
+        if ra != rb {
+            parent[ra.max(rb) as usize] = ra.min(rb);
+        }
+    }
+    let root: Vec<u32> = (0..n as u32).map(|l| find(&mut parent, l)).collect();
+    for v in &mut labels.data {
+        *v = root[*v as usize];
+    }
+    labels.compact();
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -82,5 +107,18 @@ mod tests {
         // 2 (2 px) joins 3? no: 3 is also small; 2 borders 1 and 3 equally, larger wins.
         assert_eq!(l.data[2], l.data[0]);
         assert_eq!(l.count, 1);
+    }
+
+    #[test]
+    fn pairs_merge_transitively() {
+        let mut l = Labels {
+            width: 5,
+            height: 1,
+            data: vec![1, 2, 3, 4, 0],
+            count: 4,
+        };
+        merge_pairs(&mut l, &[(3, 2), (2, 1)]);
+        assert_eq!(l.data, vec![1, 1, 1, 2, 0]);
+        assert_eq!(l.count, 2);
     }
 }

@@ -21,6 +21,7 @@ mod error;
 mod furniture;
 mod graph;
 mod interior;
+mod joins;
 mod merge;
 mod output;
 mod params;

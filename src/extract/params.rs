@@ -113,6 +113,15 @@ pub struct ExtractParams {
     /// 0.1 m). The diff matches doors by their doorway line, not their
     /// area, so thin doors are no harder to follow across revisions.
     pub door_depth_m: f64,
+    /// Two regions of the watershed that meet across a border no doorway
+    /// divides are one space: a border wider than `door_width_max_m` at
+    /// least this fraction of the narrower region's widest inscribed
+    /// diameter, or a narrower border that is no constriction (see
+    /// `door_constriction`), and no doorway gap. Such borders are where the
+    /// floods of a corridor loop or an open hall met. 0 turns this off.
+    /// Default 0.5: room recall on the IPA maps 96.90 % kept apart, 97.67 %
+    /// joined.
+    pub open_join_fraction: f64,
     /// Spaces smaller than this merge into their longest-bordering neighbour
     /// (small rooms above it are kept). Default 1.0 m².
     pub min_room_area_m2: f64,
@@ -147,6 +156,7 @@ impl Default for ExtractParams {
             wall_gap_width_max_m: 2.1,
             wall_thickness_max_m: 1.2,
             door_depth_m: 0.1,
+            open_join_fraction: 0.5,
             min_room_area_m2: 1.0,
             corridor_min_elongation: 2.5,
             simplify_m: 0.05,
@@ -175,6 +185,7 @@ impl ExtractParams {
             ("wall_gap_width_max_m", self.wall_gap_width_max_m),
             ("wall_thickness_max_m", self.wall_thickness_max_m),
             ("door_depth_m", self.door_depth_m),
+            ("open_join_fraction", self.open_join_fraction),
             ("min_room_area_m2", self.min_room_area_m2),
             ("corridor_min_elongation", self.corridor_min_elongation),
             ("simplify_m", self.simplify_m),

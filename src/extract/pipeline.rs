@@ -1,5 +1,5 @@
-//! The extraction pipeline: clean → distance → segment → merge → doors →
-//! graph → polygons → [`Nrg`].
+//! The extraction pipeline: clean → distance → segment → merge (small
+//! regions, open joins) → doors → graph → polygons → [`Nrg`].
 
 use std::collections::{BTreeMap, HashMap, HashSet};
 use std::time::{Duration, Instant};
@@ -9,7 +9,8 @@ use super::clean::clean_free;
 use super::doors::{Border, borders, cut_doors};
 use super::graph::topology;
 use super::interior::{claim_enclosed_unknown, fill_specks};
-use super::merge::merge_small;
+use super::joins::{JoinLimits, open_joins};
+use super::merge::{merge_pairs, merge_small};
 use super::passages::give_passages_to_narrow_side;
 use super::polygon::{bounding_boxes, outline};
 use super::resample::{coarsen, pixel_centroids, refine};
@@ -153,10 +154,23 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         (params.min_room_area_m2 / (res * res)).ceil() as usize,
     );
     reopen_gaps(&mut regions, &gaps);
-    clock.lap("merge");
     let join_px = (params.door_join_m / res).round() as i64;
-    let all = borders(&regions, &dist, join_px);
-    let widest = widest_passages(&regions, &dist);
+    let mut all = borders(&regions, &dist, join_px);
+    let mut widest = widest_passages(&regions, &dist);
+    let gap_px: HashSet<u32> = gaps.iter().flat_map(|g| g.line.iter().copied()).collect();
+    let limits = JoinLimits {
+        door_min_px: params.door_width_min_m / res,
+        door_max_px: params.door_width_max_m / res,
+        constriction: params.door_constriction,
+        fraction: params.open_join_fraction,
+    };
+    let joins = open_joins(&all, &widest, &gap_px, &limits);
+    if !joins.is_empty() {
+        merge_pairs(&mut regions, &joins);
+        all = borders(&regions, &dist, join_px);
+        widest = widest_passages(&regions, &dist);
+    }
+    clock.lap("merge");
     let first = select_doors(&all, &widest, &gaps, params, res);
     // Doors found mid-passage move to the passage's mouth; the borders and
     // doors are found again only if one did.

@@ -1,0 +1,103 @@
+//! Open joins: watershed regions that meet where no doorway divides them
+//! (the two halves of a corridor loop, the parts of an open hall) are one
+//! space.
+
+use std::collections::HashSet;
+
+use super::doors::Border;
+
+/// What makes a border an open join rather than a possible door, in pixels.
+pub(crate) struct JoinLimits {
+    /// Narrowest border that can be a doorway (`door_width_min_m`).
+    pub door_min_px: f64,
+    /// Widest border that can be a doorway (`door_width_max_m`).
+    pub door_max_px: f64,
+    /// `door_constriction`: a door-wide border wider than this fraction of
+    /// the narrower region's widest diameter is no doorway.
+    pub constriction: f64,
+    /// `open_join_fraction`: a border wider than any door at least this
+    /// fraction of the narrower region's widest diameter joins; 0 = never
+    /// join.
+    pub fraction: f64,
+}
+
+/// The region pairs of `all` to merge: pairs with a border that crosses no
+/// doorway-gap pixel (`gap_px`) and is either wider than any door and at
+/// least `fraction` of the narrower region's widest inscribed diameter
+/// (`widest`, px), or door-wide but no constriction of the narrower region.
+pub(crate) fn open_joins(
+    all: &[Border],
+    widest: &[f64],
+    gap_px: &HashSet<u32>,
+    limits: &JoinLimits,
+) -> Vec<(u32, u32)> {
+    if limits.fraction <= 0.0 {
+        return Vec::new();
+    }
+    let mut pairs: Vec<(u32, u32)> = all
+        .iter()
+        .filter(|b| {
+            let narrow = widest[b.pair.0 as usize].min(widest[b.pair.1 as usize]);
+            let w = b.width_px;
+            let wide_open = w > limits.door_max_px && w >= limits.fraction * narrow;
+            let no_constriction = w >= limits.door_min_px
+                && w <= limits.door_max_px
+                && w > limits.constriction * narrow;
+            (wide_open || no_constriction) && !b.pixels.iter().any(|p| gap_px.contains(p))
+        })
+        .map(|b| b.pair)
+        .collect();
+    pairs.dedup();
+    pairs
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn border(pair: (u32, u32), width_px: f64, pixels: Vec<u32>) -> Border {
+        Border {
+            pair,
+            width_px,
+            pixels,
+        }
+    }
+
+    const LIMITS: JoinLimits = JoinLimits {
+        door_min_px: 8.0,
+        door_max_px: 36.0,
+        constriction: 0.7,
+        fraction: 0.5,
+    };
+
+    #[test]
+    fn only_borders_no_doorway_divides_join() {
+        // Regions 1 and 2 are 40 px wide at most, 3 is 100 px wide.
+        let widest = [0.0, 40.0, 40.0, 100.0, 100.0];
+        let all = [
+            // A corridor's own width between two parts of it: joins.
+            border((1, 2), 32.0, vec![1, 2]),
+            // A doorway-wide constriction: may be a door, stays.
+            border((1, 3), 20.0, vec![3, 4]),
+            // Wider than any door but a strong constriction: stays.
+            border((3, 4), 40.0, vec![5, 6]),
+            // Wider than any door, more than half the hall: joins.
+            border((3, 4), 60.0, vec![7, 8]),
+        ];
+        let joins = open_joins(&all, &widest, &HashSet::new(), &LIMITS);
+        assert_eq!(joins, vec![(1, 2), (3, 4)]);
+    }
+
+    #[test]
+    fn a_doorway_gap_never_joins_and_zero_turns_joining_off() {
+        let widest = [0.0, 40.0, 40.0];
+        let all = [border((1, 2), 32.0, vec![1, 2])];
+        let gap: HashSet<u32> = [2].into_iter().collect();
+        assert!(open_joins(&all, &widest, &gap, &LIMITS).is_empty());
+        let off = JoinLimits {
+            fraction: 0.0,
+            ..LIMITS
+        };
+        assert!(open_joins(&all, &widest, &HashSet::new(), &off).is_empty());
+    }
+}
