@@ -5,6 +5,7 @@
 use std::collections::HashSet;
 
 use super::doors::Border;
+use super::stubs::compared_width;
 
 /// What makes a border an open join rather than a possible door, in pixels.
 pub(crate) struct JoinLimits {
@@ -28,6 +29,7 @@ pub(crate) struct JoinLimits {
 pub(crate) fn open_joins(
     all: &[Border],
     widest: &[f64],
+    is_passage: &[bool],
     gap_px: &HashSet<u32>,
     limits: &JoinLimits,
 ) -> Vec<(u32, u32)> {
@@ -37,7 +39,7 @@ pub(crate) fn open_joins(
     let mut pairs: Vec<(u32, u32)> = all
         .iter()
         .filter(|b| {
-            let narrow = widest[b.pair.0 as usize].min(widest[b.pair.1 as usize]);
+            let narrow = compared_width(b.pair, widest, is_passage);
             let w = b.width_px;
             let wide_open = w > limits.door_max_px && w >= limits.fraction * narrow;
             let no_constriction = w >= limits.door_min_px
@@ -84,7 +86,7 @@ mod tests {
             // Wider than any door, more than half the hall: joins.
             border((3, 4), 60.0, vec![7, 8]),
         ];
-        let joins = open_joins(&all, &widest, &HashSet::new(), &LIMITS);
+        let joins = open_joins(&all, &widest, &[false; 5], &HashSet::new(), &LIMITS);
         assert_eq!(joins, vec![(1, 2), (3, 4)]);
     }
 
@@ -93,11 +95,11 @@ mod tests {
         let widest = [0.0, 40.0, 40.0];
         let all = [border((1, 2), 32.0, vec![1, 2])];
         let gap: HashSet<u32> = [2].into_iter().collect();
-        assert!(open_joins(&all, &widest, &gap, &LIMITS).is_empty());
+        assert!(open_joins(&all, &widest, &[false; 3], &gap, &LIMITS).is_empty());
         let off = JoinLimits {
             fraction: 0.0,
             ..LIMITS
         };
-        assert!(open_joins(&all, &widest, &HashSet::new(), &off).is_empty());
+        assert!(open_joins(&all, &widest, &[false; 3], &HashSet::new(), &off).is_empty());
     }
 }

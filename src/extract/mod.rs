@@ -31,6 +31,7 @@ mod polygon;
 mod resample;
 mod segment;
 mod simplify;
+mod stubs;
 mod wall_gaps;
 
 pub use error::ExtractError;

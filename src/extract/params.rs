@@ -113,6 +113,16 @@ pub struct ExtractParams {
     /// 0.1 m). The diff matches doors by their doorway line, not their
     /// area, so thin doors are no harder to follow across revisions.
     pub door_depth_m: f64,
+    /// A passage narrower than `door_width_max_m` and at least this long
+    /// (its area over its width) that opens into wider space, with one
+    /// opening (a corridor stub) or two into different spaces (a strip
+    /// corridor between a room and a corridor), is a space of its own, with
+    /// a door where it opens out: the watershed floods straight into it and
+    /// leaves no border there. A passage opening twice into the same space
+    /// is an aisle of that space and stays in it. 0 turns this off.
+    /// Default 3.0 m (door recall on the IPA maps 92.3 % without, 95.2 %
+    /// with; the same from 2 to 3 m).
+    pub passage_min_length_m: f64,
     /// Two regions of the watershed that meet across a border no doorway
     /// divides are one space: a border wider than `door_width_max_m` at
     /// least this fraction of the narrower region's widest inscribed
@@ -156,6 +166,7 @@ impl Default for ExtractParams {
             wall_gap_width_max_m: 2.1,
             wall_thickness_max_m: 1.2,
             door_depth_m: 0.1,
+            passage_min_length_m: 3.0,
             open_join_fraction: 0.5,
             min_room_area_m2: 1.0,
             corridor_min_elongation: 2.5,
@@ -185,6 +196,7 @@ impl ExtractParams {
             ("wall_gap_width_max_m", self.wall_gap_width_max_m),
             ("wall_thickness_max_m", self.wall_thickness_max_m),
             ("door_depth_m", self.door_depth_m),
+            ("passage_min_length_m", self.passage_min_length_m),
             ("open_join_fraction", self.open_join_fraction),
             ("min_room_area_m2", self.min_room_area_m2),
             ("corridor_min_elongation", self.corridor_min_elongation),

@@ -15,6 +15,7 @@ use super::passages::give_passages_to_narrow_side;
 use super::polygon::{bounding_boxes, outline};
 use super::resample::{coarsen, pixel_centroids, refine};
 use super::segment::segment_basins;
+use super::stubs::{StubLimits, compared_width, passage_labels, split_off_passages};
 use super::wall_gaps::{GapLimits, WallGap, close_gaps, reopen_gaps, wall_gaps};
 use super::{ExtractError, ExtractParams, Method};
 use crate::grid::OccupancyGrid;
@@ -155,8 +156,33 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     );
     reopen_gaps(&mut regions, &gaps);
     let join_px = (params.door_join_m / res).round() as i64;
-    let mut all = borders(&regions, &dist, join_px);
     let mut widest = widest_passages(&regions, &dist);
+    let mut in_passage = Vec::new();
+    if params.passage_min_length_m > 0.0 {
+        let stub = StubLimits {
+            radius_px: (params.door_width_max_m / res / 2.0) as f32,
+            width_min_px: (params.door_width_min_m / res) as f32,
+            length_min_px: (params.passage_min_length_m / res) as f32,
+            constriction: params.door_constriction,
+        };
+        in_passage = split_off_passages(&mut regions, &dist, &widest, &stub);
+        if !in_passage.is_empty() {
+            merge_small(
+                &mut regions,
+                (params.min_room_area_m2 / (res * res)).ceil() as usize,
+            );
+            widest = widest_passages(&regions, &dist);
+        }
+    }
+    let passages_of = |regions: &Labels| {
+        if in_passage.is_empty() {
+            vec![false; regions.count as usize + 1]
+        } else {
+            passage_labels(regions, &in_passage)
+        }
+    };
+    let mut is_passage = passages_of(&regions);
+    let mut all = borders(&regions, &dist, join_px);
     let gap_px: HashSet<u32> = gaps.iter().flat_map(|g| g.line.iter().copied()).collect();
     let limits = JoinLimits {
         door_min_px: params.door_width_min_m / res,
@@ -164,14 +190,15 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         constriction: params.door_constriction,
         fraction: params.open_join_fraction,
     };
-    let joins = open_joins(&all, &widest, &gap_px, &limits);
+    let joins = open_joins(&all, &widest, &is_passage, &gap_px, &limits);
     if !joins.is_empty() {
         merge_pairs(&mut regions, &joins);
         all = borders(&regions, &dist, join_px);
         widest = widest_passages(&regions, &dist);
+        is_passage = passages_of(&regions);
     }
     clock.lap("merge");
-    let first = select_doors(&all, &widest, &gaps, params, res);
+    let first = select_doors(&all, &widest, &is_passage, &gaps, params, res);
     // Doors found mid-passage move to the passage's mouth; the borders and
     // doors are found again only if one did.
     let window_px = (2.0 * params.door_width_max_m / res).ceil() as usize;
@@ -179,7 +206,14 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     let moved = give_passages_to_narrow_side(&mut regions, &dist, &first_doors, &widest, window_px);
     let (all, chosen) = if moved {
         let all = borders(&regions, &dist, join_px);
-        let chosen = select_doors(&all, &widest_passages(&regions, &dist), &gaps, params, res);
+        let chosen = select_doors(
+            &all,
+            &widest_passages(&regions, &dist),
+            &is_passage,
+            &gaps,
+            params,
+            res,
+        );
         (all, chosen)
     } else {
         (all, first)
@@ -232,16 +266,15 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
 fn select_doors(
     all: &[Border],
     widest: &[f64],
+    is_passage: &[bool],
     gaps: &[WallGap],
     params: &ExtractParams,
     res: f64,
 ) -> Vec<usize> {
     let door_px = params.door_width_max_m / res;
     let door_min_px = params.door_width_min_m / res;
-    let constriction = |b: &Border| {
-        let (a, c) = (b.pair.0 as usize, b.pair.1 as usize);
-        params.door_constriction * widest[a].min(widest[c])
-    };
+    let constriction =
+        |b: &Border| params.door_constriction * compared_width(b.pair, widest, is_passage);
     let gap_at: HashMap<u32, usize> = gaps
         .iter()
         .enumerate()
@@ -436,5 +469,35 @@ mod tests {
             x.nrg.connections()[0].kind,
             crate::model::ConnectionKind::Open
         );
+    }
+
+    #[test]
+    fn a_corridor_stub_opens_into_its_room_through_a_door() {
+        // A 6 x 4 m room at 0.1 m/px with a 1.2 m wide, 4 m long stub going
+        // down from its floor, flush with its left wall: no narrowing at the
+        // stub's mouth, so only the passage rule puts a door there.
+        let mut rows = vec!["#".repeat(62)];
+        for y in 0..80 {
+            let row = if y < 40 {
+                format!("#{}#", ".".repeat(60))
+            } else {
+                format!("#{}{}", ".".repeat(12), "#".repeat(49))
+            };
+            rows.push(row);
+        }
+        rows.push("#".repeat(62));
+        let grid = OccupancyGrid::from_ascii(&rows.join("\n"), 0.1);
+        let kinds = |x: &Extraction| {
+            let mut k: Vec<&str> = x.nrg.spaces().iter().map(|s| s.kind.as_str()).collect();
+            k.sort_unstable();
+            k
+        };
+        let x = extract(&grid, &ExtractParams::default()).unwrap();
+        assert_eq!(kinds(&x), ["door", "room", "room"]);
+        let off = ExtractParams {
+            passage_min_length_m: 0.0,
+            ..ExtractParams::default()
+        };
+        assert_eq!(kinds(&extract(&grid, &off).unwrap()), ["room"]);
     }
 }
