@@ -1,6 +1,6 @@
 //! Doors: narrow borders between two basins become door spaces.
 
-use std::collections::{BTreeMap, HashMap, HashSet, VecDeque};
+use std::collections::{BTreeMap, HashSet, VecDeque};
 
 use crate::imaging::Labels;
 
@@ -70,38 +70,46 @@ pub(crate) fn borders(labels: &Labels, dist: &[f32], join_px: i64) -> Vec<Border
 
 /// Groups crossings whose first pixels lie within `join_px` (Chebyshev) of each
 /// other, transitively; returns index lists, in order of first crossing.
+/// `list` is in raster order of first pixel (as [`borders`] makes it), so
+/// each crossing is compared only with those after it up to `join_px`
+/// rows down, and groups are joined by union-find.
 fn stretches(list: &[Crossing], w: usize, join_px: i64) -> Vec<Vec<usize>> {
-    let at: HashMap<u32, usize> = list.iter().enumerate().map(|(k, c)| (c.0, k)).collect();
-    let mut group = vec![usize::MAX; list.len()];
-    let mut out: Vec<Vec<usize>> = Vec::new();
-    for start in 0..list.len() {
-        if group[start] != usize::MAX {
-            continue;
+    let mut parent: Vec<usize> = (0..list.len()).collect();
+    fn root(parent: &mut [usize], mut k: usize) -> usize {
+        while parent[k] != k {
+            parent[k] = parent[parent[k]];
+            k = parent[k];
         }
-        let g = out.len();
-        group[start] = g;
-        let mut members = vec![start];
-        let mut next = 0;
-        while next < members.len() {
-            let p = list[members[next]].0 as i64;
-            next += 1;
-            let (x, y) = (p % w as i64, p / w as i64);
-            for dy in -join_px..=join_px {
-                for dx in -join_px..=join_px {
-                    let (nx, ny) = (x + dx, y + dy);
-                    if nx < 0 || ny < 0 || nx >= w as i64 {
-                        continue;
-                    }
-                    let near = at.get(&((ny * w as i64 + nx) as u32));
-                    if let Some(&k) = near.filter(|&&k| group[k] == usize::MAX) {
-                        group[k] = g;
-                        members.push(k);
-                    }
+        k
+    }
+    let xy = |k: usize| {
+        let p = list[k].0 as i64;
+        (p % w as i64, p / w as i64)
+    };
+    for k in 0..list.len() {
+        let (x, y) = xy(k);
+        for j in k + 1..list.len() {
+            let (xj, yj) = xy(j);
+            if yj > y + join_px {
+                break;
+            }
+            if (xj - x).abs() <= join_px {
+                let (a, b) = (root(&mut parent, k), root(&mut parent, j));
+                if a != b {
+                    parent[a.max(b)] = a.min(b);
                 }
             }
         }
-        members.sort_unstable();
-        out.push(members);
+    }
+    let mut group_of = vec![usize::MAX; list.len()];
+    let mut out: Vec<Vec<usize>> = Vec::new();
+    for k in 0..list.len() {
+        let r = root(&mut parent, k);
+        if group_of[r] == usize::MAX {
+            group_of[r] = out.len();
+            out.push(Vec::new());
+        }
+        out[group_of[r]].push(k);
     }
     out
 }

@@ -13,6 +13,10 @@ use crate::imaging::{Labels, region_adjacency};
 /// adjacency is computed once and updated as regions merge.
 pub(crate) fn merge_small(labels: &mut Labels, min_px: usize) {
     let mut area = labels.areas();
+    if !area.iter().any(|&a| a > 0 && a < min_px) {
+        labels.compact();
+        return;
+    }
     let n = area.len();
     let mut nbrs: Vec<BTreeMap<u32, usize>> = vec![BTreeMap::new(); n];
     for (&(a, b), &len) in &region_adjacency(labels) {

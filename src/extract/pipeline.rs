@@ -155,6 +155,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         (params.min_room_area_m2 / (res * res)).ceil() as usize,
     );
     reopen_gaps(&mut regions, &gaps);
+    clock.lap("merge");
     let join_px = (params.door_join_m / res).round() as i64;
     let mut widest = widest_passages(&regions, &dist);
     let mut in_passage = Vec::new();
@@ -182,6 +183,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         }
     };
     let mut is_passage = passages_of(&regions);
+    clock.lap("passages");
     let mut all = borders(&regions, &dist, join_px);
     let gap_px: HashSet<u32> = gaps.iter().flat_map(|g| g.line.iter().copied()).collect();
     let limits = JoinLimits {
@@ -197,7 +199,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         widest = widest_passages(&regions, &dist);
         is_passage = passages_of(&regions);
     }
-    clock.lap("merge");
+    clock.lap("joins");
     let first = select_doors(&all, &widest, &is_passage, &gaps, params, res);
     // Doors found mid-passage move to the passage's mouth; the borders and
     // doors are found again only if one did.

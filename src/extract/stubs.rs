@@ -6,7 +6,7 @@
 
 use std::collections::VecDeque;
 
-use crate::imaging::{Labels, Mask, label_components, squared_distance_to_foreground};
+use crate::imaging::{Labels, Mask, distance_to_background_inside, label_runs};
 
 /// What makes a narrow passage, in pixels.
 pub(crate) struct StubLimits {
@@ -41,58 +41,55 @@ pub(crate) fn split_off_passages(
     if r <= 0.0 || w == 0 || h == 0 {
         return Vec::new();
     }
-    // Squared distance to the nearest disk centre: the disk reaches what is
-    // within r (beyond the image's edge there is no centre).
-    let centres = Mask::from_fn(labels.width, labels.height, |x, y| {
-        let i = y as usize * w + x as usize;
-        image::Luma([if labels.data[i] != 0 && dist[i] >= r {
-            255
-        } else {
-            0
-        }])
-    });
-    let to_centre = squared_distance_to_foreground(&centres);
-    let r2 = f64::from(r) * f64::from(r);
-    let narrow = Mask::from_fn(labels.width, labels.height, |x, y| {
-        let i = y as usize * w + x as usize;
-        image::Luma([if labels.data[i] != 0 && to_centre[i] > r2 {
-            255
-        } else {
-            0
-        }])
-    });
-    let parts = label_components(&narrow, false);
+    // Distance to the nearest disk centre: the disk reaches what is within
+    // r (beyond the image's edge there is no centre).
+    let mask = |on: Vec<u8>| Mask::from_raw(labels.width, labels.height, on);
+    let not_centre: Vec<u8> = (labels.data.iter().zip(dist))
+        .map(|(&l, &d)| if l != 0 && d >= r { 0 } else { 255 })
+        .collect();
+    let Some(not_centre) = mask(not_centre) else {
+        return Vec::new();
+    };
+    let to_centre = distance_to_background_inside(&not_centre);
+    let narrow: Vec<u8> = (labels.data.iter().zip(&to_centre))
+        .map(|(&l, &t)| if l != 0 && t > r { 255 } else { 0 })
+        .collect();
+    let Some(narrow) = mask(narrow) else {
+        return Vec::new();
+    };
+    let parts = label_runs(&narrow, false);
+    let narrow = narrow.as_raw();
     let n = parts.count as usize + 1;
     // Per part: area, widest half-width, and the reached pixels it opens
     // onto, as a bounding box per region.
     let mut area = vec![0usize; n];
     let mut half = vec![0f32; n];
     let mut mouths: Vec<Vec<(u32, [usize; 4])>> = vec![Vec::new(); n];
-    for (i, &p) in parts.data.iter().enumerate() {
-        if p == 0 {
-            continue;
-        }
-        let p = p as usize;
-        area[p] += 1;
-        half[p] = half[p].max(dist[i]);
-        let (x, y) = (i % w, i / w);
-        let nb = [
-            (x > 0).then(|| i - 1),
-            (x + 1 < w).then(|| i + 1),
-            (y > 0).then(|| i - w),
-            (y + 1 < h).then(|| i + w),
-        ];
-        for j in nb.into_iter().flatten() {
-            let l = labels.data[j];
-            if l == 0 || parts.data[j] != 0 {
-                continue;
-            }
-            let (jx, jy) = (j % w, j / w);
-            match mouths[p].iter_mut().find(|m| m.0 == l) {
-                Some((_, b)) => {
-                    *b = [b[0].min(jx), b[1].min(jy), b[2].max(jx), b[3].max(jy)];
+    for run in &parts.runs {
+        let p = run.label as usize;
+        let y = run.y as usize;
+        for x in run.x0 as usize..run.x1 as usize {
+            let i = y * w + x;
+            area[p] += 1;
+            half[p] = half[p].max(dist[i]);
+            let nb = [
+                (x > 0).then(|| i - 1),
+                (x + 1 < w).then(|| i + 1),
+                (y > 0).then(|| i - w),
+                (y + 1 < h).then(|| i + w),
+            ];
+            for j in nb.into_iter().flatten() {
+                let l = labels.data[j];
+                if l == 0 || narrow[j] != 0 {
+                    continue;
                 }
-                None => mouths[p].push((l, [jx, jy, jx, jy])),
+                let (jx, jy) = (j % w, j / w);
+                match mouths[p].iter_mut().find(|m| m.0 == l) {
+                    Some((_, b)) => {
+                        *b = [b[0].min(jx), b[1].min(jy), b[2].max(jx), b[3].max(jy)];
+                    }
+                    None => mouths[p].push((l, [jx, jy, jx, jy])),
+                }
             }
         }
     }
@@ -109,15 +106,63 @@ pub(crate) fn split_off_passages(
     }
     let first_new = labels.count + 1;
     let mut in_passage = vec![false; w * h];
-    for ((l, &p), m) in labels.data.iter_mut().zip(&parts.data).zip(&mut in_passage) {
-        if keep[p as usize] {
-            *l = first_new + p;
-            *m = true;
+    // The regions that gave pixels to a passage: only they can fall apart.
+    let mut cut = vec![false; first_new as usize];
+    for run in parts.runs.iter().filter(|r| keep[r.label as usize]) {
+        let row = run.y as usize * w;
+        for i in row + run.x0 as usize..row + run.x1 as usize {
+            cut[labels.data[i] as usize] = true;
+            labels.data[i] = first_new + run.label;
+            in_passage[i] = true;
         }
     }
     labels.count = first_new + parts.count;
-    split_disconnected(labels);
+    split_disconnected(labels, &cut);
+    labels.compact();
     in_passage
+}
+
+/// Gives each 4-connected part but the first (in raster order) of every
+/// label marked in `which` a new label of its own (labels past the end of
+/// `which` are left alone).
+pub(crate) fn split_disconnected(labels: &mut Labels, which: &[bool]) {
+    let (w, h) = (labels.width as usize, labels.height as usize);
+    let marked = |l: u32| which.get(l as usize).copied().unwrap_or(false);
+    let mut seen = vec![false; w * h];
+    let mut first_part_done = vec![false; which.len()];
+    let mut queue = VecDeque::new();
+    for s in 0..w * h {
+        let l = labels.data[s];
+        if !marked(l) || seen[s] {
+            continue;
+        }
+        let new = if first_part_done[l as usize] {
+            labels.count += 1;
+            labels.count
+        } else {
+            first_part_done[l as usize] = true;
+            l
+        };
+        seen[s] = true;
+        labels.data[s] = new;
+        queue.push_back(s);
+        while let Some(i) = queue.pop_front() {
+            let (x, y) = (i % w, i / w);
+            let nb = [
+                (x > 0).then(|| i - 1),
+                (x + 1 < w).then(|| i + 1),
+                (y > 0).then(|| i - w),
+                (y + 1 < h).then(|| i + w),
+            ];
+            for j in nb.into_iter().flatten() {
+                if labels.data[j] == l && !seen[j] {
+                    seen[j] = true;
+                    labels.data[j] = new;
+                    queue.push_back(j);
+                }
+            }
+        }
+    }
 }
 
 /// Per label of `labels`, whether most of its pixels are in `in_passage`.
@@ -133,41 +178,6 @@ pub(crate) fn passage_labels(labels: &Labels, in_passage: &[bool]) -> Vec<bool> 
         .enumerate()
         .map(|(l, c)| l > 0 && 2 * c.0 > c.1)
         .collect()
-}
-
-/// Gives each 4-connected part of every label a label of its own,
-/// numbered 1..=n in raster order of first pixel.
-pub(crate) fn split_disconnected(labels: &mut Labels) {
-    let (w, h) = (labels.width as usize, labels.height as usize);
-    let mut out = vec![0u32; w * h];
-    let mut next = 0u32;
-    let mut queue = VecDeque::new();
-    for s in 0..w * h {
-        let l = labels.data[s];
-        if l == 0 || out[s] != 0 {
-            continue;
-        }
-        next += 1;
-        out[s] = next;
-        queue.push_back(s);
-        while let Some(i) = queue.pop_front() {
-            let (x, y) = (i % w, i / w);
-            let nb = [
-                (x > 0).then(|| i - 1),
-                (x + 1 < w).then(|| i + 1),
-                (y > 0).then(|| i - w),
-                (y + 1 < h).then(|| i + w),
-            ];
-            for j in nb.into_iter().flatten() {
-                if labels.data[j] == l && out[j] == 0 {
-                    out[j] = next;
-                    queue.push_back(j);
-                }
-            }
-        }
-    }
-    labels.data = out;
-    labels.count = next;
 }
 
 /// The widest inscribed diameter (`widest`, px) a border between `pair` is
@@ -301,8 +311,9 @@ mod tests {
             data: vec![1, 1, 0, 1, 2],
             count: 2,
         };
-        split_disconnected(&mut l);
-        assert_eq!(l.data, vec![1, 1, 0, 2, 3]);
+        // Only label 1 is looked at; its second part gets label 3.
+        split_disconnected(&mut l, &[false, true]);
+        assert_eq!(l.data, vec![1, 1, 0, 3, 2]);
         assert_eq!(l.count, 3);
     }
 

@@ -26,6 +26,25 @@ pub fn squared_distance_to_foreground(mask: &Mask) -> Vec<f64> {
 /// assert_eq!((d[0], d[2 * 5 + 2]), (1.0, 3.0)); // corner, centre
 /// ```
 pub fn distance_to_background(mask: &Mask) -> Vec<f32> {
+    meijster(mask, true)
+}
+
+/// [`distance_to_background`] with nothing outside the image: a pixel's
+/// distance is to the nearest background pixel inside it (more than
+/// `width + height` where the mask has no background at all).
+///
+/// ```
+/// use nrgdb::imaging::{binarize, distance_to_background_inside};
+/// let m = binarize(5, 1, &[0, 255, 255, 255, 255], 250);
+/// assert_eq!(distance_to_background_inside(&m), vec![0.0, 1.0, 2.0, 3.0, 4.0]);
+/// ```
+pub fn distance_to_background_inside(mask: &Mask) -> Vec<f32> {
+    meijster(mask, false)
+}
+
+/// Meijster's transform; `outside` says whether the pixels beyond the
+/// image's edge are background.
+fn meijster(mask: &Mask, outside: bool) -> Vec<f32> {
     let (w, h) = (mask.width() as usize, mask.height() as usize);
     let src = mask.as_raw();
     let mut out = vec![0f32; w * h];
@@ -33,17 +52,19 @@ pub fn distance_to_background(mask: &Mask) -> Vec<f32> {
         return out;
     }
     // Phase 1, per column: distance to the nearest background pixel of the
-    // column, the rows just outside the image counting as background.
-    // Rows are swept top-down then bottom-up, all columns at once.
+    // column (the rows just outside the image count as background if
+    // `outside`, else as farther than any pixel). Rows are swept top-down
+    // then bottom-up, all columns at once.
+    let far = if outside { 0 } else { (w + h) as u32 + 1 };
     let mut g = vec![0u32; w * h];
-    let mut above = vec![0u32; w];
+    let mut above = vec![far; w];
     for (row, g_row) in src.chunks_exact(w).zip(g.chunks_exact_mut(w)) {
         for ((a, &p), o) in above.iter_mut().zip(row).zip(g_row.iter_mut()) {
             *a = if p == 0 { 0 } else { *a + 1 };
             *o = *a;
         }
     }
-    let mut below = vec![0u32; w];
+    let mut below = vec![far; w];
     for (row, g_row) in src.chunks_exact(w).zip(g.chunks_exact_mut(w)).rev() {
         for ((b, &p), o) in below.iter_mut().zip(row).zip(g_row.iter_mut()) {
             *b = if p == 0 { 0 } else { *b + 1 };
@@ -76,7 +97,8 @@ pub fn distance_to_background(mask: &Mask) -> Vec<f32> {
                 let x = lo + i;
                 if row[x] != 0 {
                     let edge = (x + 1).min(w - x) as i64;
-                    o_row[x] = (d2.min(edge * edge) as f64).sqrt() as f32;
+                    let d2 = if outside { d2.min(edge * edge) } else { d2 };
+                    o_row[x] = (d2 as f64).sqrt() as f32;
                 }
             });
             if x == w {
@@ -226,7 +248,27 @@ mod tests {
                 }])
             });
             assert_eq!(distance_to_background(&m), reference(&m), "{w}x{h}");
+            if m.contains(&0) {
+                assert_eq!(
+                    distance_to_background_inside(&m),
+                    inside_reference(&m),
+                    "{w}x{h}"
+                );
+            }
         }
+    }
+
+    /// imageproc's transform of the inverse, with nothing outside the image.
+    fn inside_reference(mask: &Mask) -> Vec<f32> {
+        let mut inverse = mask.clone();
+        inverse
+            .iter_mut()
+            .for_each(|p| *p = if *p == 0 { 255 } else { 0 });
+        euclidean_squared_distance_transform(&inverse)
+            .into_raw()
+            .into_iter()
+            .map(|d| d.sqrt() as f32)
+            .collect()
     }
 
     #[test]

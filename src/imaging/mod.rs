@@ -20,7 +20,10 @@ mod watershed;
 
 pub use adjacency::{Adjacency, region_adjacency};
 pub use binarize::binarize;
-pub use distance::{distance_to_background, max_distance, squared_distance_to_foreground};
+pub use distance::{
+    distance_to_background, distance_to_background_inside, max_distance,
+    squared_distance_to_foreground,
+};
 pub use label::{Labels, Run, RunLabels, label_components, label_runs};
 pub use morphology::{close, dilate, erode, open};
 pub use orientation::dominant_orientation;
