@@ -193,10 +193,14 @@ fn scan(
                 })
             };
             let along = |k: usize, step: isize| (first..=last).any(|l| wall_from(l, k, step));
+            // The wall across may start at any line of the stack (a wall's
+            // end is ragged by a pixel or two).
             let across = |k: usize| {
-                let up = (0..=mid).rev().take_while(|&l| !is_free(l, k)).count();
-                let down = (mid + 1..lines).take_while(|&l| !is_free(l, k)).count();
-                up + down >= depth + limits.jamb
+                (first..=last).any(|m| {
+                    let up = (0..=m).rev().take_while(|&l| !is_free(l, k)).count();
+                    let down = (m + 1..lines).take_while(|&l| !is_free(l, k)).count();
+                    up + down >= depth + limits.jamb
+                })
             };
             let left_jamb = lo > 0 && (along(lo - 1, -1) || across(lo - 1));
             let right_jamb = hi < len && (along(hi, 1) || across(hi));
@@ -351,6 +355,33 @@ mod tests {
              ########.....",
         );
         assert!(axis_gaps(&open, LIMITS_CORNER).is_empty());
+    }
+
+    #[test]
+    fn a_side_wall_with_a_ragged_end_is_a_jamb() {
+        // A cubicle's open front (rows 5-7) between a jamb on the right and
+        // the cubicle's side wall (columns 4-5) on the left, whose end is a
+        // pixel thinner in the front's last two rows, as scanned walls are.
+        let m = free_mask(
+            "....##........#
+             ....##........#
+             ....##........#
+             ....##........#
+             ....##........#
+             ....##....#####
+             ....#.....#####
+             ....#.....#####
+             ...............
+             ...............",
+        );
+        let limits = GapLimits {
+            width: (2, 6),
+            jamb: 3,
+            depth: 3,
+        };
+        let g = axis_gaps(&m, limits);
+        assert_eq!(g.len(), 1, "{g:?}");
+        assert_eq!(g[0].line, vec![96, 97, 98, 99]);
     }
 
     #[test]
