@@ -6,6 +6,7 @@
 
 use std::collections::VecDeque;
 
+use super::interior::neighbours;
 use crate::imaging::{Labels, Mask, distance_to_background_inside, label_runs};
 
 /// What makes a narrow passage, in pixels.
@@ -72,13 +73,7 @@ pub(crate) fn split_off_passages(
             let i = y * w + x;
             area[p] += 1;
             half[p] = half[p].max(dist[i]);
-            let nb = [
-                (x > 0).then(|| i - 1),
-                (x + 1 < w).then(|| i + 1),
-                (y > 0).then(|| i - w),
-                (y + 1 < h).then(|| i + w),
-            ];
-            for j in nb.into_iter().flatten() {
+            for j in neighbours(i, w, h) {
                 let l = labels.data[j];
                 if l == 0 || narrow[j] != 0 {
                     continue;
@@ -147,14 +142,7 @@ pub(crate) fn split_disconnected(labels: &mut Labels, which: &[bool]) {
         labels.data[s] = new;
         queue.push_back(s);
         while let Some(i) = queue.pop_front() {
-            let (x, y) = (i % w, i / w);
-            let nb = [
-                (x > 0).then(|| i - 1),
-                (x + 1 < w).then(|| i + 1),
-                (y > 0).then(|| i - w),
-                (y + 1 < h).then(|| i + w),
-            ];
-            for j in nb.into_iter().flatten() {
+            for j in neighbours(i, w, h) {
                 if labels.data[j] == l && !seen[j] {
                     seen[j] = true;
                     labels.data[j] = new;
