@@ -31,9 +31,10 @@ mod polygon;
 mod resample;
 mod segment;
 mod simplify;
+mod skeleton_doors;
 mod stubs;
 mod wall_gaps;
 
 pub use error::ExtractError;
-pub use params::{ExtractParams, Method};
+pub use params::{DoorRule, ExtractParams, Method};
 pub use pipeline::{Extraction, extract};

@@ -28,6 +28,21 @@ impl std::str::FromStr for Method {
     }
 }
 
+/// How the watershed method tells doors among the borders of its regions.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum DoorRule {
+    /// A border is a door where it crosses a doorway gap in a wall, or is
+    /// door-wide and a constriction of the spaces it joins (the default).
+    #[default]
+    Constriction,
+    /// The paper's Tab. 2: a border is a door where the skeleton of the
+    /// free space meets the skeleton of the walls, thickened by
+    /// `skeleton_erode_m` and closed across doorways by an opening of
+    /// radius `skeleton_open_m` (Tab. 1's `I_opn`).
+    Skeleton,
+}
+
 /// All parameters of [`crate::extract::extract`]. Lengths are metres and
 /// areas square metres, converted to pixels with the map's resolution, so one
 /// set of defaults serves 0.05 and 0.1 m/px maps alike. Loads from TOML
@@ -43,6 +58,8 @@ impl std::str::FromStr for Method {
 pub struct ExtractParams {
     /// Segmentation method.
     pub method: Method,
+    /// Watershed method: which borders are doors. Default `constriction`.
+    pub door_rule: DoorRule,
     /// Maps finer than this are segmented on a copy coarsened by a whole
     /// factor k to about this resolution (k × k cells to one) and the labels
     /// are brought back to the map's pixels: k² times less work, with
@@ -145,12 +162,20 @@ pub struct ExtractParams {
     pub ccl_erode_m: f64,
     /// CCL method: opening radius (cuts doorways). Default 0.5 m.
     pub ccl_open_m: f64,
+    /// `door_rule = "skeleton"`: erosion radius of the free space before
+    /// the opening (thickens walls so that the opening can plug a doorway
+    /// through a thin wall). Default 0.25 m.
+    pub skeleton_erode_m: f64,
+    /// `door_rule = "skeleton"`: opening radius; doorways narrower than
+    /// about twice this (after the erosion) are plugged. Default 0.5 m.
+    pub skeleton_open_m: f64,
 }
 
 impl Default for ExtractParams {
     fn default() -> Self {
         ExtractParams {
             method: Method::Watershed,
+            door_rule: DoorRule::Constriction,
             working_resolution_m: 0.0,
             noise_radius_m: 0.2,
             furniture_max_m: 1.0,
@@ -173,6 +198,8 @@ impl Default for ExtractParams {
             simplify_m: 0.05,
             ccl_erode_m: 0.1,
             ccl_open_m: 0.5,
+            skeleton_erode_m: 0.25,
+            skeleton_open_m: 0.5,
         }
     }
 }
@@ -203,6 +230,8 @@ impl ExtractParams {
             ("simplify_m", self.simplify_m),
             ("ccl_erode_m", self.ccl_erode_m),
             ("ccl_open_m", self.ccl_open_m),
+            ("skeleton_erode_m", self.skeleton_erode_m),
+            ("skeleton_open_m", self.skeleton_open_m),
         ];
         match fields
             .into_iter()

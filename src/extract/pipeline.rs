@@ -15,12 +15,18 @@ use super::passages::give_passages_to_narrow_side;
 use super::polygon::{bounding_boxes, outline};
 use super::resample::{coarsen, pixel_centroids, refine};
 use super::segment::segment_basins;
+use super::skeleton_doors::skeleton_doorways;
 use super::stubs::{StubLimits, compared_width, passage_labels, split_off_passages};
 use super::wall_gaps::{GapLimits, WallGap, close_gaps, reopen_gaps, wall_gaps};
-use super::{ExtractError, ExtractParams, Method};
+use super::{DoorRule, ExtractError, ExtractParams, Method};
 use crate::grid::OccupancyGrid;
 use crate::imaging::{Labels, distance_to_background, max_distance};
 use crate::model::{Connection, Nrg, Space, SpaceId, SpaceKind};
+
+/// A border is a door under `DoorRule::Skeleton` if it passes this close
+/// (pixels) to a doorway point: the watershed border and the skeletons'
+/// crossing need not share a pixel.
+const SKELETON_NEAR_PX: f64 = 2.0;
 
 /// Unlabelled specks smaller than this (m²) inside one space join it.
 const MIN_HOLE_M2: f64 = 0.25;
@@ -127,8 +133,21 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         }
         _ => Vec::new(),
     };
-    close_gaps(&mut free.clean, &mut free.reachable, &gaps);
     clock.lap("clean");
+    // The paper's doorway points (Tab. 2), taken before the gaps close.
+    let skeleton = (params.method == Method::Watershed && params.door_rule == DoorRule::Skeleton)
+        .then(|| {
+            skeleton_doorways(
+                &free.clean,
+                params.skeleton_erode_m / res,
+                params.skeleton_open_m / res,
+                SKELETON_NEAR_PX,
+            )
+        });
+    if skeleton.is_some() {
+        clock.lap("skeleton");
+    }
+    close_gaps(&mut free.clean, &mut free.reachable, &gaps);
     let dist = distance_to_background(&free.clean);
     clock.lap("distance");
     let min_free_px = (params.min_free_area_m2 / (res * res)).ceil() as usize;
@@ -200,7 +219,11 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         is_passage = passages_of(&regions);
     }
     clock.lap("joins");
-    let first = select_doors(&all, &widest, &is_passage, &gaps, params, res);
+    let rule = DoorCues {
+        gaps: &gaps,
+        skeleton: skeleton.as_deref(),
+    };
+    let first = select_doors(&all, &widest, &is_passage, &rule, params, res);
     // Doors found mid-passage move to the passage's mouth; the borders and
     // doors are found again only if one did.
     let window_px = (2.0 * params.door_width_max_m / res).ceil() as usize;
@@ -212,7 +235,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
             &all,
             &widest_passages(&regions, &dist),
             &is_passage,
-            &gaps,
+            &rule,
             params,
             res,
         );
@@ -260,19 +283,27 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     })
 }
 
-/// The indices of the borders of `all` that are doors: those along a
-/// doorway gap's line, and those between `door_width_min_m` and
-/// `door_width_max_m` wide that are a constriction of the narrower region (`widest`: each region's
-/// widest inscribed diameter, px) and whose regions do not also meet wider
+/// The indices of the borders of `all` that are doors. With the skeleton
+/// cue (`DoorRule::Skeleton`), those touching a doorway point. Otherwise
+/// those along a doorway gap's line, and those between `door_width_min_m`
+/// and `door_width_max_m` wide that are a constriction of the narrower
+/// region (`widest`: each region's widest inscribed diameter, px; see
+/// `compared_width` for passages) and whose regions do not also meet wider
 /// than any door.
 fn select_doors(
     all: &[Border],
     widest: &[f64],
     is_passage: &[bool],
-    gaps: &[WallGap],
+    cues: &DoorCues,
     params: &ExtractParams,
     res: f64,
 ) -> Vec<usize> {
+    if let Some(skeleton) = cues.skeleton {
+        return (0..all.len())
+            .filter(|&k| all[k].pixels.iter().any(|&p| skeleton[p as usize]))
+            .collect();
+    }
+    let gaps = cues.gaps;
     let door_px = params.door_width_max_m / res;
     let door_min_px = params.door_width_min_m / res;
     let constriction =
@@ -309,6 +340,15 @@ fn select_doors(
                     && !open_pairs.contains(&b.pair))
         })
         .collect()
+}
+
+/// What marks a doorway besides the borders' widths.
+struct DoorCues<'a> {
+    /// Doorway gaps in walls.
+    gaps: &'a [WallGap],
+    /// With `DoorRule::Skeleton`: per pixel, near a doorway point of the
+    /// paper's Tab. 2; a border is a door iff it touches one.
+    skeleton: Option<&'a [bool]>,
 }
 
 /// The widest inscribed diameter (px) of every label.

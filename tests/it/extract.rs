@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use nrgdb::extract::{ExtractParams, Method, extract};
+use nrgdb::extract::{DoorRule, ExtractParams, Method, extract};
 use nrgdb::grid::{Cell, LoadOptions, OccupancyGrid, load_map};
 use nrgdb::model::{ConnectionKind, SpaceKind, point_in_ring};
 
@@ -104,6 +104,16 @@ fn ccl_finds_the_same_plan() {
         ..ExtractParams::default()
     };
     check_plan(&floor_plan(0.05), &params);
+}
+
+#[test]
+fn the_papers_skeleton_door_rule_finds_the_same_plan() {
+    let params = ExtractParams {
+        door_rule: DoorRule::Skeleton,
+        ..ExtractParams::default()
+    };
+    check_plan(&floor_plan(0.05), &params);
+    check_plan(&floor_plan(0.1), &params);
 }
 
 #[test]
