@@ -7,7 +7,7 @@
 use std::collections::VecDeque;
 
 use super::doors::Border;
-use crate::imaging::{Labels, Mask, distance_to_background};
+use crate::imaging::{Labels, Mask, erode};
 
 /// For each border in `doors`, finds the passage it lies in: the pixels of
 /// its two regions, within `window_px` of the border, that a disk a little
@@ -63,17 +63,24 @@ fn passage(labels: &Labels, dist: &[f32], door: &Border, window_px: usize) -> Op
     let (ww, wh) = (x1 - x0, y1 - y0);
     let at = |x: usize, y: usize| (y0 + y) * w + x0 + x;
     // The opening of the free space by the disk: pixels within r of a
-    // pixel at least r from any obstacle.
-    let centres = Mask::from_fn(ww as u32, wh as u32, |x, y| {
-        let i = at(x as usize, y as usize);
-        image::Luma([if labels.data[i] != 0 && dist[i] >= r {
-            0
-        } else {
-            255
-        }])
-    });
-    let to_centre = distance_to_background(&centres);
-    let opened = |x: usize, y: usize| to_centre[y * ww + x] <= r;
+    // pixel at least r from any obstacle, or of the window's edge (what
+    // lies beyond it is not known here). Those are the pixels that the
+    // erosion by r of the other pixels removes.
+    let mut not_centre = Vec::with_capacity(ww * wh);
+    for y in y0..y1 {
+        let (row, d) = (
+            &labels.data[y * w + x0..y * w + x1],
+            &dist[y * w + x0..y * w + x1],
+        );
+        not_centre.extend(row.iter().zip(d).map(
+            |(&l, &d)| {
+                if l != 0 && d >= r { 0u8 } else { 255 }
+            },
+        ));
+    }
+    let not_centre = Mask::from_raw(ww as u32, wh as u32, not_centre)?;
+    let far = erode(&not_centre, f64::from(r));
+    let opened = |x: usize, y: usize| far.as_raw()[y * ww + x] == 0;
     let mine = |i: usize| labels.data[i] == a || labels.data[i] == b;
     // The passage: unopened pixels of the two regions joined to the border.
     let mut seen = vec![false; ww * wh];
@@ -164,6 +171,7 @@ fn long_passage(labels: &Labels, dist: &[f32], door: &Border, r: f32, min_px: us
 mod tests {
     use super::*;
     use crate::extract::doors::borders;
+    use crate::imaging::distance_to_background;
 
     /// A 20 × 30 map, free where `free(x, y)` inside a one-pixel frame,
     /// labelled 1 above row `split` and 2 from it on; with its distances.

@@ -7,7 +7,7 @@
 use std::collections::VecDeque;
 
 use super::interior::neighbours;
-use crate::imaging::{Labels, Mask, distance_to_background_inside, label_runs};
+use crate::imaging::{Labels, Mask, dilate, label_runs};
 
 /// What makes a narrow passage, in pixels.
 pub(crate) struct StubLimits {
@@ -42,18 +42,18 @@ pub(crate) fn split_off_passages(
     if r <= 0.0 || w == 0 || h == 0 {
         return Vec::new();
     }
-    // Distance to the nearest disk centre: the disk reaches what is within
-    // r (beyond the image's edge there is no centre).
+    // The disk reaches what is within r of a disk centre (beyond the
+    // image's edge there is no centre): the centres dilated by r.
     let mask = |on: Vec<u8>| Mask::from_raw(labels.width, labels.height, on);
-    let not_centre: Vec<u8> = (labels.data.iter().zip(dist))
-        .map(|(&l, &d)| if l != 0 && d >= r { 0 } else { 255 })
+    let centres: Vec<u8> = (labels.data.iter().zip(dist))
+        .map(|(&l, &d)| if l != 0 && d >= r { 255 } else { 0 })
         .collect();
-    let Some(not_centre) = mask(not_centre) else {
+    let Some(centres) = mask(centres) else {
         return Vec::new();
     };
-    let to_centre = distance_to_background_inside(&not_centre);
-    let narrow: Vec<u8> = (labels.data.iter().zip(&to_centre))
-        .map(|(&l, &t)| if l != 0 && t > r { 255 } else { 0 })
+    let reached = dilate(&centres, f64::from(r));
+    let narrow: Vec<u8> = (labels.data.iter().zip(reached.as_raw()))
+        .map(|(&l, &t)| if l != 0 && t == 0 { 255 } else { 0 })
         .collect();
     let Some(narrow) = mask(narrow) else {
         return Vec::new();

@@ -2,8 +2,6 @@
 //! (F. Meyer, "Topographic distance and watershed lines", 1994), with a
 //! hierarchical (bucket) queue over 16-bit elevations.
 
-use std::collections::VecDeque;
-
 use super::Labels;
 
 /// Floods `markers` over the pixels where `allowed` is true, lowest
@@ -27,12 +25,15 @@ pub fn watershed(elevation: &[u16], markers: &Labels, allowed: &[bool]) -> Label
     if elevation.len() != n || allowed.len() != n {
         return out;
     }
-    let mut queues: Vec<VecDeque<u32>> = Vec::new();
-    let push = |queues: &mut Vec<VecDeque<u32>>, level: usize, idx: u32| {
+    // One FIFO per level. Pushes never go below the level being flooded,
+    // so each level is a plain Vec read through a cursor (`head`) and
+    // dropped once flooded.
+    let mut queues: Vec<Vec<u32>> = Vec::new();
+    let push = |queues: &mut Vec<Vec<u32>>, level: usize, idx: u32| {
         if queues.len() <= level {
-            queues.resize_with(level + 1, VecDeque::new);
+            queues.resize_with(level + 1, Vec::new);
         }
-        queues[level].push_back(idx);
+        queues[level].push(idx);
     };
     // Seed: every unlabelled allowed neighbour of a marker pixel.
     let mut queued: Vec<bool> = out.data.iter().map(|&l| l != 0).collect();
@@ -51,12 +52,14 @@ pub fn watershed(elevation: &[u16], markers: &Labels, allowed: &[bool]) -> Label
             }
         }
     }
-    let mut level = 0;
+    let (mut level, mut head) = (0, 0);
     while level < queues.len() {
-        let Some(i) = queues[level].pop_front() else {
-            level += 1;
+        let Some(&i) = queues[level].get(head) else {
+            queues[level] = Vec::new();
+            (level, head) = (level + 1, 0);
             continue;
         };
+        head += 1;
         let i = i as usize;
         // Indices fit in u32 (the queues hold them so); u32 division is cheaper.
         let (x, y) = (
