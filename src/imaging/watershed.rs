@@ -20,34 +20,53 @@ use super::Labels;
 /// ```
 pub fn watershed(elevation: &[u16], markers: &Labels, allowed: &[bool]) -> Labels {
     let (w, h) = (markers.width as usize, markers.height as usize);
-    let mut out = markers.clone();
     let n = w * h;
-    if elevation.len() != n || allowed.len() != n {
-        return out;
+    if elevation.len() != n || allowed.len() != n || n == 0 {
+        return markers.clone();
     }
+    // The flood runs in a copy framed by one pixel: every pixel then has
+    // four neighbours at fixed offsets (no bounds checks, no division to
+    // find a pixel's row). The frame is never queued and has no label.
+    let pw = w + 2;
+    let framed = |y: usize| (y + 1) * pw + 1;
+    let mut label = vec![0u32; pw * (h + 2)];
+    let mut height = vec![0u16; pw * (h + 2)];
+    // Queued pixels, and pixels that never will be (labelled, disallowed,
+    // the frame).
+    let mut done = vec![true; pw * (h + 2)];
+    for y in 0..h {
+        let (src, dst) = (y * w..(y + 1) * w, framed(y)..framed(y) + w);
+        label[dst.clone()].copy_from_slice(&markers.data[src.clone()]);
+        height[dst.clone()].copy_from_slice(&elevation[src.clone()]);
+        for ((d, &l), &a) in done[dst]
+            .iter_mut()
+            .zip(&markers.data[src.clone()])
+            .zip(&allowed[src])
+        {
+            *d = l != 0 || !a;
+        }
+    }
+    let offsets = [pw.wrapping_neg(), usize::MAX, 1, pw]; // up, left, right, down
     // One FIFO per level. Pushes never go below the level being flooded,
     // so each level is a plain Vec read through a cursor (`head`) and
     // dropped once flooded.
     let mut queues: Vec<Vec<u32>> = Vec::new();
-    let push = |queues: &mut Vec<Vec<u32>>, level: usize, idx: u32| {
+    let push = |queues: &mut Vec<Vec<u32>>, level: usize, idx: usize| {
         if queues.len() <= level {
             queues.resize_with(level + 1, Vec::new);
         }
-        queues[level].push(idx);
+        queues[level].push(idx as u32);
     };
     // Seed: every unlabelled allowed neighbour of a marker pixel.
-    let mut queued: Vec<bool> = out.data.iter().map(|&l| l != 0).collect();
     for y in 0..h {
-        for x in 0..w {
-            let i = y * w + x;
-            if out.data[i] == 0 {
+        for i in framed(y)..framed(y) + w {
+            if label[i] == 0 {
                 continue;
             }
-            let (nb, k) = neighbour_array(i, x, y, w, h);
-            for &j in &nb[..k] {
-                if !queued[j] && allowed[j] {
-                    queued[j] = true;
-                    push(&mut queues, elevation[j] as usize, j as u32);
+            for j in offsets.map(|o| i.wrapping_add(o)) {
+                if !done[j] {
+                    done[j] = true;
+                    push(&mut queues, usize::from(height[j]), j);
                 }
             }
         }
@@ -61,48 +80,21 @@ pub fn watershed(elevation: &[u16], markers: &Labels, allowed: &[bool]) -> Label
         };
         head += 1;
         let i = i as usize;
-        // Indices fit in u32 (the queues hold them so); u32 division is cheaper.
-        let (x, y) = (
-            (i as u32 % w as u32) as usize,
-            (i as u32 / w as u32) as usize,
-        );
-        let (nb, k) = neighbour_array(i, x, y, w, h);
-        let nb = &nb[..k];
+        let nb = offsets.map(|o| i.wrapping_add(o));
         // Take the label of the first labelled neighbour (all are from the same flood front).
-        let label = nb
-            .iter()
-            .map(|&j| out.data[j])
-            .find(|&l| l != 0)
-            .unwrap_or(0);
-        out.data[i] = label;
-        for &j in nb {
-            if !queued[j] && allowed[j] {
-                queued[j] = true;
-                let lj = (elevation[j] as usize).max(level);
-                push(&mut queues, lj, j as u32);
+        label[i] = nb.iter().map(|&j| label[j]).find(|&l| l != 0).unwrap_or(0);
+        for j in nb {
+            if !done[j] {
+                done[j] = true;
+                push(&mut queues, usize::from(height[j]).max(level), j);
             }
         }
     }
-    out
-}
-
-/// The 4-neighbours of pixel `i` inside a `w × h` image (up, left, right,
-/// down), as an array and its length; `(x, y)` are `i`'s column and row.
-fn neighbour_array(i: usize, x: usize, y: usize, w: usize, h: usize) -> ([usize; 4], usize) {
-    let mut out = [0; 4];
-    let mut k = 0;
-    for (ok, j) in [
-        (y > 0, i.wrapping_sub(w)),
-        (x > 0, i.wrapping_sub(1)),
-        (x + 1 < w, i + 1),
-        (y + 1 < h, i + w),
-    ] {
-        if ok {
-            out[k] = j;
-            k += 1;
-        }
+    let mut out = markers.clone();
+    for (y, row) in out.data.chunks_exact_mut(w).enumerate() {
+        row.copy_from_slice(&label[framed(y)..framed(y) + w]);
     }
-    (out, k)
+    out
 }
 
 #[cfg(test)]
