@@ -50,16 +50,28 @@ pub fn turn_mask(mask: &Mask, deg: f64) -> (Mask, Turn) {
     };
     let src = mask.as_raw();
     let sw = mask.width() as usize;
-    let out = Mask::from_fn(tw as u32, th as u32, |x, y| {
-        let [sx, sy] = turn.back([f64::from(x) + 0.5, f64::from(y) + 0.5]);
-        let inside = sx >= 0.0 && sy >= 0.0 && sx < w && sy < h;
-        let v = if inside {
-            src[sy as usize * sw + sx as usize]
-        } else {
-            0
-        };
-        image::Luma([v])
-    });
+    // `back` per pixel, its products taken once per column and per row
+    // (the same operations in the same order, so the same result).
+    let (tw, th) = (tw as usize, th as usize);
+    let cols: Vec<(f64, f64)> = (0..tw)
+        .map(|x| {
+            let dx = x as f64 + 0.5 - turn.to[0];
+            (dx * cos, dx * sin)
+        })
+        .collect();
+    let mut data = vec![0u8; tw * th];
+    for (y, row) in data.chunks_exact_mut(tw).enumerate() {
+        let dy = y as f64 + 0.5 - turn.to[1];
+        let (dy_sin, dy_cos) = (dy * sin, dy * cos);
+        for (o, &(dx_cos, dx_sin)) in row.iter_mut().zip(&cols) {
+            let sx = turn.from[0] + dx_cos - dy_sin;
+            let sy = turn.from[1] + dx_sin + dy_cos;
+            if sx >= 0.0 && sy >= 0.0 && sx < w && sy < h {
+                *o = src[sy as usize * sw + sx as usize];
+            }
+        }
+    }
+    let out = Mask::from_raw(tw as u32, th as u32, data).unwrap_or_else(|| Mask::new(1, 1));
     (out, turn)
 }
 
