@@ -57,17 +57,16 @@ pub fn watershed(elevation: &[u16], markers: &Labels, allowed: &[bool]) -> Label
         }
         queues[level].push(idx as u32);
     };
-    // Seed: every unlabelled allowed neighbour of a marker pixel.
-    for y in 0..h {
-        for i in framed(y)..framed(y) + w {
-            if label[i] == 0 {
-                continue;
-            }
-            for j in offsets.map(|o| i.wrapping_add(o)) {
-                if !done[j] {
-                    done[j] = true;
-                    push(&mut queues, usize::from(height[j]), j);
-                }
+    // Seed: every unlabelled allowed neighbour of a marker pixel (the
+    // frame has no label, so this is the interior in raster order).
+    for (i, &l) in label.iter().enumerate() {
+        if l == 0 {
+            continue;
+        }
+        for j in offsets.map(|o| i.wrapping_add(o)) {
+            if !done[j] {
+                done[j] = true;
+                push(&mut queues, usize::from(height[j]), j);
             }
         }
     }
