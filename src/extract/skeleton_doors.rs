@@ -25,14 +25,13 @@ pub(crate) fn skeleton_doorways(
 ) -> Vec<bool> {
     let voronoi = dilate(&skeletonize(free), 1.0);
     let opened = open(&erode(free, erode_px), open_px);
-    let band = dilate(free, open_px + 2.0);
-    let mut closed = band.clone();
-    closed
+    // The walls: the band around free space that the opening left out.
+    let mut walls = dilate(free, open_px + 2.0);
+    walls
         .iter_mut()
         .zip(opened.iter())
         .for_each(|(c, &o)| *c = if *c != 0 && o == 0 { 255 } else { 0 });
-    let walls = skeletonize(&closed);
-    let mut meet = walls;
+    let mut meet = skeletonize(&walls);
     meet.iter_mut()
         .zip(voronoi.iter())
         .for_each(|(m, &v)| *m = if *m != 0 && v != 0 { 255 } else { 0 });

@@ -71,7 +71,8 @@ pub fn turn_mask(mask: &Mask, deg: f64) -> (Mask, Turn) {
             }
         }
     }
-    let out = Mask::from_raw(tw as u32, th as u32, data).unwrap_or_else(|| Mask::new(1, 1));
+    let out = Mask::from_raw(tw as u32, th as u32, data)
+        .unwrap_or_else(|| Mask::new(tw as u32, th as u32));
     (out, turn)
 }
 
