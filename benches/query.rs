@@ -8,7 +8,11 @@ use std::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};
 use nrgdb::model::SpaceId;
 use nrgdb::query::{MemorySource, Session, demo};
-use nrgdb::route::{Budget, Route, RouteGraph, RouteRequest, reachable_within, shortest_route};
+use std::sync::Arc;
+
+use nrgdb::route::{
+    Budget, Endpoint, NavMesh, Profile, RouteRequest, reachable_within, shortest_route,
+};
 
 fn session(columns: usize) -> (Session<MemorySource>, usize) {
     let nrg = demo::building(columns);
@@ -24,7 +28,7 @@ fn route_willow_full(c: &mut Criterion) {
         return;
     };
     // From the first room to the room farthest from it along the graph.
-    let graph = RouteGraph::new(&nrg);
+    let nav = NavMesh::new(Arc::new(nrg.clone()));
     let rooms: Vec<SpaceId> = nrg
         .spaces()
         .iter()
@@ -32,7 +36,14 @@ fn route_willow_full(c: &mut Criterion) {
         .map(|s| s.id)
         .collect();
     let from = rooms[0];
-    let reach = reachable_within(&graph, from, f64::MAX, &Budget::unlimited()).unwrap();
+    let reach = reachable_within(
+        &nav,
+        &Endpoint::Space(from),
+        f64::MAX,
+        &Profile::default(),
+        &Budget::unlimited(),
+    )
+    .unwrap();
     let to = reach
         .iter()
         .rev()
@@ -65,24 +76,17 @@ fn route(c: &mut Criterion) {
     }
     // The same search without the query layer, to see where the time goes.
     let nrg = demo::building(1875);
-    let graph = RouteGraph::new(&nrg);
     let far = nrg.spaces().len();
+    let nav = NavMesh::new(Arc::new(nrg));
+    let from = Endpoint::Space(SpaceId(3));
+    let p = Profile::default();
     c.bench_function(&format!("route/reachable-all/{far}-spaces"), |b| {
-        b.iter(|| reachable_within(&graph, SpaceId(3), 1e9, &Budget::unlimited()).unwrap())
+        b.iter(|| reachable_within(&nav, &from, 1e9, &p, &Budget::unlimited()).unwrap())
     });
-    let path: Vec<SpaceId> = shortest_route(
-        &graph,
-        &nrg,
-        &RouteRequest::new(SpaceId(3), SpaceId(9375)),
-        &Budget::unlimited(),
-    )
-    .unwrap()
-    .remove(0)
-    .spaces;
-    c.bench_function(
-        &format!("route/answer-from-path/{}-steps", path.len()),
-        |b| b.iter(|| Route::from_path(&nrg, black_box(path.clone()))),
-    );
+    let request = RouteRequest::new(SpaceId(3), SpaceId(9375));
+    c.bench_function(&format!("route/shortest/{far}-spaces"), |b| {
+        b.iter(|| shortest_route(&nav, black_box(&request), &Budget::unlimited()).unwrap())
+    });
     let (mut s, spaces) = session(28);
     let query = "ROUTE FROM \"Kitchen\" TO \"Lounge\" ALTERNATIVES 3";
     c.bench_function(

@@ -15,7 +15,7 @@ use crate::extract::{ExtractParams, extract};
 use crate::grid::{Cell, LoadOptions, load_map};
 use crate::model::{Nrg, SpaceId, SpaceKind};
 use crate::query::{Format, Session};
-use crate::route::{Budget, RouteGraph, RouteRequest, shortest_route};
+use crate::route::{Budget, NavMesh, RouteRequest, shortest_route};
 use crate::sim::{SimParams, simulate, write_simulation};
 use crate::store::{ImportMeta, Store};
 
@@ -236,7 +236,7 @@ fn census(nrg: &Nrg) -> String {
 
 /// The route between two rooms with the most doors on it (ties: longer).
 fn longest_room_route(nrg: &Nrg) -> Option<(SpaceId, SpaceId, crate::route::Route)> {
-    let graph = RouteGraph::new(nrg);
+    let nav = NavMesh::new(std::sync::Arc::new(nrg.clone()));
     let rooms: Vec<SpaceId> = nrg
         .spaces()
         .iter()
@@ -248,7 +248,7 @@ fn longest_room_route(nrg: &Nrg) -> Option<(SpaceId, SpaceId, crate::route::Rout
     rooms[1..]
         .iter()
         .filter_map(|&to| {
-            let routes = shortest_route(&graph, nrg, &RouteRequest::new(from, to), &budget).ok()?;
+            let routes = shortest_route(&nav, &RouteRequest::new(from, to), &budget).ok()?;
             routes.into_iter().next().map(|r| (from, to, r))
         })
         .filter(|(_, _, r)| !r.doors.is_empty())

@@ -10,7 +10,7 @@ use miette::{IntoDiagnostic, WrapErr};
 use nrgdb::grid::{LoadOptions, OccupancyGrid, load_map};
 use nrgdb::model::{Nrg, SpaceId};
 use nrgdb::render::{LabelMode, RenderOptions, RouteOverlay, Scene, diff_overlay, render_svg};
-use nrgdb::route::{Budget, RouteGraph, RouteRequest, shortest_route};
+use nrgdb::route::{Budget, NavMesh, RouteRequest, shortest_route};
 
 use super::db::{DbArg, parse_map_rev};
 use super::load_model;
@@ -269,10 +269,11 @@ fn find_space(nrg: &Nrg, text: &str) -> miette::Result<SpaceId> {
 /// is no route.
 fn route_overlay(nrg: &Nrg, from: &str, to: &str) -> miette::Result<Option<RouteOverlay>> {
     let request = RouteRequest::new(find_space(nrg, from)?, find_space(nrg, to)?);
-    let routes = shortest_route(&RouteGraph::new(nrg), nrg, &request, &Budget::unlimited())
+    let nav = NavMesh::new(std::sync::Arc::new(nrg.clone()));
+    let routes = shortest_route(&nav, &request, &Budget::unlimited())
         .into_diagnostic()
         .wrap_err_with(|| format!("--route {from} {to}"))?;
     Ok(routes
         .first()
-        .map(|r| RouteOverlay::along(nrg, &r.spaces, r.length_m)))
+        .map(|r| RouteOverlay::along(nrg, &r.spaces, r.waypoints.clone(), r.length_m)))
 }

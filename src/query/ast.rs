@@ -8,7 +8,9 @@ use crate::model::{SpaceId, SpaceKind};
 /// One statement.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Statement {
-    /// `ROUTE FROM a TO b [VIA c, …] [AVOID d, …] [ALTERNATIVES k]`.
+    /// `ROUTE FROM a TO b [VIA c, …] [AVOID d, …] [ALTERNATIVES k]
+    /// [WITH CLEARANCE r, MIN_DOOR_WIDTH w, SPEED v]`. A point end is the
+    /// point itself; a space end is its anchor.
     Route {
         /// Start.
         from: SpaceRef,
@@ -20,6 +22,8 @@ pub enum Statement {
         avoid: Vec<SpaceRef>,
         /// Number of routes, if given.
         alternatives: Option<u32>,
+        /// `WITH …` options of the walker.
+        with: WalkOptions,
     },
     /// `NEIGHBOURS OF a [DEPTH n]`.
     Neighbours {
@@ -44,12 +48,14 @@ pub enum Statement {
         /// The point in metres.
         point: [f64; 2],
     },
-    /// `REACHABLE FROM a WITHIN d` (metres).
+    /// `REACHABLE FROM a WITHIN d [WITH …]` (metres walked).
     Reachable {
         /// Start.
         from: SpaceRef,
         /// Distance bound in metres.
         within_m: f64,
+        /// `WITH …` options of the walker.
+        with: WalkOptions,
     },
     /// `SHOW MAPS`.
     ShowMaps,
@@ -214,6 +220,35 @@ fn number(x: f64) -> String {
     format!("{x:?}")
 }
 
+/// The walker options of `WITH CLEARANCE r, MIN_DOOR_WIDTH w, SPEED v`;
+/// `None` keeps the default.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct WalkOptions {
+    /// Clearance from walls, metres.
+    pub clearance_m: Option<f64>,
+    /// Narrowest door passed, metres.
+    pub min_door_width_m: Option<f64>,
+    /// Walking speed, metres per second.
+    pub speed_m_s: Option<f64>,
+}
+
+impl fmt::Display for WalkOptions {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let parts: Vec<String> = [
+            ("CLEARANCE", self.clearance_m),
+            ("MIN_DOOR_WIDTH", self.min_door_width_m),
+            ("SPEED", self.speed_m_s),
+        ]
+        .iter()
+        .filter_map(|(k, v)| v.map(|v| format!("{k} {}", number(v))))
+        .collect();
+        if !parts.is_empty() {
+            write!(f, " WITH {}", parts.join(", "))?;
+        }
+        Ok(())
+    }
+}
+
 fn list(refs: &[SpaceRef]) -> String {
     refs.iter()
         .map(ToString::to_string)
@@ -230,6 +265,7 @@ impl fmt::Display for Statement {
                 via,
                 avoid,
                 alternatives,
+                with,
             } => {
                 write!(f, "ROUTE FROM {from} TO {to}")?;
                 if !via.is_empty() {
@@ -241,7 +277,7 @@ impl fmt::Display for Statement {
                 if let Some(k) = alternatives {
                     write!(f, " ALTERNATIVES {k}")?;
                 }
-                Ok(())
+                write!(f, "{with}")
             }
             Statement::Neighbours { of, depth } => {
                 write!(f, "NEIGHBOURS OF {of}")?;
@@ -279,8 +315,16 @@ impl fmt::Display for Statement {
             Statement::Locate { point } => {
                 write!(f, "LOCATE ({}, {})", number(point[0]), number(point[1]))
             }
-            Statement::Reachable { from, within_m } => {
-                write!(f, "REACHABLE FROM {from} WITHIN {}", number(*within_m))
+            Statement::Reachable {
+                from,
+                within_m,
+                with,
+            } => {
+                write!(
+                    f,
+                    "REACHABLE FROM {from} WITHIN {}{with}",
+                    number(*within_m)
+                )
             }
             Statement::ShowMaps => f.write_str("SHOW MAPS"),
             Statement::ShowRevisions { map: None } => f.write_str("SHOW REVISIONS"),

@@ -10,7 +10,7 @@ use super::index::{IndexedRevision, width_m};
 use super::plan::Plan;
 use super::result::{Cell, QueryResult, Table};
 use crate::model::{Space, SpaceId, SpaceKind};
-use crate::route::{Budget, RouteError, reachable_within, shortest_route};
+use crate::route::{Budget, RouteError, no_route_reason, reachable_within, shortest_route};
 
 /// Bounds on one statement: wall-clock time and rows returned.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -64,12 +64,15 @@ pub fn execute(
     let budget = Budget::new(limits.timeout);
     let result = match plan {
         Plan::Route(request) => {
-            let routes =
-                shortest_route(&rev.graph, &rev.nrg, request, &budget).map_err(|e| match e {
-                    RouteError::Timeout(ms) => QueryError::Timeout(ms),
-                    other => QueryError::Route(other),
-                })?;
-            QueryResult::Routes(routes)
+            let routes = shortest_route(&rev.nav, request, &budget).map_err(|e| match e {
+                RouteError::Timeout(ms) => QueryError::Timeout(ms),
+                other => QueryError::Route(other),
+            })?;
+            if routes.is_empty() {
+                QueryResult::Message(no_route_reason(&rev.nav, request))
+            } else {
+                QueryResult::Routes(routes)
+            }
         }
         Plan::Neighbours { of, depth } => neighbours(rev, *of, *depth, &budget)?,
         Plan::Find {
@@ -147,12 +150,17 @@ pub fn execute(
                 rows,
             })
         }
-        Plan::Reachable { from, within_m } => {
-            let reach =
-                reachable_within(&rev.graph, *from, *within_m, &budget).map_err(|e| match e {
+        Plan::Reachable {
+            from,
+            within_m,
+            profile,
+        } => {
+            let reach = reachable_within(&rev.nav, from, *within_m, profile, &budget).map_err(
+                |e| match e {
                     RouteError::Timeout(ms) => QueryError::Timeout(ms),
                     other => QueryError::Route(other),
-                })?;
+                },
+            )?;
             let rows = reach
                 .into_iter()
                 .filter_map(|(id, d)| rev.nrg.space(id).map(|s| (s, d)))

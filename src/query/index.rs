@@ -11,7 +11,9 @@ use super::ast::SpaceRef;
 use super::error::QueryError;
 use super::suggest::suggest;
 use crate::model::{Nrg, Point, Space, SpaceId, point_in_ring};
-use crate::route::RouteGraph;
+use std::sync::Arc;
+
+use crate::route::{NavMesh, RouteError, RouteGraph};
 
 type Envelope = GeomWithData<Rectangle<[f64; 2]>, usize>;
 
@@ -23,9 +25,11 @@ pub struct IndexedRevision {
     /// The revision number.
     pub revision: u64,
     /// The model.
-    pub nrg: Nrg,
-    /// Navigable adjacency for routing.
+    pub nrg: Arc<Nrg>,
+    /// Navigable adjacency (NEIGHBOURS).
     pub graph: RouteGraph,
+    /// The navigation layer (ROUTE, REACHABLE).
+    pub nav: NavMesh,
     envelopes: RTree<Envelope>,
     names: HashMap<String, Vec<SpaceId>>,
 }
@@ -34,6 +38,8 @@ impl IndexedRevision {
     /// Indexes `nrg` as `map` at `revision`.
     pub fn new(map: &str, revision: u64, nrg: Nrg) -> IndexedRevision {
         let graph = RouteGraph::new(&nrg);
+        let nrg = Arc::new(nrg);
+        let nav = NavMesh::new(nrg.clone());
         let envelopes = nrg
             .spaces()
             .iter()
@@ -61,6 +67,7 @@ impl IndexedRevision {
             revision,
             nrg,
             graph,
+            nav,
             envelopes: RTree::bulk_load(envelopes),
             names,
         }
@@ -76,6 +83,11 @@ impl IndexedRevision {
                 point_in_ring(p, &s.polygon) && !s.holes.iter().any(|h| point_in_ring(p, h))
             })
             .min_by(|a, b| a.area_m2.total_cmp(&b.area_m2).then(a.id.cmp(&b.id)))
+    }
+
+    /// The error for a point outside every space, naming the nearest one.
+    pub fn outside(&self, p: Point) -> RouteError {
+        self.nav.outside(p)
     }
 
     /// Resolves a reference to a space id, with helpful errors.

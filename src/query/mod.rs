@@ -37,7 +37,8 @@ mod source;
 mod suggest;
 
 pub use ast::{
-    CompareOp, Condition, Field, OrderKey, SpaceRef, Statement, Value, is_identifier, quote,
+    CompareOp, Condition, Field, OrderKey, SpaceRef, Statement, Value, WalkOptions, is_identifier,
+    quote,
 };
 pub use error::{QueryError, SourceError, Span};
 pub use exec::{Limits, execute};

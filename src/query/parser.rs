@@ -2,7 +2,7 @@
 //! Errors point at the offending token, list what was expected and suggest
 //! the keyword it most likely meant.
 
-use super::ast::{CompareOp, Condition, Field, OrderKey, SpaceRef, Statement, Value};
+use super::ast::{CompareOp, Condition, Field, OrderKey, SpaceRef, Statement, Value, WalkOptions};
 use super::error::QueryError;
 use super::lexer::{Token, TokenKind, lex};
 use super::suggest::suggest;
@@ -24,7 +24,7 @@ pub const STATEMENT_KEYWORDS: [&str; 11] = [
 ];
 
 /// Every keyword of the language (for completion and highlighting).
-pub const KEYWORDS: [&str; 37] = [
+pub const KEYWORDS: [&str; 41] = [
     "ROUTE",
     "NEIGHBOURS",
     "NEIGHBORS",
@@ -50,6 +50,10 @@ pub const KEYWORDS: [&str; 37] = [
     "DESC",
     "LIMIT",
     "WITHIN",
+    "WITH",
+    "CLEARANCE",
+    "MIN_DOOR_WIDTH",
+    "SPEED",
     "MAPS",
     "REVISIONS",
     "AT",
@@ -251,7 +255,12 @@ impl Parser {
                 let from = self.space_ref()?;
                 self.expect_word("WITHIN")?;
                 let within_m = self.number()?;
-                Ok(Statement::Reachable { from, within_m })
+                let with = self.walk_options()?;
+                Ok(Statement::Reachable {
+                    from,
+                    within_m,
+                    with,
+                })
             }
             "SHOW" => {
                 if self.eat_word("MAPS") {
@@ -313,13 +322,44 @@ impl Parser {
         } else {
             None
         };
+        let with = self.walk_options()?;
         Ok(Statement::Route {
             from,
             to,
             via,
             avoid,
             alternatives,
+            with,
         })
+    }
+
+    /// `[WITH CLEARANCE r [,] MIN_DOOR_WIDTH w [,] SPEED v]`, any order,
+    /// each at most once.
+    fn walk_options(&mut self) -> Result<WalkOptions, QueryError> {
+        let mut with = WalkOptions::default();
+        if !self.eat_word("WITH") {
+            return Ok(with);
+        }
+        const OPTIONS: [&str; 3] = ["CLEARANCE", "MIN_DOOR_WIDTH", "SPEED"];
+        loop {
+            let slot = if self.eat_word("CLEARANCE") {
+                &mut with.clearance_m
+            } else if self.eat_word("MIN_DOOR_WIDTH") {
+                &mut with.min_door_width_m
+            } else if self.eat_word("SPEED") {
+                &mut with.speed_m_s
+            } else {
+                return Err(self.expected(&OPTIONS));
+            };
+            if slot.is_some() {
+                return Err(self.expected(&["each WITH option once"]));
+            }
+            *slot = Some(self.number()?);
+            self.eat_punct(",");
+            if !OPTIONS.iter().any(|o| self.at_word(o)) {
+                return Ok(with);
+            }
+        }
     }
 
     fn ref_list(&mut self) -> Result<Vec<SpaceRef>, QueryError> {

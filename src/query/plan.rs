@@ -3,16 +3,16 @@
 
 use std::fmt;
 
-use super::ast::{Condition, OrderKey, Statement};
+use super::ast::{Condition, OrderKey, SpaceRef, Statement, WalkOptions};
 use super::error::QueryError;
 use super::index::IndexedRevision;
 use crate::model::{Point, SpaceId, SpaceKind};
-use crate::route::RouteRequest;
+use crate::route::{Endpoint, Profile, RouteRequest};
 
 /// What the executor will do.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Plan {
-    /// Dijkstra per leg, or Yen for alternatives.
+    /// A* over the navigation layer per leg, or door-distinct alternatives.
     Route(RouteRequest),
     /// Breadth-first search over navigable connections.
     Neighbours {
@@ -34,12 +34,14 @@ pub enum Plan {
     },
     /// R*-tree then point-in-polygon.
     Locate(Point),
-    /// Distance-bounded Dijkstra.
+    /// Distance-bounded Dijkstra over the navigation layer.
     Reachable {
         /// Start.
-        from: SpaceId,
-        /// Bound in metres.
+        from: Endpoint,
+        /// Bound in metres walked.
         within_m: f64,
+        /// The walker.
+        profile: Profile,
     },
     /// List maps.
     ShowMaps,
@@ -70,17 +72,22 @@ pub fn plan(
             via,
             avoid,
             alternatives,
+            with,
         } => {
             let m = model()?;
-            let resolve = |refs: &[super::ast::SpaceRef]| -> Result<Vec<SpaceId>, QueryError> {
+            let resolve = |refs: &[SpaceRef]| -> Result<Vec<SpaceId>, QueryError> {
                 refs.iter().map(|r| m.resolve(r)).collect()
             };
+            let ends = |refs: &[SpaceRef]| -> Result<Vec<Endpoint>, QueryError> {
+                refs.iter().map(|r| endpoint(m, r)).collect()
+            };
             Plan::Route(RouteRequest {
-                from: m.resolve(from)?,
-                to: m.resolve(to)?,
-                via: resolve(via)?,
+                from: endpoint(m, from)?,
+                to: endpoint(m, to)?,
+                via: ends(via)?,
                 avoid: resolve(avoid)?,
                 alternatives: alternatives.unwrap_or(1).max(1) as usize,
+                profile: profile(with)?,
             })
         }
         Statement::Neighbours { of, depth } => Plan::Neighbours {
@@ -105,9 +112,14 @@ pub fn plan(
             model()?;
             Plan::Locate(*point)
         }
-        Statement::Reachable { from, within_m } => Plan::Reachable {
-            from: model()?.resolve(from)?,
+        Statement::Reachable {
+            from,
+            within_m,
+            with,
+        } => Plan::Reachable {
+            from: endpoint(model()?, from)?,
             within_m: *within_m,
+            profile: profile(with)?,
         },
         Statement::ShowMaps => Plan::ShowMaps,
         Statement::ShowRevisions { map } => match map.as_deref().or(current_map) {
@@ -121,6 +133,44 @@ pub fn plan(
     })
 }
 
+/// A route end: a point stays a point (checked to lie in a space, with
+/// the nearest space named otherwise); anything else is a space.
+fn endpoint(m: &IndexedRevision, r: &SpaceRef) -> Result<Endpoint, QueryError> {
+    match r {
+        SpaceRef::Point(p) => {
+            m.nav
+                .locate(*p)
+                .ok_or_else(|| QueryError::Route(m.outside(*p)))?;
+            Ok(Endpoint::Point(*p))
+        }
+        other => Ok(Endpoint::Space(m.resolve(other)?)),
+    }
+}
+
+/// The walker of `WITH …` over the default profile.
+fn profile(with: &WalkOptions) -> Result<Profile, QueryError> {
+    let d = Profile::default();
+    let p = Profile {
+        clearance_m: with.clearance_m.unwrap_or(d.clearance_m),
+        min_door_width_m: with.min_door_width_m.unwrap_or(d.min_door_width_m),
+        speed_m_s: with.speed_m_s.unwrap_or(d.speed_m_s),
+    };
+    p.validate().map_err(QueryError::Route)?;
+    Ok(p)
+}
+
+fn endpoints(list: &[Endpoint]) -> String {
+    let v: Vec<String> = list.iter().map(endpoint_text).collect();
+    v.join(", ")
+}
+
+fn endpoint_text(e: &Endpoint) -> String {
+    match e {
+        Endpoint::Space(id) => id.to_string(),
+        Endpoint::Point(p) => format!("({}, {})", p[0], p[1]),
+    }
+}
+
 fn ids(list: &[SpaceId]) -> String {
     let v: Vec<String> = list.iter().map(ToString::to_string).collect();
     v.join(", ")
@@ -130,28 +180,28 @@ impl fmt::Display for Plan {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Plan::Route(r) => {
+                let (from, to) = (endpoint_text(&r.from), endpoint_text(&r.to));
                 if r.alternatives > 1 {
                     writeln!(
                         f,
-                        "Yen k={} loopless routes {} -> {}",
-                        r.alternatives, r.from, r.to
+                        "DoorDistinct k={} routes {from} -> {to} (Yen over doors)",
+                        r.alternatives
                     )?;
                 } else {
-                    writeln!(
-                        f,
-                        "Dijkstra {} leg(s) {} -> {}",
-                        r.via.len() + 1,
-                        r.from,
-                        r.to
-                    )?;
+                    writeln!(f, "AStar {} leg(s) {from} -> {to}", r.via.len() + 1)?;
                 }
                 if !r.via.is_empty() {
-                    writeln!(f, "  via [{}]", ids(&r.via))?;
+                    writeln!(f, "  via [{}]", endpoints(&r.via))?;
                 }
                 if !r.avoid.is_empty() {
                     writeln!(f, "  avoid [{}]", ids(&r.avoid))?;
                 }
-                write!(f, "  over navigable graph (lengths in metres)")
+                writeln!(
+                    f,
+                    "  over gates of the navigation layer (clearance {} m, min door width {} m)",
+                    r.profile.clearance_m, r.profile.min_door_width_m
+                )?;
+                write!(f, "  Funnel through the triangle channel (walked metres)")
             }
             Plan::Neighbours { of, depth } => {
                 write!(
@@ -196,9 +246,16 @@ impl fmt::Display for Plan {
                 "RTreeEnvelopes at ({}, {})\n  PointInPolygon, smallest area wins",
                 p[0], p[1]
             ),
-            Plan::Reachable { from, within_m } => {
-                write!(f, "BoundedDijkstra from {from} within {within_m} m")
-            }
+            Plan::Reachable {
+                from,
+                within_m,
+                profile,
+            } => write!(
+                f,
+                "BoundedDijkstra over gates from {} within {within_m} m walked (clearance {} m)",
+                endpoint_text(from),
+                profile.clearance_m
+            ),
             Plan::ShowMaps => write!(f, "SourceMaps"),
             Plan::ShowRevisions(m) => write!(f, "SourceRevisions of '{m}'"),
             Plan::Use(m, r) => match r {

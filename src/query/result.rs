@@ -87,16 +87,14 @@ impl QueryResult {
 
     fn route_table(route: &Route) -> Table {
         Table {
-            columns: ["step", "space", "x_m", "y_m"].map(String::from).to_vec(),
+            columns: ["point", "x_m", "y_m"].map(String::from).to_vec(),
             rows: route
-                .spaces
+                .waypoints
                 .iter()
-                .zip(&route.waypoints)
                 .enumerate()
-                .map(|(i, (s, p))| {
+                .map(|(i, p)| {
                     vec![
                         Cell::Int(i as i64 + 1),
-                        Cell::Int(s.0.into()),
                         Cell::Float(p[0]),
                         Cell::Float(p[1]),
                     ]
@@ -116,9 +114,10 @@ impl QueryResult {
                     let doors: Vec<String> = r.doors.iter().map(ToString::to_string).collect();
                     let _ = writeln!(
                         out,
-                        "route {}: {:.2} m, {} spaces, doors [{}]",
+                        "route {}: {:.2} m walked ({:.0} s), {} spaces, doors [{}]",
                         i + 1,
                         r.length_m,
+                        r.duration_s,
                         r.spaces.len(),
                         doors.join(", ")
                     );

@@ -77,20 +77,22 @@ pub struct RouteOverlay {
 }
 
 impl RouteOverlay {
-    /// The overlay of a path of spaces: waypoints at their anchors, the door
-    /// spaces among them marked; unknown ids are skipped.
+    /// The overlay of a walked route: its polyline, and the door spaces
+    /// among the spaces it passes marked at their anchors; unknown ids are
+    /// skipped.
     ///
     /// ```
     /// use nrgdb::model::SpaceId;
     /// let nrg = nrgdb::fixtures::corridor_building(2);
-    /// let r = nrgdb::render::RouteOverlay::along(&nrg, &[SpaceId(10), SpaceId(10_000), SpaceId(1)], 3.6);
+    /// let line = vec![[0.0, 0.0], [1.0, 0.0], [1.0, 2.0]];
+    /// let r = nrgdb::render::RouteOverlay::along(&nrg, &[SpaceId(10), SpaceId(10_000), SpaceId(1)], line, 3.0);
     /// assert_eq!((r.waypoints.len(), r.doors.len()), (3, 1));
     /// ```
-    pub fn along(nrg: &Nrg, path: &[SpaceId], length_m: f64) -> RouteOverlay {
+    pub fn along(nrg: &Nrg, path: &[SpaceId], polyline: Vec<Point>, length_m: f64) -> RouteOverlay {
         let spaces: Vec<&crate::model::Space> =
             path.iter().filter_map(|id| nrg.space(*id)).collect();
         RouteOverlay {
-            waypoints: spaces.iter().map(|s| s.anchor).collect(),
+            waypoints: polyline,
             doors: spaces
                 .iter()
                 .filter(|s| s.kind == SpaceKind::Door)

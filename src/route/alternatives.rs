@@ -1,68 +1,95 @@
-//! k loopless alternative routes: Yen's algorithm (Yen 1971, via the
-//! `pathfinding` crate), shortest first.
+//! k alternative routes, distinct by the doors they use: Yen's idea on
+//! doors (Yen 1971) — each next route is the shortest that avoids one more
+//! door of a route already found, shortest first.
 
-use pathfinding::directed::yen::yen;
+use std::collections::HashSet;
 
-use super::shortest_route::prepare;
-use super::{Budget, Route, RouteError, RouteGraph, RouteRequest};
-use crate::model::Nrg;
+use super::shortest_route::{check_request, route_avoiding};
+use super::{Budget, Endpoint, NavMesh, Route, RouteError, RouteRequest};
+use crate::model::SpaceId;
 
-/// Up to `request.alternatives` loopless routes from `request.from` to
-/// `request.to` avoiding `request.avoid`, in non-decreasing length. Waypoints
-/// are not supported here (see [`super::shortest_route`]).
+/// Most routes returned.
+pub const MAX_ALTERNATIVES: usize = 10;
+
+/// Up to `request.alternatives` (at most 10) routes from `request.from` to
+/// `request.to` avoiding `request.avoid`, each through a different sequence
+/// of doors, in non-decreasing length. Waypoints are not supported here.
 pub fn alternatives(
-    graph: &RouteGraph,
-    nrg: &Nrg,
+    nav: &NavMesh,
     request: &RouteRequest,
     budget: &Budget,
 ) -> Result<Vec<Route>, RouteError> {
     if !request.via.is_empty() {
         return Err(RouteError::AlternativesWithVia);
     }
-    let (stops, avoided) = prepare(graph, request)?;
-    let (from, to) = (stops[0], stops[stops.len() - 1]);
-    let found = yen(
-        &from,
-        |n| {
-            let stop = budget.check();
-            graph
-                .edges(*n)
-                .iter()
-                .filter(|(m, _)| !stop && !avoided[*m as usize])
-                .copied()
-                .collect::<Vec<_>>()
-        },
-        |n| *n == to,
-        request.alternatives.max(1),
-    );
-    if budget.is_expired() {
-        return Err(RouteError::Timeout(budget.limit_ms()));
-    }
-    Ok(found
-        .into_iter()
-        .map(|(nodes, _)| {
-            Route::from_path(nrg, nodes.into_iter().map(|n| graph.space(n)).collect())
+    check_request(nav, request)?;
+    let k = request.alternatives.clamp(1, MAX_ALTERNATIVES);
+    let ends: Vec<SpaceId> = [&request.from, &request.to]
+        .iter()
+        .filter_map(|e| match e {
+            Endpoint::Space(id) => Some(*id),
+            Endpoint::Point(_) => None,
         })
-        .collect())
+        .collect();
+    let mut base = request.avoid.clone();
+    base.sort_unstable();
+    let Some(best) = route_avoiding(nav, request, &base, budget)? else {
+        return Ok(Vec::new());
+    };
+    let mut seen: HashSet<Vec<SpaceId>> = HashSet::from([best.doors.clone()]);
+    let mut tried: HashSet<Vec<SpaceId>> = HashSet::from([base.clone()]);
+    let mut found = vec![(best, base)];
+    let mut candidates: Vec<(Route, Vec<SpaceId>)> = Vec::new();
+    while found.len() < k {
+        let (last, last_avoid) = &found[found.len() - 1];
+        for door in &last.doors {
+            if ends.contains(door) || last_avoid.contains(door) {
+                continue;
+            }
+            let mut avoid = last_avoid.clone();
+            avoid.push(*door);
+            avoid.sort_unstable();
+            if !tried.insert(avoid.clone()) {
+                continue;
+            }
+            if let Some(route) = route_avoiding(nav, request, &avoid, budget)?
+                && seen.insert(route.doors.clone())
+            {
+                candidates.push((route, avoid));
+            }
+        }
+        let Some(next) = candidates
+            .iter()
+            .enumerate()
+            .min_by(|a, b| a.1.0.length_m.total_cmp(&b.1.0.length_m))
+            .map(|(i, _)| i)
+        else {
+            break;
+        };
+        found.push(candidates.swap_remove(next));
+    }
+    Ok(found.into_iter().map(|(r, _)| r).collect())
 }
 
 #[cfg(test)]
 mod tests {
+    use std::sync::Arc;
+
     use super::*;
     use crate::query::demo;
 
     #[test]
     fn alternatives_are_distinct_and_sorted() {
         let nrg = demo::building(6);
-        let g = RouteGraph::new(&nrg);
         let find = |l: &str| nrg.spaces().iter().find(|s| s.label() == l).unwrap().id;
         let mut req = RouteRequest::new(find("Kitchen"), find("Lounge"));
         req.alternatives = 3;
-        let routes = alternatives(&g, &nrg, &req, &Budget::unlimited()).unwrap();
+        let nav = NavMesh::new(Arc::new(nrg.clone()));
+        let routes = alternatives(&nav, &req, &Budget::unlimited()).unwrap();
         assert!(routes.len() >= 2, "the demo building has a shortcut door");
         for w in routes.windows(2) {
             assert!(w[0].length_m <= w[1].length_m + 1e-9);
-            assert_ne!(w[0].spaces, w[1].spaces);
+            assert_ne!(w[0].doors, w[1].doors);
         }
     }
 }

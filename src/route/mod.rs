@@ -1,114 +1,111 @@
-//! Routing over an [`Nrg`]: shortest routes by metric length through the
-//! anchors of the spaces (door spaces included) on the navigable graph, with
-//! ordered waypoints (VIA), excluded spaces (AVOID), k loopless alternatives
-//! (Yen) and a distance-bounded reach.
+//! Routing over an [`Nrg`]: walked paths through free space. The
+//! navigation layer ([`NavMesh`]) triangulates the spaces; a route is the
+//! shortest walkable polyline between two end points (spaces' anchors or
+//! points) through doorways and open boundaries, keeping a clearance from
+//! walls, with ordered waypoints (VIA), excluded spaces (AVOID), k
+//! alternatives distinct by the doors they use, a distance-bounded reach,
+//! and readable steps with distances and turns.
 //!
-//! Owns [`RouteGraph`], [`RouteRequest`], [`Route`] and the algorithms, a file
-//! each. Uses `model` and `pathfinding`. Must not use store, query, server
-//! or the terminal. "No route" is an answer (an empty list), not an error.
+//! Owns [`NavMesh`], [`RouteRequest`], [`Route`], [`Step`], the algorithms
+//! (a file each) and [`RouteGraph`] (the topological adjacency NEIGHBOURS
+//! walks). Uses `model`, `spade` and `pathfinding`. Must not use store,
+//! query, server or the terminal. "No route" is an answer (an empty list)
+//! with a reason ([`no_route_reason`]), not an error.
 //!
 //! ```
+//! use std::sync::Arc;
 //! use nrgdb::model::SpaceId;
 //! use nrgdb::query::demo;
-//! use nrgdb::route::{Budget, RouteGraph, RouteRequest, shortest_route};
-//! let nrg = demo::building(4);
-//! let graph = RouteGraph::new(&nrg);
+//! use nrgdb::route::{Budget, NavMesh, RouteRequest, shortest_route};
+//! let nav = NavMesh::new(Arc::new(demo::building(4)));
 //! // From the Kitchen (3) to the lower room of the last segment (20).
 //! let request = RouteRequest::new(SpaceId(3), SpaceId(20));
-//! let routes = shortest_route(&graph, &nrg, &request, &Budget::unlimited()).unwrap();
+//! let routes = shortest_route(&nav, &request, &Budget::unlimited()).unwrap();
 //! assert_eq!(routes.len(), 1);
 //! assert!(routes[0].length_m > 0.0);
 //! ```
 
 mod alternatives;
 mod budget;
+mod connection_walks;
 mod error;
 mod graph;
+mod nav;
+mod no_route;
 mod reachable;
 mod shortest_route;
 mod steps;
 
 pub use alternatives::alternatives;
 pub use budget::Budget;
+pub use connection_walks::{ConnectionWalk, connection_walks, with_walked_lengths};
 pub use error::RouteError;
 pub use graph::RouteGraph;
+pub use nav::{Endpoint, MAX_CLEARANCE_M, NavMesh, Profile};
+pub use no_route::no_route_reason;
 pub use reachable::reachable_within;
 pub use shortest_route::shortest_route;
-pub use steps::describe_steps;
+pub use steps::{Step, Turn};
 
 use serde::Serialize;
 
-use crate::model::{Nrg, Point, SpaceId, SpaceKind};
+use crate::model::{Point, SpaceId};
 
-/// What to route: from, to, ordered waypoints, excluded spaces and how many
-/// alternatives (1 = just the shortest).
+/// What to route: from, to, ordered waypoints, excluded spaces, how many
+/// alternatives (1 = just the shortest) and the walker's profile.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RouteRequest {
-    /// Start space.
-    pub from: SpaceId,
-    /// Goal space.
-    pub to: SpaceId,
-    /// Spaces to pass through, in order.
-    pub via: Vec<SpaceId>,
+    /// Start.
+    pub from: Endpoint,
+    /// Goal.
+    pub to: Endpoint,
+    /// Places to pass through, in order.
+    pub via: Vec<Endpoint>,
     /// Spaces the route must not enter.
     pub avoid: Vec<SpaceId>,
     /// Number of routes wanted (at least 1).
     pub alternatives: usize,
+    /// Clearance, narrowest door and speed.
+    pub profile: Profile,
 }
 
 impl RouteRequest {
-    /// The plain shortest route from `from` to `to`.
+    /// The plain shortest route between the anchors of two spaces, with
+    /// the default profile.
     pub fn new(from: SpaceId, to: SpaceId) -> RouteRequest {
+        RouteRequest::between(Endpoint::Space(from), Endpoint::Space(to))
+    }
+
+    /// The plain shortest route between two end points, default profile.
+    pub fn between(from: Endpoint, to: Endpoint) -> RouteRequest {
         RouteRequest {
             from,
             to,
             via: Vec::new(),
             avoid: Vec::new(),
             alternatives: 1,
+            profile: Profile::default(),
         }
     }
 }
 
-/// One route: the spaces passed in order, the doors among them, its length
-/// and waypoints in metres (map frame), and readable steps.
+/// One route: the spaces passed in order, the doors among them, the walked
+/// length and polyline in metres (map frame), duration, and readable steps.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Route {
     /// Every space entered, start and goal included.
     pub spaces: Vec<SpaceId>,
     /// The door spaces passed, in order.
     pub doors: Vec<SpaceId>,
-    /// Total length in metres (sum of the connections' `length_m`).
+    /// Walked length in metres (the length of `waypoints`).
     pub length_m: f64,
-    /// The anchors of `spaces`, in metres.
+    /// Walked length of each leg between consecutive stops (one leg
+    /// without VIA).
+    pub leg_lengths_m: Vec<f64>,
+    /// Walking time at the profile's speed, seconds.
+    pub duration_s: f64,
+    /// The whole walked polyline, start and goal included.
     pub waypoints: Vec<Point>,
-    /// Human-readable steps ("leave Kitchen through door 7 into corridor 3").
-    pub steps: Vec<String>,
-}
-
-impl Route {
-    /// Builds a route from a path of spaces: doors, length, waypoints, steps.
-    pub fn from_path(nrg: &Nrg, path: Vec<SpaceId>) -> Route {
-        let doors = path
-            .iter()
-            .filter(|id| nrg.space(**id).is_some_and(|s| s.kind == SpaceKind::Door))
-            .copied()
-            .collect();
-        let length_m = path
-            .windows(2)
-            .filter_map(|w| nrg.connection(w[0], w[1]))
-            .map(|c| c.length_m)
-            .sum();
-        let waypoints = path
-            .iter()
-            .filter_map(|id| nrg.space(*id).map(|s| s.anchor))
-            .collect();
-        let steps = describe_steps(nrg, &path);
-        Route {
-            spaces: path,
-            doors,
-            length_m,
-            waypoints,
-            steps,
-        }
-    }
+    /// Steps: distance walked in a space, then the turn into the next.
+    pub steps: Vec<Step>,
 }

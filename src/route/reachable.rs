@@ -1,47 +1,32 @@
-//! Spaces reachable within a walking distance: Dijkstra bounded by distance.
+//! Spaces reachable within a walking distance: Dijkstra over the gates of
+//! the navigation layer, bounded by the walked length to each anchor.
 
-use std::cmp::Reverse;
-use std::collections::BinaryHeap;
-
-use super::graph::to_micrometres;
-use super::{Budget, RouteError, RouteGraph};
+use super::{Budget, Endpoint, NavMesh, Profile, RouteError};
 use crate::model::SpaceId;
 
-/// Every navigable space whose shortest walking distance from `from` is at
-/// most `within_m` metres, with that distance, nearest first (then by id).
-/// `from` itself is included at distance 0.
+/// Every space whose anchor is at most `within_m` metres walked from
+/// `from` (with `profile`), with that distance, nearest first (then by id).
+/// A space `from` is included at distance 0.
 pub fn reachable_within(
-    graph: &RouteGraph,
-    from: SpaceId,
+    nav: &NavMesh,
+    from: &Endpoint,
     within_m: f64,
+    profile: &Profile,
     budget: &Budget,
 ) -> Result<Vec<(SpaceId, f64)>, RouteError> {
-    let start = graph.node(from).ok_or(RouteError::NotNavigable(from))?;
-    let bound = to_micrometres(within_m);
-    let mut dist = vec![u64::MAX; graph.len()];
-    let mut heap = BinaryHeap::new();
-    dist[start as usize] = 0;
-    heap.push(Reverse((0u64, start)));
-    while let Some(Reverse((d, n))) = heap.pop() {
-        if budget.check() {
-            return Err(RouteError::Timeout(budget.limit_ms()));
-        }
-        if d > dist[n as usize] {
-            continue;
-        }
-        for &(m, cost) in graph.edges(n) {
-            let nd = d.saturating_add(cost);
-            if nd <= bound && nd < dist[m as usize] {
-                dist[m as usize] = nd;
-                heap.push(Reverse((nd, m)));
-            }
-        }
-    }
+    profile.validate()?;
+    let level = nav.level(profile);
+    let start = nav.end(&level, from)?;
+    let banned = nav.banned(&level, &[], profile);
+    let dist = nav
+        .distances(&level, &start, &banned, within_m, budget)
+        .ok_or(RouteError::Timeout(budget.limit_ms()))?;
+    let ids = nav.space_ids(&level);
     let mut out: Vec<(SpaceId, f64)> = dist
         .iter()
         .enumerate()
-        .filter(|(_, d)| **d != u64::MAX)
-        .map(|(n, d)| (graph.space(n as u32), *d as f64 / 1e6))
+        .filter(|(_, d)| d.is_finite() && **d <= within_m)
+        .map(|(s, d)| (ids[s], *d))
         .collect();
     out.sort_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)));
     Ok(out)
@@ -49,26 +34,30 @@ pub fn reachable_within(
 
 #[cfg(test)]
 mod tests {
+    use std::sync::Arc;
+
     use super::*;
     use crate::query::demo;
 
     #[test]
     fn reach_grows_with_distance() {
         let nrg = demo::building(5);
-        let g = RouteGraph::new(&nrg);
-        let from = nrg.spaces()[0].id;
-        let near = reachable_within(&g, from, 3.0, &Budget::unlimited()).unwrap();
-        let far = reachable_within(&g, from, 1000.0, &Budget::unlimited()).unwrap();
-        assert_eq!(near[0], (from, 0.0));
+        let nav = NavMesh::new(Arc::new(nrg.clone()));
+        let from = Endpoint::Space(nrg.spaces()[0].id);
+        let p = Profile::default();
+        let b = Budget::unlimited();
+        let near = reachable_within(&nav, &from, 3.0, &p, &b).unwrap();
+        let far = reachable_within(&nav, &from, 1000.0, &p, &b).unwrap();
+        assert_eq!(near[0], (nrg.spaces()[0].id, 0.0));
         assert!(near.len() < far.len());
         assert!(near.iter().all(|(_, d)| *d <= 3.0));
-        // Every space is a node; spaces without a navigable connection
-        // (the demo's storage room) are never reached.
+        // Spaces without a navigable connection (the demo's storage room)
+        // are never reached.
         let isolated = nrg
             .spaces()
             .iter()
             .filter(|s| nrg.connections_of(s.id).all(|c| !c.kind.is_navigable()))
             .count();
-        assert_eq!(far.len(), g.len() - isolated);
+        assert_eq!(far.len(), nrg.spaces().len() - isolated);
     }
 }

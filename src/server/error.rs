@@ -203,6 +203,8 @@ impl From<RouteError> for ApiError {
             ),
             RouteError::AvoidedEndpoint(_) => ApiError::bad("avoid", e.to_string()),
             RouteError::AlternativesWithVia => ApiError::bad("alternatives", e.to_string()),
+            RouteError::Outside { .. } => ApiError::not_found("from", e.to_string()),
+            RouteError::BadProfile { name, .. } => ApiError::bad(name, e.to_string()),
         }
     }
 }

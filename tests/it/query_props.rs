@@ -3,8 +3,8 @@
 
 use nrgdb::model::{SpaceId, SpaceKind};
 use nrgdb::query::{
-    CompareOp, Condition, Field, KEYWORDS, OrderKey, SpaceRef, Statement, Value, parse,
-    parse_statement,
+    CompareOp, Condition, Field, KEYWORDS, OrderKey, SpaceRef, Statement, Value, WalkOptions,
+    parse, parse_statement,
 };
 use proptest::prelude::*;
 
@@ -93,15 +93,19 @@ fn statement() -> impl Strategy<Value = Statement> {
             space_ref(),
             refs(),
             refs(),
-            proptest::option::of(any::<u32>())
+            proptest::option::of(any::<u32>()),
+            walk_options()
         )
-            .prop_map(|(from, to, via, avoid, alternatives)| Statement::Route {
-                from,
-                to,
-                via,
-                avoid,
-                alternatives
-            }),
+            .prop_map(
+                |(from, to, via, avoid, alternatives, with)| Statement::Route {
+                    from,
+                    to,
+                    via,
+                    avoid,
+                    alternatives,
+                    with,
+                }
+            ),
         (space_ref(), proptest::option::of(any::<u32>()))
             .prop_map(|(of, depth)| Statement::Neighbours { of, depth }),
         (
@@ -117,8 +121,13 @@ fn statement() -> impl Strategy<Value = Statement> {
                 limit
             }),
         (number(), number()).prop_map(|(x, y)| Statement::Locate { point: [x, y] }),
-        (space_ref(), number())
-            .prop_map(|(from, within_m)| Statement::Reachable { from, within_m }),
+        (space_ref(), number(), walk_options()).prop_map(|(from, within_m, with)| {
+            Statement::Reachable {
+                from,
+                within_m,
+                with,
+            }
+        }),
         Just(Statement::ShowMaps),
         proptest::option::of(text()).prop_map(|map| Statement::ShowRevisions { map }),
         (text(), proptest::option::of(any::<u64>()))
@@ -145,6 +154,19 @@ fn soup() -> impl Strategy<Value = String> {
         "[=<>!]{1,2}",
     ];
     proptest::collection::vec(piece, 0..25).prop_map(|v| v.join(" "))
+}
+
+fn walk_options() -> impl Strategy<Value = WalkOptions> {
+    (
+        proptest::option::of(number()),
+        proptest::option::of(number()),
+        proptest::option::of(number()),
+    )
+        .prop_map(|(clearance_m, min_door_width_m, speed_m_s)| WalkOptions {
+            clearance_m,
+            min_door_width_m,
+            speed_m_s,
+        })
 }
 
 proptest! {

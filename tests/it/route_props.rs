@@ -1,166 +1,117 @@
-//! Property tests of ROUTE on random graphs against a plain Dijkstra.
+//! Property tests of ROUTE on random buildings with known geometry: a
+//! corridor split into open segments, rooms on both sides with doors at
+//! random places and widths, some with furniture, some joined to their
+//! neighbour by a door. Routes stay inside the spaces they pass, honour
+//! VIA and AVOID, and alternatives are sorted and distinct by their doors.
 
 use std::collections::BTreeSet;
+use std::sync::Arc;
 
-use nrgdb::model::{Connection, ConnectionKind, Nrg, Space, SpaceId, SpaceKind};
-use nrgdb::query::{MemorySource, QueryResult, Session};
-use nrgdb::route::{Budget, Route, RouteGraph, RouteRequest, shortest_route};
+use nrgdb::model::{Point, SpaceId};
+use nrgdb::route::{Budget, Endpoint, NavMesh, Profile, RouteRequest, shortest_route};
 use proptest::prelude::*;
 
-/// A random navigable graph: `n` spaces, edges with lengths in metres.
-fn graph() -> impl Strategy<Value = Nrg> {
-    (2usize..25).prop_flat_map(|n| {
-        let edge = (1..=n as u32, 1..=n as u32, 1u32..10_000);
-        proptest::collection::vec(edge, 0..n * 3).prop_map(move |edges| {
-            let kinds = [SpaceKind::Room, SpaceKind::Corridor, SpaceKind::Door];
-            let spaces = (1..=n as u32)
-                .map(|i| {
-                    let (x, y) = (f64::from(i) * 3.0, 0.0);
-                    let square = vec![[x, y], [x + 1.0, y], [x + 1.0, y + 1.0], [x, y + 1.0]];
-                    Space::new(
-                        SpaceId(i),
-                        kinds[i as usize % 3],
-                        [x + 0.5, y + 0.5],
-                        square,
-                    )
-                })
-                .collect();
-            let mut seen = BTreeSet::new();
-            let connections = edges
-                .into_iter()
-                .filter(|(a, b, _)| a != b && seen.insert((*a.min(b), *a.max(b))))
-                .map(|(a, b, mm)| Connection {
-                    a: SpaceId(a),
-                    b: SpaceId(b),
-                    kind: ConnectionKind::Door,
-                    length_m: f64::from(mm) / 1000.0,
-                })
-                .collect();
-            Nrg::new(spaces, connections).unwrap()
-        })
-    })
+use crate::route_building::{Building, building, inside_any, outside_samples};
+
+fn nav(b: &Building) -> NavMesh {
+    NavMesh::new(Arc::new(b.nrg.clone()))
 }
 
-/// Textbook O(n²) Dijkstra on f64 lengths, skipping `avoid`.
-fn reference(nrg: &Nrg, from: SpaceId, to: SpaceId, avoid: &[SpaceId]) -> Option<f64> {
-    let ids: Vec<SpaceId> = nrg.spaces().iter().map(|s| s.id).collect();
-    let mut dist: Vec<f64> = vec![f64::INFINITY; ids.len()];
-    let mut done = vec![false; ids.len()];
-    let at = |id: SpaceId| ids.iter().position(|x| *x == id).unwrap();
-    dist[at(from)] = 0.0;
-    loop {
-        let next = (0..ids.len())
-            .filter(|i| !done[*i] && dist[*i].is_finite())
-            .min_by(|a, b| dist[*a].total_cmp(&dist[*b]));
-        let Some(u) = next else { break };
-        done[u] = true;
-        for c in nrg.connections_of(ids[u]) {
-            let v = c.other(ids[u]).unwrap();
-            if avoid.contains(&v) {
-                continue;
-            }
-            let nd = dist[u] + c.length_m;
-            if nd < dist[at(v)] {
-                dist[at(v)] = nd;
-            }
-        }
-    }
-    let d = dist[at(to)];
-    d.is_finite().then_some(d)
+fn exact(from: SpaceId, to: SpaceId) -> RouteRequest {
+    let mut r = RouteRequest::new(from, to);
+    r.profile = Profile::exact();
+    r
 }
-
-fn valid(nrg: &Nrg, r: &Route) -> bool {
-    let sum: Option<f64> = r
-        .spaces
-        .windows(2)
-        .map(|w| nrg.connection(w[0], w[1]).map(|c| c.length_m))
-        .sum();
-    sum.is_some_and(|s| (s - r.length_m).abs() < 1e-9)
-}
-
-const TOLERANCE: f64 = 1e-4; // costs are rounded to micrometres per edge
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(128))]
+    #![proptest_config(ProptestConfig::with_cases(48))]
 
     #[test]
-    fn route_statement_equals_reference(nrg in graph(), a in 1u32..25, b in 1u32..25) {
-        let n = nrg.spaces().len() as u32;
-        let (a, b) = (SpaceId(1 + a % n), SpaceId(1 + b % n));
-        let expected = reference(&nrg, a, b, &[]);
-        let mut source = MemorySource::new();
-        source.insert("g", nrg.clone());
-        let mut session = Session::with_default_map(source).unwrap();
-        let mut results = session.execute(&format!("ROUTE FROM {a} TO space {b}")).unwrap();
-        let QueryResult::Routes(routes) = results.remove(0).unwrap() else { panic!() };
-        match expected {
-            None => prop_assert!(routes.is_empty()),
-            Some(d) => {
-                prop_assert_eq!(routes.len(), 1);
-                prop_assert!((routes[0].length_m - d).abs() < TOLERANCE, "{} vs {}", routes[0].length_m, d);
-                prop_assert!(valid(&nrg, &routes[0]));
-                prop_assert_eq!(routes[0].spaces.first(), Some(&a));
-                prop_assert_eq!(routes[0].spaces.last(), Some(&b));
-            }
-        }
+    fn routes_stay_inside_their_spaces(b in building(), i in 0usize..64, j in 0usize..64) {
+        let nav = nav(&b);
+        let (a, c) = (b.rooms[i % b.rooms.len()], b.rooms[j % b.rooms.len()]);
+        let routes = shortest_route(&nav, &exact(a, c), &Budget::unlimited()).unwrap();
+        prop_assert_eq!(routes.len(), 1, "every room of a generated building is reachable");
+        let r = &routes[0];
+        prop_assert_eq!(r.spaces.first(), Some(&a));
+        prop_assert_eq!(r.spaces.last(), Some(&c));
+        let walked: f64 = r.waypoints.windows(2).map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1])).sum();
+        prop_assert!((walked - r.length_m).abs() < 1e-9);
+        prop_assert_eq!(outside_samples(&b.nrg, &r.waypoints, 0.02), 0);
+        let anchors = |id: SpaceId| b.nrg.space(id).unwrap().anchor;
+        let (p, q): (Point, Point) = (anchors(a), anchors(c));
+        prop_assert!(r.length_m + 1e-9 >= (p[0] - q[0]).hypot(p[1] - q[1]));
     }
 
     #[test]
-    fn via_and_avoid_are_honoured(nrg in graph(), a in 1u32..25, b in 1u32..25, c in 1u32..25, d in 1u32..25) {
-        let n = nrg.spaces().len() as u32;
-        let [a, b, c, d] = [a, b, c, d].map(|x| SpaceId(1 + x % n));
-        let g = RouteGraph::new(&nrg);
-        let mut via = RouteRequest::new(a, b);
-        via.via = vec![c];
-        let routes = shortest_route(&g, &nrg, &via, &Budget::unlimited()).unwrap();
-        let legs = reference(&nrg, a, c, &[]).zip(reference(&nrg, c, b, &[])).map(|(x, y)| x + y);
-        match legs {
-            None => prop_assert!(routes.is_empty()),
-            Some(len) => {
-                prop_assert!((routes[0].length_m - len).abs() < TOLERANCE);
-                prop_assert!(routes[0].spaces.contains(&c));
-                prop_assert!(valid(&nrg, &routes[0]));
-            }
-        }
-        let mut avoid = RouteRequest::new(a, b);
-        avoid.avoid = vec![d];
-        let got = shortest_route(&g, &nrg, &avoid, &Budget::unlimited());
-        if d == a || d == b {
-            prop_assert!(got.is_err());
-        } else {
-            let routes = got.unwrap();
-            match reference(&nrg, a, b, &[d]) {
-                None => prop_assert!(routes.is_empty()),
-                Some(len) => {
-                    prop_assert!((routes[0].length_m - len).abs() < TOLERANCE);
-                    prop_assert!(!routes[0].spaces.contains(&d));
-                }
-            }
-        }
+    fn points_route_from_themselves(b in building(), i in 0usize..64, fx in 0.2f64..0.8, fy in 0.2f64..0.8) {
+        let nav = nav(&b);
+        let room = b.nrg.space(b.rooms[i % b.rooms.len()]).unwrap();
+        let (lo, hi) = bounds(&room.polygon);
+        let p = [lo[0] + fx * (hi[0] - lo[0]), lo[1] + fy * (hi[1] - lo[1])];
+        prop_assume!(inside_any(&b.nrg, p));
+        let mut req = RouteRequest::between(Endpoint::Point(p), Endpoint::Space(b.rooms[0]));
+        req.profile = Profile::exact();
+        let r = shortest_route(&nav, &req, &Budget::unlimited()).unwrap();
+        prop_assert_eq!(r[0].waypoints[0], p);
+        prop_assert_eq!(outside_samples(&b.nrg, &r[0].waypoints, 0.02), 0);
     }
 
     #[test]
-    fn alternatives_are_loopless_distinct_sorted(nrg in graph(), a in 1u32..25, b in 1u32..25, k in 1usize..6) {
-        let n = nrg.spaces().len() as u32;
-        let (a, b) = (SpaceId(1 + a % n), SpaceId(1 + b % n));
-        let g = RouteGraph::new(&nrg);
-        let mut req = RouteRequest::new(a, b);
+    fn via_and_avoid_are_honoured(b in building(), i in 0usize..64, j in 0usize..64, k in 0usize..64) {
+        let nav = nav(&b);
+        let n = b.rooms.len();
+        let (a, c, v) = (b.rooms[i % n], b.rooms[j % n], b.rooms[k % n]);
+        let direct = shortest_route(&nav, &exact(a, c), &Budget::unlimited()).unwrap();
+        let mut via = exact(a, c);
+        via.via = vec![Endpoint::Space(v)];
+        let routes = shortest_route(&nav, &via, &Budget::unlimited()).unwrap();
+        prop_assert!(routes[0].spaces.contains(&v));
+        prop_assert!(routes[0].length_m + 1e-6 >= direct[0].length_m);
+        let legs: f64 = routes[0].leg_lengths_m.iter().sum();
+        prop_assert!((legs - routes[0].length_m).abs() < 1e-6);
+        // Avoiding a door of the direct route: never through it.
+        if let Some(d) = direct[0].doors.first() {
+            let mut avoid = exact(a, c);
+            avoid.avoid = vec![*d];
+            let got = shortest_route(&nav, &avoid, &Budget::unlimited()).unwrap();
+            if let Some(r) = got.first() {
+                prop_assert!(!r.spaces.contains(d));
+                prop_assert!(r.length_m + 1e-6 >= direct[0].length_m);
+            }
+        }
+        let mut bad = exact(a, c);
+        bad.avoid = vec![a];
+        prop_assert!(shortest_route(&nav, &bad, &Budget::unlimited()).is_err());
+    }
+
+    #[test]
+    fn alternatives_are_distinct_and_sorted(b in building(), i in 0usize..64, j in 0usize..64, k in 1usize..5) {
+        let nav = nav(&b);
+        let n = b.rooms.len();
+        let (a, c) = (b.rooms[i % n], b.rooms[j % n]);
+        let mut req = exact(a, c);
         req.alternatives = k;
-        let routes = shortest_route(&g, &nrg, &req, &Budget::unlimited()).unwrap();
-        prop_assert!(routes.len() <= k);
-        prop_assert_eq!(routes.is_empty(), reference(&nrg, a, b, &[]).is_none());
-        if let (Some(first), Some(d)) = (routes.first(), reference(&nrg, a, b, &[])) {
-            prop_assert!((first.length_m - d).abs() < TOLERANCE);
-        }
-        for r in &routes {
-            prop_assert!(valid(&nrg, r));
-            let unique: BTreeSet<_> = r.spaces.iter().collect();
-            prop_assert_eq!(unique.len(), r.spaces.len(), "loop in {:?}", r.spaces);
-        }
+        let routes = shortest_route(&nav, &req, &Budget::unlimited()).unwrap();
+        prop_assert!(!routes.is_empty() && routes.len() <= k);
+        let best = shortest_route(&nav, &exact(a, c), &Budget::unlimited()).unwrap();
+        prop_assert!((routes[0].length_m - best[0].length_m).abs() < 1e-9);
         for w in routes.windows(2) {
-            prop_assert!(w[0].length_m <= w[1].length_m + TOLERANCE);
+            prop_assert!(w[0].length_m <= w[1].length_m + 1e-9);
         }
-        let distinct: BTreeSet<_> = routes.iter().map(|r| r.spaces.clone()).collect();
+        let distinct: BTreeSet<_> = routes.iter().map(|r| r.doors.clone()).collect();
         prop_assert_eq!(distinct.len(), routes.len());
     }
+}
+
+fn bounds(ring: &[Point]) -> (Point, Point) {
+    let mut lo = [f64::MAX; 2];
+    let mut hi = [f64::MIN; 2];
+    for p in ring {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    (lo, hi)
 }

@@ -101,20 +101,31 @@ async fn spaces_space_neighbours_locate() {
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn route_is_osrm_shaped() {
     let s = TestServer::read_only().await;
-    let r = s.get("/maps/building/route?from=10&to=15").await;
+    // Zero clearance: from Office 1's anchor (2, 4.6) to the corner of its
+    // doorway (2.5, 2.0), along the corridor's wall face to the corner of
+    // room 15's doorway (21.5, 2.0), up to its anchor (22, 4.6).
+    let r = s
+        .get("/maps/building/route?from=10&to=15&clearance=0")
+        .await;
     assert_eq!(r.status, 200, "{}", r.text());
     let v = r.json();
     assert_eq!(v["code"], "Ok");
     let route = &v["routes"][0];
-    let expected = 2.5 + (10.0f64).hypot(1.1) * 2.0 + 2.5;
+    let expected = 2.0 * 0.5f64.hypot(2.6) + 19.0;
     assert!(
-        (route["distance"].as_f64().unwrap() - expected).abs() < 0.01,
+        (route["distance"].as_f64().unwrap() - expected).abs() < 0.001,
         "{route}"
     );
     assert_eq!(route["geometry"]["type"], "LineString");
     let coords = route["geometry"]["coordinates"].as_array().unwrap();
-    assert_eq!(coords.len(), 5);
-    assert_eq!(coords[0], serde_json::json!([2.0, 4.6]));
+    let points: Vec<[f64; 2]> = coords
+        .iter()
+        .map(|c| [c[0].as_f64().unwrap(), c[1].as_f64().unwrap()])
+        .collect();
+    assert_eq!(
+        points,
+        vec![[2.0, 4.6], [2.5, 2.0], [21.5, 2.0], [22.0, 4.6]]
+    );
     assert_eq!(route["doors"], serde_json::json!([10000, 10005]));
     let spaces: Vec<u64> = route["spaces"]
         .as_array()
@@ -123,9 +134,44 @@ async fn route_is_osrm_shaped() {
         .map(|s| s["id"].as_u64().unwrap())
         .collect();
     assert_eq!(spaces, vec![10, 10000, 1, 10005, 15]);
+    // The default clearance (0.2 m) keeps that far from the two corners.
+    let cleared = s.get("/maps/building/route?from=10&to=15").await.json();
+    let line: Vec<[f64; 2]> = cleared["routes"][0]["geometry"]["coordinates"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| [c[0].as_f64().unwrap(), c[1].as_f64().unwrap()])
+        .collect();
+    for corner in [[2.5, 2.0], [21.5, 2.0], [1.5, 2.0], [22.5, 2.0]] {
+        let nearest = line
+            .windows(2)
+            .map(|w| segment_distance(corner, w[0], w[1]))
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            nearest >= 0.2 - 1e-9,
+            "{corner:?} is {nearest} m from the route"
+        );
+    }
+    assert!(cleared["routes"][0]["distance"].as_f64().unwrap() > expected);
+    let narrow = s
+        .get("/maps/building/route?from=10&to=15&min_door_width=1.2")
+        .await
+        .json();
+    assert_eq!(narrow["code"], "NoRoute");
+    assert!(
+        narrow["message"]
+            .as_str()
+            .unwrap()
+            .contains("narrower than 1.2 m"),
+        "{narrow}"
+    );
     let leg = &route["legs"][0];
     assert_eq!(leg["distance"], route["distance"]);
-    assert!(leg["steps"].as_array().unwrap().len() >= 2);
+    let steps = leg["steps"].as_array().unwrap();
+    assert!(steps.len() >= 2);
+    assert_eq!(steps.last().unwrap()["turn"], "arrive");
+    let walked: f64 = steps.iter().map(|s| s["distance"].as_f64().unwrap()).sum();
+    assert!((walked - expected).abs() < 0.01);
     assert_eq!(v["waypoints"][0]["name"], "Office 1");
 
     // Names, points, waypoints, avoidance and alternatives.
@@ -175,6 +221,12 @@ async fn route_is_osrm_shaped() {
     s.get("/maps/building/route?from=10&to=15&via=12&alternatives=2")
         .await
         .assert_error(400, "alternatives");
+    s.get("/maps/building/route?from=10&to=15&clearance=-1")
+        .await
+        .assert_error(400, "clearance");
+    s.get("/maps/building/route?from=-40,0&to=15")
+        .await
+        .assert_error(404, "from");
     s.get("/maps/building/route?from=10&to=15&form=1")
         .await
         .assert_error(400, "form");
@@ -302,4 +354,15 @@ async fn cors_is_opt_in() {
     assert_eq!(other.status, 200);
     assert!(other.header("access-control-allow-origin").is_none());
     s.stop().await;
+}
+
+fn segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let len2 = dx * dx + dy * dy;
+    let t = if len2 > 0.0 {
+        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (p[0] - a[0] - t * dx).hypot(p[1] - a[1] - t * dy)
 }

@@ -9,7 +9,7 @@ use super::route_json::route_response;
 use super::{ParamDoc, REV, q};
 use crate::model::SpaceId;
 use crate::query::{IndexedRevision, QueryError, SpaceRef};
-use crate::route::{Budget, RouteRequest, shortest_route};
+use crate::route::{Budget, Endpoint, Profile, RouteRequest, no_route_reason, shortest_route};
 use crate::server::error::ApiError;
 use crate::server::params::{Params, parse_value};
 use crate::server::state::{AppState, Ctx};
@@ -18,7 +18,7 @@ use crate::server::state::{AppState, Ctx};
 pub const MAX_ALTERNATIVES: usize = 10;
 
 /// Query parameters of the route endpoint.
-pub const PARAMS: [ParamDoc; 6] = [
+pub const PARAMS: [ParamDoc; 9] = [
     q(
         "from",
         "string",
@@ -48,6 +48,24 @@ pub const PARAMS: [ParamDoc; 6] = [
         "string",
         false,
         "true (3 routes), false, or a number of routes 1 to 10",
+    ),
+    q(
+        "clearance",
+        "number",
+        false,
+        "distance kept from walls, metres (default 0.2; a robot: its radius; 0 to 5)",
+    ),
+    q(
+        "min_door_width",
+        "number",
+        false,
+        "doors narrower than this are impassable, metres (default 0)",
+    ),
+    q(
+        "speed",
+        "number",
+        false,
+        "walking speed for durations, m/s (default 1.4)",
     ),
     REV,
 ];
@@ -82,6 +100,59 @@ fn resolve(name: &str, raw: &str, rev: &IndexedRevision) -> Result<SpaceId, ApiE
     })
 }
 
+/// A route end: a point `x,y` is the point itself (it must lie in a
+/// space); anything else is a space (its anchor).
+fn endpoint(name: &str, raw: &str, rev: &IndexedRevision) -> Result<Endpoint, ApiError> {
+    match reference(raw) {
+        SpaceRef::Point(p) => match rev.nav.locate(p) {
+            Some(_) => Ok(Endpoint::Point(p)),
+            None => Err(ApiError::not_found(
+                name,
+                format!("{name}: {}", rev.outside(p)),
+            )),
+        },
+        _ => Ok(Endpoint::Space(resolve(name, raw, rev)?)),
+    }
+}
+
+/// `via`: waypoints separated by `;` when any is a point, else by `,`.
+fn endpoints(
+    name: &str,
+    raw: Option<&str>,
+    rev: &IndexedRevision,
+) -> Result<Vec<Endpoint>, ApiError> {
+    let Some(raw) = raw else {
+        return Ok(Vec::new());
+    };
+    let parts: Vec<&str> = if raw.contains(';') {
+        raw.split(';').collect()
+    } else {
+        raw.split(',').collect()
+    };
+    parts
+        .into_iter()
+        .filter(|s| !s.trim().is_empty())
+        .map(|s| endpoint(name, s, rev))
+        .collect()
+}
+
+/// The walker from `clearance`, `min_door_width` and `speed`.
+fn profile(p: &Params) -> Result<Profile, ApiError> {
+    let d = Profile::default();
+    let number = |name: &str, default: f64| -> Result<f64, ApiError> {
+        p.get(name).map_or(Ok(default), |raw| {
+            parse_value(name, raw.trim(), "a number of metres")
+        })
+    };
+    let profile = Profile {
+        clearance_m: number("clearance", d.clearance_m)?,
+        min_door_width_m: number("min_door_width", d.min_door_width_m)?,
+        speed_m_s: number("speed", d.speed_m_s)?,
+    };
+    profile.validate().map_err(ApiError::from)?;
+    Ok(profile)
+}
+
 fn list(name: &str, raw: Option<&str>, rev: &IndexedRevision) -> Result<Vec<SpaceId>, ApiError> {
     raw.map_or(Ok(Vec::new()), |raw| {
         raw.split(',')
@@ -109,13 +180,27 @@ fn alternatives(raw: Option<&str>) -> Result<usize, ApiError> {
     }
 }
 
-/// `GET /maps/{map}/route?from=&to=&via=&avoid=&alternatives=&rev=`.
+/// `GET /maps/{map}/route?from=&to=&via=&avoid=&alternatives=&clearance=&min_door_width=&speed=&rev=`.
 pub async fn route(
     State(state): State<AppState>,
     Path(map): Path<String>,
     uri: Uri,
 ) -> Result<Response, ApiError> {
-    let p = Params::parse(&uri, &["from", "to", "via", "avoid", "alternatives", "rev"])?;
+    let p = Params::parse(
+        &uri,
+        &[
+            "from",
+            "to",
+            "via",
+            "avoid",
+            "alternatives",
+            "clearance",
+            "min_door_width",
+            "speed",
+            "rev",
+        ],
+    )?;
+    let walker = profile(&p)?;
     let from = p.required("from")?.to_string();
     let to = p.required("to")?.to_string();
     let via = p.get("via").map(str::to_string);
@@ -132,17 +217,19 @@ pub async fn route(
     let work = move |ctx: &mut Ctx<'_>| {
         let r = ctx.revision(&map, rev)?;
         let request = RouteRequest {
-            from: resolve("from", &from, &r)?,
-            to: resolve("to", &to, &r)?,
-            via: list("via", via.as_deref(), &r)?,
+            from: endpoint("from", &from, &r)?,
+            to: endpoint("to", &to, &r)?,
+            via: endpoints("via", via.as_deref(), &r)?,
             avoid: list("avoid", avoid.as_deref(), &r)?,
             alternatives: k,
+            profile: walker,
         };
-        let routes = shortest_route(&r.graph, &r.nrg, &request, &Budget::new(timeout))?;
+        let routes = shortest_route(&r.nav, &request, &Budget::new(timeout))?;
+        let reason = routes.is_empty().then(|| no_route_reason(&r.nav, &request));
         let mut stops = vec![request.from];
         stops.extend(&request.via);
         stops.push(request.to);
-        serde_json::to_vec(&route_response(&r, &stops, &routes))
+        serde_json::to_vec(&route_response(&r, &stops, &routes, reason))
             .map_err(|e| ApiError::Internal(e.to_string()))
     };
     // One shortest route is a Dijkstra: cheap enough for the async worker

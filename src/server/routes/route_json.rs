@@ -1,23 +1,25 @@
 //! The route answer, shaped like the routing engines people know (OSRM,
-//! GraphHopper): `code`, the snapped `waypoints`, and `routes` with
-//! distance (metres), duration (seconds at walking speed), `legs` between
-//! waypoints with readable steps, the path as a GeoJSON LineString through
-//! the spaces' anchors (map frame), and the spaces and doors passed.
+//! GraphHopper): `code`, the snapped `waypoints`, and `routes` with the
+//! walked distance (metres), duration (seconds at the profile's speed),
+//! `legs` between waypoints with steps (distance, turn, door), the whole
+//! walked path as a GeoJSON LineString (map frame), and the spaces and
+//! doors passed. With no route, `code` is "NoRoute" and `message` says why.
 
 use serde::Serialize;
 
-use crate::model::{Nrg, Point, SpaceId};
+use crate::model::{Point, SpaceId};
 use crate::query::IndexedRevision;
-use crate::route::{Route, describe_steps};
-
-/// Walking speed used for `duration`, in metres per second.
-pub const WALKING_SPEED_M_S: f64 = 1.4;
+use crate::route::{Endpoint, Route, Step, Turn};
 
 /// The whole answer of `GET /maps/{map}/route`.
 #[derive(Debug, Serialize)]
 pub struct RouteResponse<'a> {
-    /// "Ok", or "NoRoute" when the spaces are not connected.
+    /// "Ok", or "NoRoute" when there is none.
     pub code: &'static str,
+    /// Why there is no route ("every doorway into Office 27 is narrower
+    /// than 0.9 m"); absent with "Ok".
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub message: Option<String>,
     /// The map.
     pub map: &'a str,
     /// The revision routed on.
@@ -28,27 +30,27 @@ pub struct RouteResponse<'a> {
     pub routes: Vec<RouteJson<'a>>,
 }
 
-/// A resolved stop.
+/// A resolved stop: a space (at its anchor) or a point.
 #[derive(Debug, Serialize)]
 pub struct Waypoint<'a> {
-    /// The space.
-    pub space: SpaceId,
+    /// The space (the one containing the point, for a point).
+    pub space: Option<SpaceId>,
     /// Its name, if any.
     pub name: Option<&'a str>,
-    /// Its anchor in metres.
+    /// Where the route starts, passes or ends, metres.
     pub location: Point,
 }
 
 /// One route.
 #[derive(Debug, Serialize)]
 pub struct RouteJson<'a> {
-    /// Length in metres.
+    /// Walked length in metres.
     pub distance: f64,
-    /// Seconds at [`WALKING_SPEED_M_S`].
+    /// Seconds at the profile's speed.
     pub duration: f64,
     /// One leg per pair of consecutive waypoints.
-    pub legs: Vec<Leg>,
-    /// The path through the anchors.
+    pub legs: Vec<Leg<'a>>,
+    /// The walked path.
     pub geometry: LineString<'a>,
     /// Every space entered, in order.
     pub spaces: Vec<SpaceJson<'a>>,
@@ -58,24 +60,33 @@ pub struct RouteJson<'a> {
 
 /// The part of a route between two waypoints.
 #[derive(Debug, Serialize)]
-pub struct Leg {
-    /// Length in metres.
+pub struct Leg<'a> {
+    /// Walked length in metres.
     pub distance: f64,
-    /// Seconds at walking speed.
+    /// Seconds at the profile's speed.
     pub duration: f64,
-    /// Where it starts.
-    pub from: SpaceId,
-    /// Where it ends.
-    pub to: SpaceId,
-    /// Readable steps.
-    pub steps: Vec<Step>,
+    /// The steps that end in this leg.
+    pub steps: Vec<StepJson<'a>>,
 }
 
-/// A readable step.
+/// A step: walk a distance, then turn (through a door) into a space.
 #[derive(Debug, Serialize)]
-pub struct Step {
-    /// "leave Kitchen through door 7 into corridor 3".
-    pub instruction: String,
+pub struct StepJson<'a> {
+    /// "walk 12 m along corridor 2, turn left through door 31 into Office 27".
+    pub instruction: &'a str,
+    /// Metres walked in this step.
+    pub distance: f64,
+    /// The manoeuvre at its end: straight, left, right, sharp_left,
+    /// sharp_right, u_turn or arrive.
+    pub turn: Turn,
+    /// The space walked in.
+    pub space: SpaceId,
+    /// The door passed at its end.
+    pub door: Option<SpaceId>,
+    /// The space entered at its end.
+    pub into: Option<SpaceId>,
+    /// Where the manoeuvre happens, metres.
+    pub location: Point,
 }
 
 /// A GeoJSON LineString.
@@ -103,84 +114,95 @@ fn millimetres(m: f64) -> f64 {
     (m * 1000.0).round() / 1000.0
 }
 
-fn seconds(m: f64) -> f64 {
-    (m / WALKING_SPEED_M_S * 10.0).round() / 10.0
+fn tenths(s: f64) -> f64 {
+    (s * 10.0).round() / 10.0
 }
 
-fn path_length(nrg: &Nrg, path: &[SpaceId]) -> f64 {
-    path.windows(2)
-        .filter_map(|w| nrg.connection(w[0], w[1]))
-        .map(|c| c.length_m)
-        .sum()
-}
-
-/// Splits `route` into legs at the `stops` (start, waypoints, goal), in order.
-fn legs(nrg: &Nrg, route: &Route, stops: &[SpaceId]) -> Vec<Leg> {
-    let path = &route.spaces;
-    if stops.len() <= 2 {
-        let (from, to) = (path.first().copied(), path.last().copied());
-        return vec![Leg {
-            distance: millimetres(route.length_m),
-            duration: seconds(route.length_m),
-            from: from.unwrap_or(SpaceId(0)),
-            to: to.unwrap_or(SpaceId(0)),
-            steps: route
-                .steps
-                .iter()
-                .map(|s| Step {
-                    instruction: s.clone(),
-                })
-                .collect(),
-        }];
+fn step_json(s: &Step) -> StepJson<'_> {
+    StepJson {
+        instruction: &s.instruction,
+        distance: millimetres(s.distance_m),
+        turn: s.turn,
+        space: s.space,
+        door: s.door,
+        into: s.into,
+        location: s.at,
     }
-    let mut out = Vec::new();
-    let mut start = 0;
-    for stop in stops.iter().skip(1) {
-        let end = path
-            .iter()
-            .enumerate()
-            .skip(start + 1)
-            .find(|(_, id)| *id == stop)
-            .map_or(path.len().saturating_sub(1), |(i, _)| i);
-        let piece = path.get(start..=end).unwrap_or(&[]);
-        let length = path_length(nrg, piece);
+}
+
+/// Splits `route`'s steps into its legs by where each step ends.
+fn legs(route: &Route) -> Vec<Leg<'_>> {
+    let speed = if route.length_m > 0.0 && route.duration_s > 0.0 {
+        route.length_m / route.duration_s
+    } else {
+        1.4
+    };
+    let mut out: Vec<Leg<'_>> = Vec::new();
+    let mut ends = Vec::new();
+    let mut acc = 0.0;
+    for l in &route.leg_lengths_m {
+        acc += l;
+        ends.push(acc);
+    }
+    let mut walked = 0.0;
+    let mut leg = 0;
+    for l in &route.leg_lengths_m {
         out.push(Leg {
-            distance: millimetres(length),
-            duration: seconds(length),
-            from: path.get(start).copied().unwrap_or(SpaceId(0)),
-            to: *stop,
-            steps: describe_steps(nrg, piece)
-                .into_iter()
-                .map(|instruction| Step { instruction })
-                .collect(),
+            distance: millimetres(*l),
+            duration: tenths(l / speed),
+            steps: Vec::new(),
         });
-        start = end;
+    }
+    for s in &route.steps {
+        walked += s.distance_m;
+        while leg + 1 < ends.len() && walked > ends[leg] + 1e-6 {
+            leg += 1;
+        }
+        if let Some(l) = out.get_mut(leg) {
+            l.steps.push(step_json(s));
+        }
     }
     out
 }
 
-/// Builds the answer for `routes` found between `stops` on `rev`.
+/// Builds the answer for `routes` found between `stops` on `rev`; `reason`
+/// says why there is none.
 pub fn route_response<'a>(
     rev: &'a IndexedRevision,
-    stops: &[SpaceId],
+    stops: &[Endpoint],
     routes: &'a [Route],
+    reason: Option<String>,
 ) -> RouteResponse<'a> {
     let nrg = &rev.nrg;
     let waypoints = stops
         .iter()
-        .filter_map(|id| nrg.space(*id))
-        .map(|s| Waypoint {
-            space: s.id,
-            name: s.name.as_deref(),
-            location: s.anchor,
+        .map(|e| match e {
+            Endpoint::Space(id) => {
+                let s = nrg.space(*id);
+                Waypoint {
+                    space: Some(*id),
+                    name: s.and_then(|s| s.name.as_deref()),
+                    location: s.map_or([0.0, 0.0], |s| s.anchor),
+                }
+            }
+            Endpoint::Point(p) => {
+                let id = rev.nav.locate(*p);
+                Waypoint {
+                    space: id,
+                    name: id
+                        .and_then(|id| nrg.space(id))
+                        .and_then(|s| s.name.as_deref()),
+                    location: *p,
+                }
+            }
         })
         .collect();
     let routes_json = routes
         .iter()
         .map(|r| RouteJson {
             distance: millimetres(r.length_m),
-            duration: seconds(r.length_m),
-            legs: legs(nrg, r, stops),
+            duration: tenths(r.duration_s),
+            legs: legs(r),
             geometry: LineString {
                 kind: "LineString",
                 coordinates: &r.waypoints,
@@ -198,12 +220,10 @@ pub fn route_response<'a>(
             doors: r.doors.clone(),
         })
         .collect::<Vec<_>>();
+    let ok = !routes_json.is_empty();
     RouteResponse {
-        code: if routes_json.is_empty() {
-            "NoRoute"
-        } else {
-            "Ok"
-        },
+        code: if ok { "Ok" } else { "NoRoute" },
+        message: if ok { None } else { reason },
         map: &rev.map,
         revision: rev.revision,
         waypoints,
@@ -221,17 +241,31 @@ mod tests {
     fn legs_split_at_waypoints_and_add_up() {
         let rev = IndexedRevision::new("m", 1, corridor_building(4));
         let mut req = RouteRequest::new(SpaceId(10), SpaceId(13));
-        req.via = vec![SpaceId(11)];
-        let routes = shortest_route(&rev.graph, &rev.nrg, &req, &Budget::unlimited()).unwrap();
-        let stops = [SpaceId(10), SpaceId(11), SpaceId(13)];
-        let answer = route_response(&rev, &stops, &routes);
+        req.via = vec![Endpoint::Space(SpaceId(11))];
+        let routes = shortest_route(&rev.nav, &req, &Budget::unlimited()).unwrap();
+        let stops = [
+            Endpoint::Space(SpaceId(10)),
+            Endpoint::Space(SpaceId(11)),
+            Endpoint::Space(SpaceId(13)),
+        ];
+        let answer = route_response(&rev, &stops, &routes, None);
         assert_eq!(answer.code, "Ok");
         let r = &answer.routes[0];
         assert_eq!(r.legs.len(), 2);
-        assert_eq!((r.legs[0].to, r.legs[1].from), (SpaceId(11), SpaceId(11)));
         let sum: f64 = r.legs.iter().map(|l| l.distance).sum();
         assert!((sum - r.distance).abs() < 0.01);
-        assert_eq!(r.geometry.coordinates.len(), r.spaces.len());
+        let steps: f64 = r
+            .legs
+            .iter()
+            .flat_map(|l| &l.steps)
+            .map(|s| s.distance)
+            .sum();
+        assert!(
+            (steps - r.distance).abs() < 0.01,
+            "{steps} vs {}",
+            r.distance
+        );
+        assert!(r.geometry.coordinates.len() >= 2);
         assert_eq!(
             r.doors.len(),
             4,

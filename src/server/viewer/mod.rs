@@ -101,10 +101,10 @@ pub async fn svg(
                         )
                     })?;
                     let request = RouteRequest::new(space(from, &r)?, space(to, &r)?);
-                    let routes = shortest_route(&r.graph, &r.nrg, &request, &Budget::new(timeout))?;
-                    routes
-                        .first()
-                        .map(|x| RouteOverlay::along(&r.nrg, &x.spaces, x.length_m))
+                    let routes = shortest_route(&r.nav, &request, &Budget::new(timeout))?;
+                    routes.first().map(|x| {
+                        RouteOverlay::along(&r.nrg, &x.spaces, x.waypoints.clone(), x.length_m)
+                    })
                 }
             };
             let changes = match diff {

@@ -1,0 +1,261 @@
+//! What makes a route query fast, computed once per revision: inside every
+//! space, a shortest-path tree over its triangles from each of its gates and
+//! from its anchor, and the walked length (funnel) between every pair of
+//! them. A query then searches only the small graph of gates.
+
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
+
+use super::clearance::{clear_walk, edge_open, traversal_open};
+use super::funnel::{dist, funnel, polyline_length};
+use super::mesh::{Across, Mesh, NONE};
+use crate::model::{Nrg, Point};
+
+/// A shortest-path tree inside one space, from one source.
+#[derive(Debug, Clone)]
+pub(crate) struct Tree {
+    /// Predecessor of each triangle of the space (by local index), NONE at
+    /// the root and for triangles not reached.
+    pred: Vec<u32>,
+    /// Approximate distance (through edge midpoints) of each triangle.
+    cost: Vec<f64>,
+}
+
+/// The sources of one space: its gates in `Mesh::space_gates` order, then
+/// its anchor.
+#[derive(Debug, Clone, Default)]
+pub(crate) struct SpaceTable {
+    /// `(triangle, point)` of each source.
+    pub sources: Vec<(u32, Point)>,
+    trees: Vec<Tree>,
+    /// Walked length between sources `i` and `j` at `i * n + j`
+    /// (infinite when not connected inside the space).
+    costs: Vec<f64>,
+}
+
+impl SpaceTable {
+    /// Walked length inside the space between sources `i` and `j`.
+    pub fn cost(&self, i: usize, j: usize) -> f64 {
+        let n = self.sources.len();
+        self.costs.get(i * n + j).copied().unwrap_or(f64::INFINITY)
+    }
+
+    /// Index of the anchor source.
+    pub fn anchor(&self) -> usize {
+        self.sources.len().saturating_sub(1)
+    }
+
+    /// The triangles from source `i` to source `j`, both included.
+    pub fn channel(&self, mesh: &Mesh, local: &[u32], i: usize, j: usize) -> Option<Vec<u32>> {
+        if i <= j {
+            let target = self.sources.get(j)?.0;
+            let mut c = self.trees.get(i)?.walk(mesh, local, target)?;
+            c.reverse();
+            Some(c)
+        } else {
+            let target = self.sources.get(i)?.0;
+            self.trees.get(j)?.walk(mesh, local, target)
+        }
+    }
+}
+
+impl Tree {
+    /// Dijkstra over the triangles of one space from `(root, at)`, moving
+    /// through the midpoints of shared edges wide enough for clearance `r`.
+    pub fn grow(mesh: &Mesh, local: &[u32], space: u32, root: u32, at: Point, r: f64) -> Tree {
+        let n = mesh.space_tris[space as usize].len();
+        let mut cost = vec![f64::INFINITY; n];
+        let mut arrive = vec![[0.0f64; 2]; n];
+        let mut pred = vec![NONE; n];
+        // The edge each triangle was entered by (3: the root).
+        let mut entry = vec![3u8; n];
+        let first = local[root as usize] as usize;
+        cost[first] = 0.0;
+        arrive[first] = at;
+        let mut heap = BinaryHeap::new();
+        heap.push(Reverse((0u64, root)));
+        while let Some(Reverse((key, t))) = heap.pop() {
+            let lt = local[t as usize] as usize;
+            if key > cost[lt].to_bits() {
+                continue;
+            }
+            let tri = &mesh.tris[t as usize];
+            for i in 0..3 {
+                let Across::Inside(u) = tri.across[i] else {
+                    continue;
+                };
+                if r > 0.0
+                    && (!edge_open(mesh, tri.v[i], tri.v[(i + 1) % 3], r)
+                        || !traversal_open(mesh, t, usize::from(entry[lt]), i, r))
+                {
+                    continue;
+                }
+                let (a, b) = (mesh.point(tri.v[i]), mesh.point(tri.v[(i + 1) % 3]));
+                let mid = [(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0];
+                let nd = cost[lt] + dist(arrive[lt], mid);
+                let lu = local[u as usize] as usize;
+                if nd < cost[lu] {
+                    cost[lu] = nd;
+                    arrive[lu] = mid;
+                    pred[lu] = t;
+                    // The edge of u shared with t.
+                    entry[lu] = (0..3u8)
+                        .find(|k| {
+                            mesh.tris[u as usize].across[usize::from(*k)] == Across::Inside(t)
+                        })
+                        .unwrap_or(3);
+                    heap.push(Reverse((nd.to_bits(), u)));
+                }
+            }
+        }
+        Tree { pred, cost }
+    }
+
+    /// A tree that reaches nothing (from a closed gate).
+    pub fn unreached(n: usize) -> Tree {
+        Tree {
+            pred: vec![NONE; n],
+            cost: vec![f64::INFINITY; n],
+        }
+    }
+
+    /// The triangles from `target` back to the root, or `None` when the
+    /// tree does not reach it.
+    pub fn walk(&self, mesh: &Mesh, local: &[u32], target: u32) -> Option<Vec<u32>> {
+        let lt = *local.get(target as usize)? as usize;
+        if !self.cost.get(lt)?.is_finite() {
+            return None;
+        }
+        let mut out = vec![target];
+        let mut t = target;
+        while self.pred[local[t as usize] as usize] != NONE {
+            t = self.pred[local[t as usize] as usize];
+            out.push(t);
+            if out.len() > mesh.tris.len() {
+                return None;
+            }
+        }
+        Some(out)
+    }
+}
+
+/// The portals of a channel of triangles, `(right, left)` in walking order.
+pub(crate) fn portals(mesh: &Mesh, channel: &[u32]) -> Vec<(Point, Point)> {
+    channel
+        .windows(2)
+        .filter_map(|w| mesh.portal(w[0], w[1]))
+        .collect()
+}
+
+/// The walked polyline from `from` to `to` through a channel, keeping
+/// clearance `r` from obstacle corners.
+pub(crate) fn walk(mesh: &Mesh, from: Point, to: Point, channel: &[u32], r: f64) -> Vec<Point> {
+    if r <= 0.0 {
+        return funnel(from, to, &portals(mesh, channel));
+    }
+    let ends: Vec<(u32, u32)> = channel
+        .windows(2)
+        .filter_map(|w| mesh.portal_vertices(w[0], w[1]))
+        .collect();
+    clear_walk(mesh, from, to, &ends, r)
+}
+
+/// Precomputed tables of every space.
+#[derive(Debug)]
+pub(crate) struct Layer {
+    /// The clearance kept, metres.
+    pub clearance_m: f64,
+    /// Whether each gate is wide enough for it.
+    pub gate_open: Vec<bool>,
+    /// Local index of each triangle within its space.
+    pub local: Vec<u32>,
+    /// One table per space (dense index).
+    pub tables: Vec<SpaceTable>,
+}
+
+impl Layer {
+    /// Builds the tables of every space of `mesh`.
+    pub fn new(mesh: &Mesh, nrg: &Nrg, clearance_m: f64) -> Layer {
+        let mut local = vec![NONE; mesh.tris.len()];
+        for tris in &mesh.space_tris {
+            for (i, t) in tris.iter().enumerate() {
+                local[*t as usize] = i as u32;
+            }
+        }
+        let gate_open: Vec<bool> = mesh
+            .gates
+            .iter()
+            .map(|g| edge_open(mesh, g.ends[0], g.ends[1], clearance_m))
+            .collect();
+        let tables = (0..mesh.space_ids.len() as u32)
+            .map(|s| table(mesh, nrg, &local, s, clearance_m, &gate_open))
+            .collect();
+        Layer {
+            clearance_m,
+            gate_open,
+            local,
+            tables,
+        }
+    }
+}
+
+fn table(mesh: &Mesh, nrg: &Nrg, local: &[u32], s: u32, r: f64, gate_open: &[bool]) -> SpaceTable {
+    let tris = &mesh.space_tris[s as usize];
+    if tris.is_empty() {
+        return SpaceTable::default();
+    }
+    let mut sources: Vec<(u32, Point)> = mesh.space_gates[s as usize]
+        .iter()
+        .map(|g| {
+            let gate = &mesh.gates[*g as usize];
+            let side = if gate.sides[0].1 == s {
+                gate.sides[0].0
+            } else {
+                gate.sides[1].0
+            };
+            (side, gate.mid)
+        })
+        .collect();
+    let anchor = nrg
+        .space(mesh.space_ids[s as usize])
+        .map(|sp| sp.anchor)
+        .and_then(|p| mesh.locate(p, Some(s)).map(|t| (t, p)))
+        .filter(|(t, _)| mesh.tris[*t as usize].space == s)
+        .unwrap_or_else(|| (tris[0], mesh.centroid(tris[0])));
+    sources.push(anchor);
+    let gates = &mesh.space_gates[s as usize];
+    // A closed gate is a source nothing reaches.
+    let open = |i: usize| gates.get(i).is_none_or(|g| gate_open[*g as usize]);
+    let trees: Vec<Tree> = sources
+        .iter()
+        .enumerate()
+        .map(|(i, (t, p))| {
+            if open(i) {
+                Tree::grow(mesh, local, s, *t, *p, r)
+            } else {
+                Tree::unreached(mesh.space_tris[s as usize].len())
+            }
+        })
+        .collect();
+    let n = sources.len();
+    let mut costs = vec![f64::INFINITY; n * n];
+    for i in 0..n {
+        costs[i * n + i] = 0.0;
+        for j in i + 1..n {
+            if !open(i) || !open(j) {
+                continue;
+            }
+            if let Some(mut c) = trees[i].walk(mesh, local, sources[j].0) {
+                c.reverse();
+                let length = polyline_length(&walk(mesh, sources[i].1, sources[j].1, &c, r));
+                costs[i * n + j] = length;
+                costs[j * n + i] = length;
+            }
+        }
+    }
+    SpaceTable {
+        sources,
+        trees,
+        costs,
+    }
+}

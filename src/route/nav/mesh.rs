@@ -1,0 +1,404 @@
+//! The triangulated free space of a floor: one constrained Delaunay
+//! triangulation (the `spade` crate) of every space's rings, each triangle
+//! tagged with the space it lies in, each triangle edge classified as open
+//! (inside one space), a gate (a doorway or open boundary between two spaces
+//! that the model connects navigably) or a wall.
+
+use std::collections::HashMap;
+
+use rstar::RTree;
+use rstar::primitives::{GeomWithData, Rectangle};
+use spade::handles::FixedVertexHandle;
+use spade::{ConstrainedDelaunayTriangulation, Point2, PositionInTriangulation, Triangulation};
+
+use crate::model::{Nrg, Point, Space, SpaceId, point_in_ring};
+
+/// "No triangle" / "no space" in the dense index arrays.
+pub(crate) const NONE: u32 = u32::MAX;
+
+/// What lies across one edge of a triangle.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Across {
+    /// Another triangle of the same space.
+    Inside(u32),
+    /// A triangle of another space, through gate `gate`.
+    Gate { tri: u32, gate: u32 },
+    /// A wall: outside every space, or a space not navigably connected.
+    Wall,
+}
+
+/// One triangle: vertices counter-clockwise; edge `i` runs from `v[i]` to
+/// `v[(i + 1) % 3]`.
+#[derive(Debug, Clone)]
+pub(crate) struct Tri {
+    pub v: [u32; 3],
+    pub across: [Across; 3],
+    /// Dense index of its space.
+    pub space: u32,
+}
+
+/// A passable triangle edge between two spaces.
+#[derive(Debug, Clone)]
+pub(crate) struct Gate {
+    /// The edge's end points (vertex indices).
+    pub ends: [u32; 2],
+    /// The triangle on each side and its space: `(tri, space)`.
+    pub sides: [(u32, u32); 2],
+    /// Midpoint of the edge, metres.
+    pub mid: Point,
+}
+
+/// The triangulated floor.
+#[derive(Debug)]
+pub(crate) struct Mesh {
+    pub points: Vec<Point>,
+    pub tris: Vec<Tri>,
+    pub gates: Vec<Gate>,
+    /// Space ids by dense index, and the index by id.
+    pub space_ids: Vec<SpaceId>,
+    pub space_index: HashMap<SpaceId, u32>,
+    /// Triangles of each space.
+    pub space_tris: Vec<Vec<u32>>,
+    /// Gates of each space.
+    pub space_gates: Vec<Vec<u32>>,
+    /// Whether a vertex touches a wall edge (an obstacle corner).
+    pub obstacle: Vec<bool>,
+    /// Map from spade's inner face index to our triangle (NONE: outside).
+    face_tri: Vec<u32>,
+    cdt: ConstrainedDelaunayTriangulation<Point2<f64>>,
+}
+
+type Envelope = GeomWithData<Rectangle<[f64; 2]>, usize>;
+
+fn envelope(space: &Space, i: usize) -> Option<Envelope> {
+    if space.polygon.is_empty() {
+        return None;
+    }
+    let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
+    for p in &space.polygon {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    Some(GeomWithData::new(Rectangle::from_corners(lo, hi), i))
+}
+
+fn contains(space: &Space, p: Point) -> bool {
+    point_in_ring(p, &space.polygon) && !space.holes.iter().any(|h| point_in_ring(p, h))
+}
+
+/// Vertices are snapped to this grid (per metre): a micrometre.
+const SNAP_PER_M: f64 = 1.0e6;
+
+/// Largest coordinate magnitude accepted (spade needs finite, bounded input;
+/// a building is far smaller).
+const MAX_COORD: f64 = 1.0e7;
+
+impl Mesh {
+    /// Triangulates `nrg`'s spaces. Spaces with fewer than three points or
+    /// with coordinates beyond ±10 000 km are left out (they cannot be
+    /// walked).
+    pub fn new(nrg: &Nrg) -> Mesh {
+        let spaces = nrg.spaces();
+        let mut vertex_of: HashMap<[u64; 2], u32> = HashMap::new();
+        let mut points: Vec<Point> = Vec::new();
+        let mut edges: Vec<[usize; 2]> = Vec::new();
+        for space in spaces {
+            if space.polygon.len() < 3 || !in_range(space) {
+                continue;
+            }
+            for ring in std::iter::once(&space.polygon).chain(&space.holes) {
+                let ids: Vec<u32> = ring
+                    .iter()
+                    .map(|p| {
+                        // Points closer than a micrometre are one vertex
+                        // (sums like 14.6 + 0.1 differ in the last bit).
+                        let snapped = p.map(|c| (c * SNAP_PER_M).round() / SNAP_PER_M);
+                        let key = snapped.map(f64::to_bits);
+                        *vertex_of.entry(key).or_insert_with(|| {
+                            points.push(snapped);
+                            (points.len() - 1) as u32
+                        })
+                    })
+                    .collect();
+                for i in 0..ids.len() {
+                    let (a, b) = (ids[i], ids[(i + 1) % ids.len()]);
+                    if a != b {
+                        edges.push([a.min(b) as usize, a.max(b) as usize]);
+                    }
+                }
+            }
+        }
+        edges.sort_unstable();
+        edges.dedup();
+        let vertices: Vec<Point2<f64>> = points.iter().map(|p| Point2::new(p[0], p[1])).collect();
+        let mut conflicts = Vec::new();
+        let mut cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::try_bulk_load_cdt(
+            vertices,
+            edges,
+            |e| conflicts.push(e),
+        )
+        .unwrap_or_default();
+        // Edges crossing others (overlapping or touching polygons of an
+        // imported model) are added split at the crossings.
+        for [a, b] in conflicts {
+            if a < cdt.num_vertices() && b < cdt.num_vertices() {
+                cdt.add_constraint_and_split(
+                    FixedVertexHandle::from_index(a),
+                    FixedVertexHandle::from_index(b),
+                    |p| p,
+                );
+            }
+        }
+        let points: Vec<Point> = cdt
+            .vertices()
+            .map(|v| [v.position().x, v.position().y])
+            .collect();
+        Mesh::tag(nrg, points, cdt)
+    }
+
+    fn tag(
+        nrg: &Nrg,
+        points: Vec<Point>,
+        cdt: ConstrainedDelaunayTriangulation<Point2<f64>>,
+    ) -> Mesh {
+        let spaces = nrg.spaces();
+        let space_ids: Vec<SpaceId> = spaces.iter().map(|s| s.id).collect();
+        let space_index: HashMap<SpaceId, u32> = space_ids
+            .iter()
+            .enumerate()
+            .map(|(i, id)| (*id, i as u32))
+            .collect();
+        let envelopes: RTree<Envelope> = RTree::bulk_load(
+            spaces
+                .iter()
+                .enumerate()
+                .filter_map(|(i, s)| envelope(s, i))
+                .collect(),
+        );
+        // Faces in regions bounded by constraint edges: one point-in-polygon
+        // test per region.
+        let nfaces = cdt.all_faces().len();
+        let mut face_space = vec![NONE; nfaces];
+        let mut seen = vec![false; nfaces];
+        for face in cdt.inner_faces() {
+            let f = face.fix().index();
+            if seen[f] {
+                continue;
+            }
+            let [a, b, c] = face.positions();
+            let centre = [(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0];
+            let space = envelopes
+                .locate_all_at_point(&centre)
+                .map(|e| e.data)
+                .filter(|&i| contains(&spaces[i], centre))
+                .min_by(|&i, &j| {
+                    spaces[i]
+                        .area_m2
+                        .total_cmp(&spaces[j].area_m2)
+                        .then(spaces[i].id.cmp(&spaces[j].id))
+                })
+                .map_or(NONE, |i| i as u32);
+            let mut stack = vec![face.fix()];
+            seen[f] = true;
+            while let Some(h) = stack.pop() {
+                face_space[h.index()] = space;
+                for e in cdt.face(h).adjacent_edges() {
+                    if e.is_constraint_edge() {
+                        continue;
+                    }
+                    if let Some(g) = e.rev().face().as_inner()
+                        && !seen[g.fix().index()]
+                    {
+                        seen[g.fix().index()] = true;
+                        stack.push(g.fix());
+                    }
+                }
+            }
+        }
+        let mut face_tri = vec![NONE; nfaces];
+        let mut tris = Vec::new();
+        for face in cdt.inner_faces() {
+            let f = face.fix().index();
+            if face_space[f] != NONE {
+                face_tri[f] = tris.len() as u32;
+                let v = face.vertices().map(|v| v.fix().index() as u32);
+                tris.push(Tri {
+                    v,
+                    across: [Across::Wall; 3],
+                    space: face_space[f],
+                });
+            }
+        }
+        let navigable = |a: u32, b: u32| {
+            nrg.connection(space_ids[a as usize], space_ids[b as usize])
+                .is_some_and(|c| c.kind.is_navigable())
+        };
+        let mut gates = Vec::new();
+        let mut gate_of_edge: HashMap<usize, u32> = HashMap::new();
+        let mut obstacle = vec![false; points.len()];
+        for face in cdt.inner_faces() {
+            let t = face_tri[face.fix().index()];
+            if t == NONE {
+                for e in face.adjacent_edges() {
+                    // The edge bounds a space only if the other side is one.
+                    if let Some(g) = e.rev().face().as_inner()
+                        && face_tri[g.fix().index()] != NONE
+                    {
+                        for v in e.vertices() {
+                            obstacle[v.fix().index()] = true;
+                        }
+                    }
+                }
+                continue;
+            }
+            let space = tris[t as usize].space;
+            for (i, e) in face.adjacent_edges().into_iter().enumerate() {
+                let other = e
+                    .rev()
+                    .face()
+                    .as_inner()
+                    .map_or(NONE, |g| face_tri[g.fix().index()]);
+                let across = if other == NONE {
+                    Across::Wall
+                } else {
+                    let os = tris[other as usize].space;
+                    if os == space {
+                        Across::Inside(other)
+                    } else if navigable(space, os) {
+                        let key = e.as_undirected().fix().index();
+                        let gate = *gate_of_edge.entry(key).or_insert_with(|| {
+                            let [p, q] = e.vertices().map(|v| v.fix().index() as u32);
+                            let (pp, pq) = (points[p as usize], points[q as usize]);
+                            gates.push(Gate {
+                                ends: [p, q],
+                                sides: [(t, space), (other, os)],
+                                mid: [(pp[0] + pq[0]) / 2.0, (pp[1] + pq[1]) / 2.0],
+                            });
+                            (gates.len() - 1) as u32
+                        });
+                        Across::Gate { tri: other, gate }
+                    } else {
+                        Across::Wall
+                    }
+                };
+                if across == Across::Wall {
+                    for v in e.vertices() {
+                        obstacle[v.fix().index()] = true;
+                    }
+                }
+                tris[t as usize].across[i] = across;
+            }
+        }
+        let mut space_tris = vec![Vec::new(); space_ids.len()];
+        for (t, tri) in tris.iter().enumerate() {
+            space_tris[tri.space as usize].push(t as u32);
+        }
+        let mut space_gates = vec![Vec::new(); space_ids.len()];
+        for (g, gate) in gates.iter().enumerate() {
+            for (_, s) in gate.sides {
+                space_gates[s as usize].push(g as u32);
+            }
+        }
+        Mesh {
+            points,
+            tris,
+            gates,
+            space_ids,
+            space_index,
+            space_tris,
+            space_gates,
+            obstacle,
+            face_tri,
+            cdt,
+        }
+    }
+
+    /// The triangle containing `p`, preferring one of space `prefer` when
+    /// `p` lies on an edge or a vertex. `None` outside every space.
+    pub fn locate(&self, p: Point, prefer: Option<u32>) -> Option<u32> {
+        if !(p[0].is_finite() && p[1].is_finite())
+            || p[0].abs() > MAX_COORD
+            || p[1].abs() > MAX_COORD
+        {
+            return None;
+        }
+        let q = Point2::new(p[0], p[1]);
+        let candidates: Vec<u32> = match self.cdt.locate(q) {
+            PositionInTriangulation::OnFace(f) => vec![self.face_tri[f.index()]],
+            PositionInTriangulation::OnEdge(e) => {
+                let e = self.cdt.directed_edge(e);
+                [e.face(), e.rev().face()]
+                    .iter()
+                    .filter_map(|f| f.as_inner())
+                    .map(|f| self.face_tri[f.fix().index()])
+                    .collect()
+            }
+            PositionInTriangulation::OnVertex(v) => self
+                .cdt
+                .vertex(v)
+                .out_edges()
+                .filter_map(|e| e.face().as_inner())
+                .map(|f| self.face_tri[f.fix().index()])
+                .collect(),
+            _ => Vec::new(),
+        };
+        let found: Vec<u32> = candidates.into_iter().filter(|t| *t != NONE).collect();
+        found
+            .iter()
+            .copied()
+            .find(|t| Some(self.tris[*t as usize].space) == prefer)
+            .or_else(|| found.first().copied())
+    }
+
+    /// The position of vertex `v`.
+    pub fn point(&self, v: u32) -> Point {
+        self.points[v as usize]
+    }
+
+    /// The centroid of triangle `t`.
+    pub fn centroid(&self, t: u32) -> Point {
+        let [a, b, c] = self.tris[t as usize].v.map(|v| self.point(v));
+        [(a[0] + b[0] + c[0]) / 3.0, (a[1] + b[1] + c[1]) / 3.0]
+    }
+
+    /// The edge of `t` shared with `u` as (right, left) end points seen when
+    /// walking from `t` into `u`; `None` when they are not neighbours.
+    pub fn portal(&self, t: u32, u: u32) -> Option<(Point, Point)> {
+        let tri = &self.tris[t as usize];
+        (0..3).find_map(|i| {
+            let next = match tri.across[i] {
+                Across::Inside(n) => n,
+                Across::Gate { tri, .. } => tri,
+                Across::Wall => return None,
+            };
+            (next == u).then(|| (self.point(tri.v[i]), self.point(tri.v[(i + 1) % 3])))
+        })
+    }
+
+    /// [`Mesh::portal`] as vertex indices.
+    pub fn portal_vertices(&self, t: u32, u: u32) -> Option<(u32, u32)> {
+        let tri = &self.tris[t as usize];
+        (0..3).find_map(|i| {
+            let next = match tri.across[i] {
+                Across::Inside(n) => n,
+                Across::Gate { tri, .. } => tri,
+                Across::Wall => return None,
+            };
+            (next == u).then(|| (tri.v[i], tri.v[(i + 1) % 3]))
+        })
+    }
+
+    /// The dense index of a space.
+    pub fn space(&self, id: SpaceId) -> Option<u32> {
+        self.space_index.get(&id).copied()
+    }
+}
+
+fn in_range(space: &Space) -> bool {
+    std::iter::once(&space.polygon)
+        .chain(&space.holes)
+        .flatten()
+        .all(|p| p[0].abs() <= MAX_COORD && p[1].abs() <= MAX_COORD)
+}

@@ -1,0 +1,331 @@
+//! The navigation layer under the NRG: where a person or a robot can walk.
+//!
+//! Every space's polygon (with its holes) goes into one constrained Delaunay
+//! triangulation (`spade`); each triangle is tagged with its space, and a
+//! triangle edge between two spaces is a *gate* only when the model connects
+//! them navigably (a door or an open boundary), else it is a wall. A walked
+//! path is found by A* over the gates, with the in-space lengths between
+//! gates precomputed per revision ([`layer`]), and straightened through its
+//! channel of triangles by the funnel algorithm, so its length is the
+//! length actually walked, exact for the channel chosen. Clearance from
+//! walls is kept by closing passages narrower than twice it and by wrapping
+//! the path around obstacle corners at that distance.
+//!
+//! Owns [`NavMesh`], [`Profile`] and [`Endpoint`]. Uses `model`, `spade` and
+//! `rstar`; knows nothing of queries, storage or HTTP.
+
+mod clearance;
+mod funnel;
+pub(crate) mod layer;
+pub(crate) mod mesh;
+mod search;
+
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex};
+
+use serde::Serialize;
+
+use self::layer::Layer;
+use self::mesh::Mesh;
+pub(crate) use self::search::Walk;
+use self::search::{End, shortest_walk};
+use super::{Budget, RouteError};
+use crate::model::{Nrg, Point, SpaceId, SpaceKind};
+
+/// How the walker moves: the clearance it keeps from walls and furniture,
+/// the narrowest doorway it fits through, and its speed.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Profile {
+    /// Distance kept from walls and obstacles, metres (a person: 0.2; a
+    /// robot: its radius). Doorways narrower than twice this are closed.
+    pub clearance_m: f64,
+    /// Doors narrower than this are impassable (0: any door).
+    pub min_door_width_m: f64,
+    /// Walking speed for durations, metres per second.
+    pub speed_m_s: f64,
+}
+
+impl Default for Profile {
+    fn default() -> Profile {
+        Profile {
+            clearance_m: 0.2,
+            min_door_width_m: 0.0,
+            speed_m_s: 1.4,
+        }
+    }
+}
+
+impl Profile {
+    /// The geometric profile: zero clearance, any door (routes hug corners;
+    /// their length is the free-space geodesic).
+    pub fn exact() -> Profile {
+        Profile {
+            clearance_m: 0.0,
+            ..Profile::default()
+        }
+    }
+
+    /// Checks the numbers are usable.
+    pub fn validate(&self) -> Result<(), RouteError> {
+        let bad = |name: &'static str, value: f64| RouteError::BadProfile { name, value };
+        if !(self.clearance_m.is_finite() && (0.0..=MAX_CLEARANCE_M).contains(&self.clearance_m)) {
+            return Err(bad("clearance", self.clearance_m));
+        }
+        if !(self.min_door_width_m.is_finite() && (0.0..=100.0).contains(&self.min_door_width_m)) {
+            return Err(bad("min_door_width", self.min_door_width_m));
+        }
+        if !(self.speed_m_s.is_finite() && self.speed_m_s > 0.0 && self.speed_m_s <= 100.0) {
+            return Err(bad("speed", self.speed_m_s));
+        }
+        Ok(())
+    }
+}
+
+/// Largest clearance accepted, metres.
+pub const MAX_CLEARANCE_M: f64 = 5.0;
+
+/// Where a route starts or ends: a space (its anchor) or a point.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum Endpoint {
+    /// The anchor of a space.
+    Space(SpaceId),
+    /// A point in metres in the map frame.
+    Point(Point),
+}
+
+/// The navigation layer of one revision. Build it once ([`NavMesh::new`])
+/// and share it; the layers for other clearances are built on first use
+/// and kept (a few at most).
+#[derive(Debug)]
+pub struct NavMesh {
+    nrg: Arc<Nrg>,
+    exact: Arc<Level>,
+    by_clearance: Mutex<HashMap<u32, Arc<Level>>>,
+}
+
+/// The mesh and tables for one clearance.
+#[derive(Debug)]
+pub(crate) struct Level {
+    pub mesh: Arc<Mesh>,
+    pub layer: Layer,
+    /// Free opening of each door space (dense index), metres; infinite for
+    /// other spaces.
+    pub door_width: Vec<f64>,
+}
+
+/// Clearances kept in the cache at once.
+const CACHED_CLEARANCES: usize = 8;
+
+impl Level {
+    fn new(nrg: &Nrg, mesh: Arc<Mesh>, clearance_m: f64) -> Level {
+        let layer = Layer::new(&mesh, nrg, clearance_m);
+        let door_width = door_widths(nrg, &mesh);
+        Level {
+            mesh,
+            layer,
+            door_width,
+        }
+    }
+}
+
+/// A door's width: its `width_m` attribute when given, else the length of
+/// its opening (the longest run of gates on one side).
+fn door_widths(nrg: &Nrg, mesh: &Mesh) -> Vec<f64> {
+    mesh.space_ids
+        .iter()
+        .enumerate()
+        .map(|(s, id)| {
+            let Some(space) = nrg.space(*id).filter(|sp| sp.kind == SpaceKind::Door) else {
+                return f64::INFINITY;
+            };
+            if let Some(w) = space.attributes.get("width_m").and_then(|v| v.as_f64()) {
+                return w;
+            }
+            let mut by_side: HashMap<u32, f64> = HashMap::new();
+            for g in &mesh.space_gates[s] {
+                let gate = &mesh.gates[*g as usize];
+                let other = if gate.sides[0].1 == s as u32 {
+                    gate.sides[1].1
+                } else {
+                    gate.sides[0].1
+                };
+                let [a, b] = gate.ends.map(|v| mesh.point(v));
+                *by_side.entry(other).or_default() += funnel::dist(a, b);
+            }
+            by_side.values().copied().fold(0.0, f64::max)
+        })
+        .collect()
+}
+
+impl NavMesh {
+    /// Builds the navigation layer of `nrg` (at zero clearance; others on
+    /// demand).
+    pub fn new(nrg: Arc<Nrg>) -> NavMesh {
+        let mesh = Arc::new(Mesh::new(&nrg));
+        let exact = Arc::new(Level::new(&nrg, mesh, 0.0));
+        NavMesh {
+            nrg,
+            exact,
+            by_clearance: Mutex::new(HashMap::new()),
+        }
+    }
+
+    /// The model this layer was built from.
+    pub fn nrg(&self) -> &Nrg {
+        &self.nrg
+    }
+
+    /// The level for `profile`'s clearance (rounded to the centimetre).
+    pub(crate) fn level(&self, profile: &Profile) -> Arc<Level> {
+        let cm = (profile.clearance_m * 100.0).round() as u32;
+        if cm == 0 {
+            return self.exact.clone();
+        }
+        if let Ok(cache) = self.by_clearance.lock()
+            && let Some(level) = cache.get(&cm)
+        {
+            return level.clone();
+        }
+        let level = Arc::new(Level::new(
+            &self.nrg,
+            self.exact.mesh.clone(),
+            f64::from(cm) / 100.0,
+        ));
+        if let Ok(mut cache) = self.by_clearance.lock()
+            && cache.len() < CACHED_CLEARANCES
+        {
+            cache.insert(cm, level.clone());
+        }
+        level
+    }
+
+    /// The space whose walkable part contains `p` (at zero clearance).
+    pub fn locate(&self, p: Point) -> Option<SpaceId> {
+        let mesh = &self.exact.mesh;
+        mesh.locate(p, None)
+            .map(|t| mesh.space_ids[mesh.tris[t as usize].space as usize])
+    }
+
+    /// Resolves an end point on `level`.
+    pub(crate) fn end(&self, level: &Level, at: &Endpoint) -> Result<End, RouteError> {
+        let mesh = &level.mesh;
+        match at {
+            Endpoint::Space(id) => {
+                let s = mesh.space(*id).ok_or(RouteError::NotNavigable(*id))?;
+                if mesh.space_tris[s as usize].is_empty() {
+                    return Err(RouteError::NotNavigable(*id));
+                }
+                End::anchor(&level.layer, s).ok_or(RouteError::NotNavigable(*id))
+            }
+            Endpoint::Point(p) => match mesh.locate(*p, None) {
+                Some(t) => Ok(End::point(mesh, &level.layer, *p, t)),
+                None => Err(self.outside(*p)),
+            },
+        }
+    }
+
+    /// The error for a point outside every space, naming the nearest.
+    pub fn outside(&self, p: Point) -> RouteError {
+        let nearest = self
+            .nrg
+            .spaces()
+            .iter()
+            .filter(|s| !s.polygon.is_empty())
+            .map(|s| (s.id, distance_to_space(p, s)))
+            .min_by(|a, b| a.1.total_cmp(&b.1));
+        RouteError::Outside {
+            x: p[0],
+            y: p[1],
+            nearest,
+        }
+    }
+
+    /// The shortest walk between two end points avoiding `banned` spaces
+    /// (and doors narrower than the profile allows), or `None`.
+    pub(crate) fn walk(
+        &self,
+        level: &Level,
+        from: &End,
+        to: &End,
+        banned: &[bool],
+        budget: &Budget,
+    ) -> Option<Walk> {
+        shortest_walk(&level.mesh, &level.layer, from, to, banned, budget)
+    }
+
+    /// The dense "banned" mask of a level: `avoid` plus doors narrower than
+    /// the profile's minimum.
+    pub(crate) fn banned(&self, level: &Level, avoid: &[SpaceId], profile: &Profile) -> Vec<bool> {
+        let mesh = &level.mesh;
+        let mut banned: Vec<bool> = level
+            .door_width
+            .iter()
+            .map(|w| *w < profile.min_door_width_m)
+            .collect();
+        for id in avoid {
+            if let Some(s) = mesh.space(*id) {
+                banned[s as usize] = true;
+            }
+        }
+        banned
+    }
+}
+
+/// Distance from `p` to the space's area (0 inside).
+pub(crate) fn distance_to_space(p: Point, s: &crate::model::Space) -> f64 {
+    let inside = crate::model::point_in_ring(p, &s.polygon)
+        && !s.holes.iter().any(|h| crate::model::point_in_ring(p, h));
+    if inside {
+        return 0.0;
+    }
+    std::iter::once(&s.polygon)
+        .chain(&s.holes)
+        .flat_map(|r| (0..r.len()).map(move |i| (r[i], r[(i + 1) % r.len()])))
+        .map(|(a, b)| segment_distance(p, a, b))
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Distance from `p` to the segment `a`–`b`.
+pub(crate) fn segment_distance(p: Point, a: Point, b: Point) -> f64 {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let len2 = dx * dx + dy * dy;
+    let t = if len2 > 0.0 {
+        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (p[0] - a[0] - t * dx).hypot(p[1] - a[1] - t * dy)
+}
+
+impl NavMesh {
+    /// Walked length from `from` to every space's anchor on `level` (dense
+    /// order, infinite beyond `bound_m`), or `None` out of time.
+    pub(crate) fn distances(
+        &self,
+        level: &Level,
+        from: &End,
+        banned: &[bool],
+        bound_m: f64,
+        budget: &Budget,
+    ) -> Option<Vec<f64>> {
+        search::anchor_distances(&level.mesh, &level.layer, from, banned, bound_m, budget)
+    }
+
+    /// The space ids of a level in dense order.
+    pub(crate) fn space_ids<'a>(&self, level: &'a Level) -> &'a [SpaceId] {
+        &level.mesh.space_ids
+    }
+}
+
+impl NavMesh {
+    /// The width of a door space as routing sees it: its `width_m`
+    /// attribute, else the length of its opening (infinite for other kinds).
+    pub fn door_width(&self, id: SpaceId) -> f64 {
+        self.exact
+            .mesh
+            .space(id)
+            .and_then(|s| self.exact.door_width.get(s as usize).copied())
+            .unwrap_or(f64::INFINITY)
+    }
+}
