@@ -424,6 +424,27 @@ fn build(
         *v = new_id[*v as usize];
     }
     labels.count = next;
+    // Anchor: of the pixels (nearly) farthest from a wall, the one nearest
+    // the label's centroid — a corridor's middle, not its first pixel in
+    // scan order, and the same pixel after a quarter turn of the map.
+    let centre = |l: usize| {
+        let c = count[l].max(1) as f64;
+        [sum[l][0] / c, sum[l][1] / c]
+    };
+    let mut pick = vec![(f64::INFINITY, 0usize); n];
+    for (y, row) in labels.data.chunks_exact(w.max(1)).enumerate() {
+        for (x, &l) in row.iter().enumerate() {
+            let (l, i) = (l as usize, y * w + x);
+            if l == 0 || dist[i] < best[l].0 - 1.0 {
+                continue;
+            }
+            let c = centre(l);
+            let d2 = (x as f64 - c[0]).powi(2) + (y as f64 - c[1]).powi(2);
+            if d2 < pick[l].0 {
+                pick[l] = (d2, i);
+            }
+        }
+    }
     let boxes = bounding_boxes(&labels);
     let mut spaces = Vec::with_capacity(next as usize);
     let mut centroids = BTreeMap::new();
@@ -432,8 +453,14 @@ fn build(
         if id == 0 {
             continue;
         }
-        let i = best[l].1;
-        let anchor = grid.pixel_to_metres((i % w) as f64 + 0.5, (i / w) as f64 + 0.5);
+        // A door's anchor is the middle of its doorway: its centroid.
+        let anchor = if kinds[l] == SpaceKind::Door {
+            let c = centre(l);
+            grid.pixel_to_metres(c[0] + 0.5, c[1] + 0.5)
+        } else {
+            let i = pick[l].1;
+            grid.pixel_to_metres((i % w) as f64 + 0.5, (i / w) as f64 + 0.5)
+        };
         let (polygon, holes) = outline(&labels, id, boxes[id as usize], grid, simplify_m);
         let mut space = Space::new(SpaceId(id), kinds[l], anchor, polygon);
         space.holes = holes;

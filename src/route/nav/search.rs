@@ -6,7 +6,7 @@ use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
 use super::funnel::{dist, polyline_length};
-use super::layer::{Layer, Tree, walk};
+use super::layer::{Layer, SAMPLES, Tree, walk};
 use super::mesh::{Mesh, NONE};
 use crate::model::Point;
 use crate::route::Budget;
@@ -20,8 +20,8 @@ pub(crate) struct End {
     pub at: Point,
     /// Its triangle.
     pub tri: u32,
-    /// In-space walked length to each gate of its space (in
-    /// `Mesh::space_gates` order).
+    /// In-space walked length to each crossing point of each gate of its
+    /// space (`Mesh::space_gates` order, [`SAMPLES`] a gate).
     pub to_gates: Vec<f64>,
     /// How the channel to a gate is found.
     kind: EndKind,
@@ -57,21 +57,21 @@ impl End {
         let r = layer.clearance_m;
         let tree = Tree::grow(mesh, &layer.local, space, tri, at, r);
         let table = &layer.tables[space as usize];
-        let gates = mesh.space_gates[space as usize].len();
-        let to_gates = (0..gates)
-            .map(|j| {
-                let (gt, gp) = table.sources[j];
-                let g = mesh.space_gates[space as usize][j];
-                if !layer.gate_open[g as usize] {
-                    return f64::INFINITY;
-                }
-                tree.walk(mesh, &layer.local, gt)
-                    .map_or(f64::INFINITY, |mut c| {
-                        c.reverse();
-                        polyline_length(&walk(mesh, at, gp, &c, r))
-                    })
-            })
-            .collect();
+        let gates = &mesh.space_gates[space as usize];
+        let mut to_gates = vec![f64::INFINITY; gates.len() * SAMPLES];
+        for (j, g) in gates.iter().enumerate() {
+            if !layer.gate_open[*g as usize] {
+                continue;
+            }
+            let Some(mut c) = tree.walk(mesh, &layer.local, table.sources[j * SAMPLES].0) else {
+                continue;
+            };
+            c.reverse();
+            for k in 0..SAMPLES {
+                let p = table.sources[j * SAMPLES + k].1;
+                to_gates[j * SAMPLES + k] = polyline_length(&walk(mesh, at, p, &c, r));
+            }
+        }
         End {
             space,
             at,
@@ -81,8 +81,8 @@ impl End {
         }
     }
 
-    /// Triangles from this end to gate source `j` of its space (`outbound`)
-    /// or from that gate to this end.
+    /// Triangles from this end to source `j` (a gate crossing) of its space
+    /// (`outbound`) or from there to this end.
     fn channel(&self, mesh: &Mesh, layer: &Layer, j: usize, outbound: bool) -> Option<Vec<u32>> {
         let table = &layer.tables[self.space as usize];
         match &self.kind {
@@ -143,30 +143,35 @@ pub(crate) fn shortest_walk(
     banned: &[bool],
     budget: &Budget,
 ) -> Option<Walk> {
-    let gates = mesh.gates.len();
-    let mut cost = vec![f64::INFINITY; gates];
-    // Predecessor of a gate: the previous gate (NONE: the start) and the
+    // Nodes are gate crossings: gate g, sample k is node g * SAMPLES + k.
+    let nodes = mesh.gates.len() * SAMPLES;
+    let mut cost = vec![f64::INFINITY; nodes];
+    // Predecessor of a node: the previous node (NONE: the start) and the
     // space walked through.
-    let mut pred = vec![(NONE, NONE); gates];
+    let mut pred = vec![(NONE, NONE); nodes];
     let mut heap: BinaryHeap<Reverse<(u64, u32)>> = BinaryHeap::new();
-    let h = |g: u32| dist(mesh.gates[g as usize].mid, to.at);
+    let point = |n: u32| layer.samples[n as usize / SAMPLES][n as usize % SAMPLES];
+    let h = |n: u32| dist(point(n), to.at);
     let mut best = f64::INFINITY;
-    // The goal's predecessor gate (NONE: direct, inside one space).
+    // The goal's predecessor node (NONE: direct, inside one space).
     let mut best_pred = NONE;
-    if from.space == to.space {
-        if let Some(c) = from.direct(mesh, layer, to) {
-            best = polyline_length(&walk(mesh, from.at, to.at, &c, layer.clearance_m));
-        }
+    if from.space == to.space
+        && let Some(c) = from.direct(mesh, layer, to)
+    {
+        best = polyline_length(&walk(mesh, from.at, to.at, &c, layer.clearance_m));
     }
     for (j, g) in mesh.space_gates[from.space as usize].iter().enumerate() {
-        let c = from.to_gates[j];
-        if c < cost[*g as usize] {
-            cost[*g as usize] = c;
-            pred[*g as usize] = (NONE, from.space);
-            heap.push(Reverse(((c + h(*g)).to_bits(), *g)));
+        for k in 0..SAMPLES {
+            let c = from.to_gates[j * SAMPLES + k];
+            let n = *g * SAMPLES as u32 + k as u32;
+            if c < cost[n as usize] {
+                cost[n as usize] = c;
+                pred[n as usize] = (NONE, from.space);
+                heap.push(Reverse(((c + h(n)).to_bits(), n)));
+            }
         }
     }
-    while let Some(Reverse((key, g))) = heap.pop() {
+    while let Some(Reverse((key, n))) = heap.pop() {
         if budget.check() {
             return None;
         }
@@ -174,33 +179,38 @@ pub(crate) fn shortest_walk(
         if f >= best {
             break;
         }
-        let d = cost[g as usize];
-        if f > d + h(g) + 1e-9 {
+        let d = cost[n as usize];
+        if f > d + h(n) + 1e-9 {
             continue;
         }
-        let gate = &mesh.gates[g as usize];
+        let (g, k) = (n as usize / SAMPLES, n as usize % SAMPLES);
+        let gate = &mesh.gates[g];
         for (_, t) in gate.sides {
-            if t == pred[g as usize].1 || (banned[t as usize] && t != to.space) {
+            if t == pred[n as usize].1 || (banned[t as usize] && t != to.space) {
                 continue;
             }
             let list = &mesh.space_gates[t as usize];
             let table = &layer.tables[t as usize];
-            let Some(jg) = list.iter().position(|x| *x == g) else {
+            let Some(jg) = list.iter().position(|x| *x as usize == g) else {
                 continue;
             };
+            let src = jg * SAMPLES + k;
             if t == to.space {
-                let goal = d + to.to_gates[jg];
+                let goal = d + to.to_gates[src];
                 if goal < best {
                     best = goal;
-                    best_pred = g;
+                    best_pred = n;
                 }
             }
             for (jh, hgate) in list.iter().enumerate() {
-                let nd = d + table.cost(jg, jh);
-                if nd < cost[*hgate as usize] {
-                    cost[*hgate as usize] = nd;
-                    pred[*hgate as usize] = (g, t);
-                    heap.push(Reverse(((nd + h(*hgate)).to_bits(), *hgate)));
+                for k2 in 0..SAMPLES {
+                    let nd = d + table.cost(src, jh * SAMPLES + k2);
+                    let m = *hgate * SAMPLES as u32 + k2 as u32;
+                    if nd < cost[m as usize] {
+                        cost[m as usize] = nd;
+                        pred[m as usize] = (n, t);
+                        heap.push(Reverse(((nd + h(m)).to_bits(), m)));
+                    }
                 }
             }
         }
@@ -208,13 +218,13 @@ pub(crate) fn shortest_walk(
     if !best.is_finite() {
         return None;
     }
-    // Gates from the goal back to the start.
+    // Nodes from the goal back to the start.
     let mut chain = Vec::new();
-    let mut g = best_pred;
-    while g != NONE {
-        chain.push(g);
-        g = pred[g as usize].0;
-        if chain.len() > gates {
+    let mut n = best_pred;
+    while n != NONE {
+        chain.push(n);
+        n = pred[n as usize].0;
+        if chain.len() > nodes {
             return None;
         }
     }
@@ -231,7 +241,14 @@ fn assemble(
     chain: &[u32],
     pred: &[(u32, u32)],
 ) -> Option<Walk> {
-    let index_in = |s: u32, g: u32| mesh.space_gates[s as usize].iter().position(|x| *x == g);
+    // The source index of node `n` in space `s`'s table.
+    let index_in = |s: u32, n: u32| {
+        let (g, k) = (n / SAMPLES as u32, n as usize % SAMPLES);
+        mesh.space_gates[s as usize]
+            .iter()
+            .position(|x| *x == g)
+            .map(|j| j * SAMPLES + k)
+    };
     let mut tris: Vec<u32> = Vec::new();
     let mut spaces = vec![from.space];
     if chain.is_empty() {
@@ -258,7 +275,7 @@ fn assemble(
         points,
         length_m,
         spaces,
-        gates: chain.to_vec(),
+        gates: chain.iter().map(|n| n / SAMPLES as u32).collect(),
     })
 }
 
@@ -273,14 +290,17 @@ pub(crate) fn anchor_distances(
     bound_m: f64,
     budget: &Budget,
 ) -> Option<Vec<f64>> {
-    let gates = mesh.gates.len();
-    let mut cost = vec![f64::INFINITY; gates];
+    let nodes = mesh.gates.len() * SAMPLES;
+    let mut cost = vec![f64::INFINITY; nodes];
     let mut heap: BinaryHeap<Reverse<(u64, u32)>> = BinaryHeap::new();
     for (j, g) in mesh.space_gates[from.space as usize].iter().enumerate() {
-        let c = from.to_gates[j];
-        if c <= bound_m && c < cost[*g as usize] {
-            cost[*g as usize] = c;
-            heap.push(Reverse((c.to_bits(), *g)));
+        for k in 0..SAMPLES {
+            let c = from.to_gates[j * SAMPLES + k];
+            let n = *g as usize * SAMPLES + k;
+            if c <= bound_m && c < cost[n] {
+                cost[n] = c;
+                heap.push(Reverse((c.to_bits(), n as u32)));
+            }
         }
     }
     let mut out = vec![f64::INFINITY; mesh.space_ids.len()];
@@ -297,32 +317,37 @@ pub(crate) fn anchor_distances(
                 })
         }
     };
-    while let Some(Reverse((key, g))) = heap.pop() {
+    while let Some(Reverse((key, n))) = heap.pop() {
         if budget.check() {
             return None;
         }
         let d = f64::from_bits(key);
-        if d > cost[g as usize] {
+        if d > cost[n as usize] {
             continue;
         }
-        for (_, t) in mesh.gates[g as usize].sides {
+        let (g, k) = (n as usize / SAMPLES, n as usize % SAMPLES);
+        for (_, t) in mesh.gates[g].sides {
             if banned[t as usize] {
                 continue;
             }
             let list = &mesh.space_gates[t as usize];
             let table = &layer.tables[t as usize];
-            let Some(jg) = list.iter().position(|x| *x == g) else {
+            let Some(jg) = list.iter().position(|x| *x as usize == g) else {
                 continue;
             };
-            let to_anchor = d + table.cost(jg, table.anchor());
+            let src = jg * SAMPLES + k;
+            let to_anchor = d + table.cost(src, table.anchor());
             if to_anchor <= bound_m && to_anchor < out[t as usize] {
                 out[t as usize] = to_anchor;
             }
             for (jh, h) in list.iter().enumerate() {
-                let nd = d + table.cost(jg, jh);
-                if nd <= bound_m && nd < cost[*h as usize] {
-                    cost[*h as usize] = nd;
-                    heap.push(Reverse((nd.to_bits(), *h)));
+                for k2 in 0..SAMPLES {
+                    let nd = d + table.cost(src, jh * SAMPLES + k2);
+                    let m = *h as usize * SAMPLES + k2;
+                    if nd <= bound_m && nd < cost[m] {
+                        cost[m] = nd;
+                        heap.push(Reverse((nd.to_bits(), m as u32)));
+                    }
                 }
             }
         }

@@ -1,0 +1,208 @@
+//! A stable interior point of a polygon with holes: the pole of
+//! inaccessibility, the centre of (nearly) the largest inscribed circle —
+//! the polylabel algorithm (Agafonkin, Mapbox 2016): quadtree cells over
+//! the bounding box, searched best-first by the distance an inner point of
+//! the cell could reach, until no cell can beat the best by `precision`.
+
+use std::cmp::Ordering;
+use std::collections::BinaryHeap;
+
+use super::geometry::{Point, point_in_ring, polygon_centroid};
+
+/// Signed distance from `p` to the polygon's boundary: positive inside
+/// (exterior minus holes), negative outside.
+fn signed_distance(p: Point, exterior: &[Point], holes: &[Vec<Point>]) -> f64 {
+    let inside = point_in_ring(p, exterior) && !holes.iter().any(|h| point_in_ring(p, h));
+    let mut best = f64::INFINITY;
+    for ring in std::iter::once(exterior).chain(holes.iter().map(Vec::as_slice)) {
+        let n = ring.len();
+        for i in 0..n {
+            let (a, b) = (ring[i], ring[(i + 1) % n]);
+            let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+            let len2 = dx * dx + dy * dy;
+            let t = if len2 > 0.0 {
+                (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            best = best.min((p[0] - a[0] - t * dx).hypot(p[1] - a[1] - t * dy));
+        }
+    }
+    if inside { best } else { -best }
+}
+
+#[derive(Debug, Clone, Copy)]
+struct Cell {
+    centre: Point,
+    half: f64,
+    distance: f64,
+    /// The most any point of the cell can be from the boundary.
+    bound: f64,
+}
+
+impl Cell {
+    fn new(centre: Point, half: f64, exterior: &[Point], holes: &[Vec<Point>]) -> Cell {
+        let distance = signed_distance(centre, exterior, holes);
+        Cell {
+            centre,
+            half,
+            distance,
+            bound: distance + half * std::f64::consts::SQRT_2,
+        }
+    }
+}
+
+impl PartialEq for Cell {
+    fn eq(&self, other: &Cell) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+impl Eq for Cell {}
+impl PartialOrd for Cell {
+    fn partial_cmp(&self, other: &Cell) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl Ord for Cell {
+    fn cmp(&self, other: &Cell) -> Ordering {
+        // Best bound first; ties by position so the order is total and
+        // does not depend on insertion order.
+        self.bound
+            .total_cmp(&other.bound)
+            .then(other.centre[0].total_cmp(&self.centre[0]))
+            .then(other.centre[1].total_cmp(&self.centre[1]))
+    }
+}
+
+/// Most cells examined (bounds the work on huge or degenerate input).
+const MAX_CELLS: usize = 100_000;
+
+/// The pole of inaccessibility of the polygon (`exterior` with `holes`),
+/// to within `precision` metres of the best distance, and its distance to
+/// the boundary. Of the points nearly as deep as the deepest (within
+/// `2 × precision` and 1 %), the one nearest the polygon's centroid wins,
+/// so a straight corridor's pole is its middle and a quarter turn of the
+/// map turns the pole with it. `None` for fewer than three points.
+///
+/// ```
+/// use nrgdb::model::pole_of_inaccessibility;
+/// // An L: the widest spot is in its long leg, not at the centroid.
+/// let l = vec![[0.0, 0.0], [10.0, 0.0], [10.0, 2.0], [2.0, 2.0], [2.0, 6.0], [0.0, 6.0]];
+/// let (p, r) = pole_of_inaccessibility(&l, &[], 0.01).unwrap();
+/// assert!((r - 1.0).abs() < 0.02 && p[1] > 0.9 && p[1] < 1.1);
+/// ```
+pub fn pole_of_inaccessibility(
+    exterior: &[Point],
+    holes: &[Vec<Point>],
+    precision: f64,
+) -> Option<(Point, f64)> {
+    if exterior.len() < 3 || exterior.iter().flatten().any(|c| !c.is_finite()) {
+        return None;
+    }
+    let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
+    for p in exterior {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    let size = (hi[0] - lo[0]).min(hi[1] - lo[1]);
+    let precision = precision.max(1e-9);
+    let centroid = polygon_centroid(exterior).unwrap_or(lo);
+    let mut best = Cell::new(centroid, 0.0, exterior, holes);
+    if size <= 0.0 {
+        return Some((best.centre, best.distance.max(0.0)));
+    }
+    let half = size / 2.0;
+    let mut queue = BinaryHeap::new();
+    let mut x = lo[0];
+    while x < hi[0] {
+        let mut y = lo[1];
+        while y < hi[1] {
+            queue.push(Cell::new([x + half, y + half], half, exterior, holes));
+            y += size;
+        }
+        x += size;
+    }
+    let mut seen = 0;
+    let mut examined = vec![best];
+    while let Some(cell) = queue.pop() {
+        examined.push(cell);
+        if cell.distance > best.distance + 1e-12 {
+            best = cell;
+        }
+        if cell.bound - best.distance <= precision || seen >= MAX_CELLS {
+            continue;
+        }
+        let h = cell.half / 2.0;
+        for (dx, dy) in [(-h, -h), (h, -h), (-h, h), (h, h)] {
+            queue.push(Cell::new(
+                [cell.centre[0] + dx, cell.centre[1] + dy],
+                h,
+                exterior,
+                holes,
+            ));
+            seen += 1;
+        }
+    }
+    // Of the points nearly as deep as the best (a corridor's centre line is
+    // a plateau), the one nearest the centroid: a rule that turns with the
+    // map, unlike the search order.
+    let tolerance = 2.0 * precision + 0.01 * best.distance.max(0.0);
+    let pick = examined
+        .iter()
+        .filter(|c| c.distance >= best.distance - tolerance)
+        .min_by(|a, b| {
+            let d = |c: &Cell| (c.centre[0] - centroid[0]).hypot(c.centre[1] - centroid[1]);
+            d(a).total_cmp(&d(b))
+                .then(a.centre[0].total_cmp(&b.centre[0]))
+                .then(a.centre[1].total_cmp(&b.centre[1]))
+        })
+        .copied()
+        .unwrap_or(best);
+    Some((pick.centre, pick.distance.max(0.0)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn turn(p: Point) -> Point {
+        [-p[1], p[0]]
+    }
+
+    #[test]
+    fn square_pole_is_its_centre() {
+        let sq = vec![[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]];
+        let (p, r) = pole_of_inaccessibility(&sq, &[], 1e-3).unwrap();
+        assert!((p[0] - 2.0).abs() < 1e-2 && (p[1] - 2.0).abs() < 1e-2);
+        assert!((r - 2.0).abs() < 1e-2);
+    }
+
+    #[test]
+    fn a_hole_pushes_the_pole_aside() {
+        let sq = vec![[0.0, 0.0], [6.0, 0.0], [6.0, 4.0], [0.0, 4.0]];
+        let hole = vec![[2.0, 1.0], [2.0, 3.0], [4.0, 3.0], [4.0, 1.0]];
+        let (p, r) = pole_of_inaccessibility(&sq, &[hole.clone()], 1e-3).unwrap();
+        assert!(signed_distance(p, &sq, &[hole]) > 0.0);
+        assert!(r >= 0.99, "{r}");
+    }
+
+    #[test]
+    fn a_quarter_turn_turns_the_pole() {
+        let l = vec![
+            [0.0, 0.0],
+            [7.0, 0.0],
+            [7.0, 3.0],
+            [3.0, 3.0],
+            [3.0, 5.0],
+            [0.0, 5.0],
+        ];
+        let (p, r) = pole_of_inaccessibility(&l, &[], 1e-3).unwrap();
+        let turned: Vec<Point> = l.iter().map(|q| turn(*q)).collect();
+        let (q, s) = pole_of_inaccessibility(&turned, &[], 1e-3).unwrap();
+        assert!((r - s).abs() < 2e-3);
+        let tp = turn(p);
+        assert!((tp[0] - q[0]).hypot(tp[1] - q[1]) < 0.05, "{tp:?} vs {q:?}");
+    }
+}
