@@ -134,3 +134,7 @@ mod tests {
         assert!((polygon_area(&out[1].0) - 3.0).abs() < 1e-9);
     }
 }
+
+#[cfg(test)]
+#[path = "polygon_tiling_tests.rs"]
+mod tiling_tests;

@@ -108,9 +108,9 @@ fn give_away_pieces(labels: &mut Labels) -> usize {
     }
     // Pixels per piece, and the largest piece of each label.
     let mut size = vec![0usize; runs.len()];
-    for k in 0..runs.len() {
+    for (k, run) in runs.iter().enumerate() {
         let r = find(&mut parent, k);
-        size[r] += runs[k].x1 - runs[k].x0;
+        size[r] += run.x1 - run.x0;
     }
     let mut largest: HashMap<u32, usize> = HashMap::new();
     for k in 0..runs.len() {
