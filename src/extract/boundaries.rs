@@ -149,42 +149,51 @@ pub(crate) fn trace_boundaries(labels: &Labels) -> Boundaries {
         vertical: vec![false; (w + 1) * h],
     };
     let mut arcs = Vec::new();
-    // Arcs from junctions: only corners between two different pixel rows
-    // or columns can be junctions, so rows of identical pairs are skipped.
-    for cy in 0..=h as i32 {
-        for cx in 0..=w as i32 {
-            let c = [cx, cy];
-            if !maybe_junction(&f, c) || f.degree(c) < 3 {
-                continue;
-            }
-            for d in Dir::ALL {
-                if f.has_edge(c, d) && seen.mark(c, d) {
-                    arcs.push(walk(&f, &mut seen, c, d));
+    let data = &labels.data;
+    // The framed pixel rows above and below corner row `cy`.
+    let rows = |cy: usize| {
+        let up = (cy > 0).then(|| &data[(cy - 1) * w..cy * w]);
+        let down = (cy < h).then(|| &data[cy * w..(cy + 1) * w]);
+        let px =
+            move |row: Option<&[u32]>, cx: usize| row.and_then(|r| r.get(cx)).copied().unwrap_or(0);
+        (move |cx| px(up, cx), move |cx| px(down, cx))
+    };
+    // Arcs from junctions: corners with three or four boundary edges. The
+    // pixels left of a corner are those right of the previous one.
+    for cy in 0..=h {
+        let (up, down) = rows(cy);
+        let (mut a, mut p) = (0, 0);
+        for cx in 0..=w {
+            let (b, q) = (up(cx), down(cx));
+            let degree = usize::from(a != b)
+                + usize::from(p != q)
+                + usize::from(a != p)
+                + usize::from(b != q);
+            if degree >= 3 {
+                let c = [cx as i32, cy as i32];
+                for d in Dir::ALL {
+                    if f.has_edge(c, d) && seen.mark(c, d) {
+                        arcs.push(walk(&f, &mut seen, c, d));
+                    }
                 }
             }
+            (a, p) = (b, q);
         }
     }
     // Closed boundaries without junctions start at their first horizontal
     // edge in row-major order: their top-left corner, heading east.
-    for cy in 0..=h as i32 {
-        for cx in 0..w as i32 {
-            let c = [cx, cy];
-            if f.has_edge(c, Dir::East) && seen.mark(c, Dir::East) {
+    for cy in 0..=h {
+        let (up, down) = rows(cy);
+        for cx in 0..w {
+            if up(cx) != down(cx) && !seen.horizontal[cy * w + cx] {
+                let c = [cx as i32, cy as i32];
+                seen.mark(c, Dir::East);
                 arcs.push(walk(&f, &mut seen, c, Dir::East));
             }
         }
     }
     let rings = chain_rings(&arcs, labels.count as usize);
     Boundaries { arcs, rings }
-}
-
-/// Cheap test: a corner whose four pixels hold fewer than three labels and
-/// no diagonal pair is no junction.
-fn maybe_junction(f: &Framed, c: Corner) -> bool {
-    let (x, y) = (i64::from(c[0]), i64::from(c[1]));
-    let (a, b) = (f.at(x - 1, y - 1), f.at(x, y - 1));
-    let (p, q) = (f.at(x - 1, y), f.at(x, y));
-    !(a == b && p == q || a == p && b == q)
 }
 
 /// Follows the boundary from corner `c` (edge `d` already marked) to the

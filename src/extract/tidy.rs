@@ -23,13 +23,25 @@ const MAX_ROUNDS: usize = 16;
 /// pixels that changed label.
 pub(crate) fn tidy_labels(labels: &mut Labels) -> usize {
     let mut changed = 0;
+    // Pieces are looked for once the pinches are closed, and pinches again
+    // after pieces moved.
+    let mut pieces_due = true;
     for _ in 0..MAX_ROUNDS {
         let pinches = close_pinches(labels);
-        let pieces = give_away_pieces(labels);
-        changed += pinches + pieces;
-        if pieces == 0 && pinches == 0 {
+        changed += pinches;
+        if pinches > 0 {
+            pieces_due = true;
+            continue;
+        }
+        if !pieces_due {
             break;
         }
+        let pieces = give_away_pieces(labels);
+        changed += pieces;
+        if pieces == 0 {
+            break;
+        }
+        pieces_due = false;
     }
     changed
 }
@@ -38,30 +50,47 @@ pub(crate) fn tidy_labels(labels: &mut Labels) -> usize {
 /// labels; returns how many pixels changed.
 fn close_pinches(labels: &mut Labels) -> usize {
     let (w, h) = (labels.width as usize, labels.height as usize);
-    let d = &mut labels.data;
     let mut changed = 0;
     for y in 0..h.saturating_sub(1) {
-        for x in 0..w.saturating_sub(1) {
-            let (i, j) = (y * w + x, (y + 1) * w + x);
-            let (a, b, c, e) = (d[i], d[i + 1], d[j], d[j + 1]);
-            if a == b && c == e {
-                continue;
-            }
-            // The diagonal pair and the two pixels that could join it.
-            let (label, first, second) = if a == e && a != 0 && b != a && c != a {
-                (a, i + 1, j)
+        let (top, bottom) = labels.data.split_at_mut((y + 1) * w);
+        let (r0, r1) = (&mut top[y * w..], &mut bottom[..w]);
+        let mut x = 0;
+        while x + 1 < w {
+            // Skip blocks whose rows are each uniform (no pinch there).
+            let Some(k) = r0[x..]
+                .windows(2)
+                .zip(r1[x..].windows(2))
+                .position(|(p, q)| p[0] != p[1] || q[0] != q[1])
+            else {
+                break;
+            };
+            x += k;
+            let (a, b, c, e) = (r0[x], r0[x + 1], r1[x], r1[x + 1]);
+            // The diagonal pair's label, and the two pixels that could join it
+            // (true: in the top row).
+            let fix = if a == e && a != 0 && b != a && c != a {
+                Some((a, (true, x + 1), (false, x)))
             } else if b == c && b != 0 && a != b && e != b {
-                (b, i, j + 1)
+                Some((b, (true, x), (false, x + 1)))
             } else {
-                continue;
+                None
             };
-            let take = if d[second] == 0 && d[first] != 0 {
-                second
-            } else {
-                first
-            };
-            d[take] = label;
-            changed += 1;
+            if let Some((label, first, second)) = fix {
+                let get = |(top, i): (bool, usize)| if top { r0[i] } else { r1[i] };
+                // A 0 pixel goes first, so that no space loses one.
+                let (top, i) = if get(second) == 0 && get(first) != 0 {
+                    second
+                } else {
+                    first
+                };
+                if top {
+                    r0[i] = label;
+                } else {
+                    r1[i] = label;
+                }
+                changed += 1;
+            }
+            x += 1;
         }
     }
     changed
