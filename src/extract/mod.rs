@@ -11,11 +11,16 @@
 //! watershed, or `ccl`: the paper's Experiment I), merging of tiny regions
 //! (`merge`), door spaces cut across doorway gaps and narrow borders
 //! (`doors`), unknown pockets and specks joined to their spaces
-//! (`interior`), region adjacency, labelling and refinement (`graph`),
-//! outlines (`polygon`).
+//! (`interior`), each space made one 4-connected piece without diagonal
+//! pinches (`tidy`), region adjacency, labelling and refinement (`graph`),
+//! outlines along pixel edges that tile the spaces exactly (`polygon`:
+//! arcs between junctions from `boundaries`, each simplified once by
+//! `simplify`, topology kept by `conflicts`).
 
+mod boundaries;
 mod ccl;
 mod clean;
+mod conflicts;
 mod doors;
 mod error;
 mod furniture;
@@ -33,6 +38,7 @@ mod segment;
 mod simplify;
 mod skeleton_doors;
 mod stubs;
+mod tidy;
 mod wall_gaps;
 
 pub use error::ExtractError;

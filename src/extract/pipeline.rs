@@ -12,11 +12,12 @@ use super::interior::{claim_enclosed_unknown, fill_specks};
 use super::joins::{JoinLimits, open_joins};
 use super::merge::{merge_pairs, merge_small};
 use super::passages::give_passages_to_narrow_side;
-use super::polygon::{bounding_boxes, outline};
+use super::polygon::outlines;
 use super::resample::{coarsen, pixel_centroids, refine};
 use super::segment::segment_basins;
 use super::skeleton_doors::skeleton_doorways;
 use super::stubs::{StubLimits, compared_width, passage_labels, split_off_passages};
+use super::tidy::tidy_labels;
 use super::wall_gaps::{GapLimits, WallGap, close_gaps, reopen_gaps, wall_gaps};
 use super::{DoorRule, ExtractError, ExtractParams, Method};
 use crate::grid::OccupancyGrid;
@@ -256,6 +257,10 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     );
     fill_specks(&mut labels, (MIN_HOLE_M2 / (res * res)).floor() as usize);
     clock.lap("doors");
+    // One simple polygon per space: before the graph, so that it and the
+    // polygons see the same labels.
+    tidy_labels(&mut labels);
+    clock.lap("tidy");
     let shape = region_shapes(&labels, &dist);
     let topo = topology(
         &labels,
@@ -445,7 +450,7 @@ fn build(
             }
         }
     }
-    let boxes = bounding_boxes(&labels);
+    let mut outlines = outlines(&labels, grid, simplify_m);
     let mut spaces = Vec::with_capacity(next as usize);
     let mut centroids = BTreeMap::new();
     for l in 1..n {
@@ -461,7 +466,7 @@ fn build(
             let i = pick[l].1;
             grid.pixel_to_metres((i % w) as f64 + 0.5, (i / w) as f64 + 0.5)
         };
-        let (polygon, holes) = outline(&labels, id, boxes[id as usize], grid, simplify_m);
+        let (polygon, holes) = std::mem::take(&mut outlines[id as usize]);
         let mut space = Space::new(SpaceId(id), kinds[l], anchor, polygon);
         space.holes = holes;
         space.update_area();

@@ -1,121 +1,98 @@
-//! Space outlines: contours of each label (Suzuki–Abe, via imageproc),
-//! simplified, in metres in the map frame, exterior CCW and holes CW.
+//! Space outlines that tile the labelled area: each label's polygon is the
+//! boundary of the union of its pixel squares (`boundaries.rs`), with every
+//! boundary arc simplified once (`simplify.rs`) and shared, reversed, by the
+//! two labels on its sides; in metres in the map frame, exterior CCW and
+//! holes CW.
+//!
+//! Simplification never changes the topology: arcs whose simplified form
+//! crosses or touches another, turns a junction or misplaces a ring
+//! (`conflicts.rs`) are simplified again with half the tolerance, down to
+//! the unsimplified staircase. Expects a tidied label image (`tidy.rs`): one
+//! 4-connected piece per label, no diagonal pinches.
+//!
+//! Uses grid (pixel → metre) and imaging (labels) only.
 
-use image::GrayImage;
-use imageproc::contours::{BorderType, find_contours};
-
-use super::simplify::simplify_ring;
+use super::boundaries::{RingArcs, ring_corners, trace_boundaries, twice_area};
+use super::conflicts::{Junctions, LabelRings, mark_bad_rings, mark_crossings};
+use super::simplify::{Corner, simplify_arc};
 use crate::grid::OccupancyGrid;
 use crate::imaging::Labels;
-use crate::model::{Point, Ring, polygon_area};
+use crate::model::{Ring, polygon_area};
 
-/// Bounding box `[min_col, min_row, max_col, max_row]` of every label (index 0 unused).
-pub(crate) fn bounding_boxes(labels: &Labels) -> Vec<[u32; 4]> {
-    labels.bounding_boxes()
-}
+/// Tolerances tried for an arc, as fractions of `simplify_m`; the last
+/// keeps every turn of the staircase.
+const LEVELS: [f64; 4] = [1.0, 0.5, 0.25, 0.0];
 
-/// The outline of label `l` (largest outer border) and its holes, in metres.
-pub(crate) fn outline(
+/// The outline (exterior, holes) of every label, indexed by label (index 0
+/// and labels without pixels get empty rings). Neighbouring labels share
+/// their boundary points exactly.
+pub(crate) fn outlines(
     labels: &Labels,
-    l: u32,
-    bbox: [u32; 4],
     grid: &OccupancyGrid,
     simplify_m: f64,
-) -> (Ring, Vec<Ring>) {
-    let [x0, y0, x1, y1] = bbox;
-    if x0 > x1 || y0 > y1 {
-        return (Vec::new(), Vec::new());
+) -> Vec<(Ring, Vec<Ring>)> {
+    let b = trace_boundaries(labels);
+    let raw: Vec<Vec<Corner>> = b.arcs.iter().map(|a| a.pts.clone()).collect();
+    let rings: Vec<Option<LabelRings>> = b.rings.into_iter().map(|r| split(r, &raw)).collect();
+    let eps_px = simplify_m / grid.resolution;
+    let mut level = vec![0usize; raw.len()];
+    let mut geom: Vec<Vec<Corner>> = raw.iter().map(|p| simplify_arc(p, eps_px)).collect();
+    let junctions = Junctions::new(&b.arcs);
+    let mut changed: Option<Vec<bool>> = None;
+    for _ in 0..=LEVELS.len() {
+        let mut bad = vec![false; raw.len()];
+        mark_crossings(&geom, changed.as_deref(), &mut bad);
+        junctions.mark_turned(&geom, &mut bad);
+        mark_bad_rings(&rings, &geom, &mut bad);
+        let mut moved = vec![false; raw.len()];
+        for k in 0..raw.len() {
+            if bad[k] && level[k] + 1 < LEVELS.len() {
+                level[k] += 1;
+                geom[k] = simplify_arc(&raw[k], eps_px * LEVELS[level[k]]);
+                moved[k] = true;
+            }
+        }
+        if !moved.contains(&true) {
+            break;
+        }
+        changed = Some(moved);
     }
-    // One pixel of padding so borders never touch the crop's edge.
-    let (cw, ch) = (x1 - x0 + 3, y1 - y0 + 3);
-    let w = labels.width as usize;
-    let mut crop = GrayImage::new(cw, ch);
-    let (cols, cw) = ((x1 - x0 + 1) as usize, cw as usize);
-    for (y, dst) in crop
-        .chunks_exact_mut(cw)
-        .skip(1)
-        .take((y1 - y0 + 1) as usize)
-        .enumerate()
-    {
-        let start = (y0 as usize + y) * w + x0 as usize;
-        let src = &labels.data[start..start + cols];
-        for (d, &s) in dst[1..=cols].iter_mut().zip(src) {
-            *d = if s == l { 255 } else { 0 };
+    let to_m = |ring: &RingArcs, ccw: bool| -> Ring {
+        let mut r: Ring = ring_corners(ring, &geom)
+            .into_iter()
+            .map(|[x, y]| grid.pixel_to_metres(f64::from(x), f64::from(y)))
+            .collect();
+        if (polygon_area(&r) > 0.0) != ccw {
+            r.reverse();
+        }
+        r
+    };
+    rings
+        .iter()
+        .map(|l| match l {
+            Some(l) => (
+                to_m(&l.exterior, true),
+                l.holes.iter().map(|h| to_m(h, false)).collect(),
+            ),
+            None => (Vec::new(), Vec::new()),
+        })
+        .collect()
+}
+
+/// A label's exterior (the largest ring with the label on its inside; a
+/// tidied label has one) and its holes.
+fn split(rings: Vec<RingArcs>, raw: &[Vec<Corner>]) -> Option<LabelRings> {
+    let mut exterior: Option<(i64, RingArcs)> = None;
+    let mut holes = Vec::new();
+    for r in rings {
+        let a = twice_area(&ring_corners(&r, raw));
+        if a > 0 {
+            holes.push(r);
+        } else if exterior.as_ref().is_none_or(|(best, _)| a < *best) {
+            exterior = Some((a, r));
         }
     }
-    let contours = find_contours::<i32>(&crop);
-    let to_m = |c: &imageproc::contours::Contour<i32>| -> Ring {
-        c.points
-            .iter()
-            .map(|p| {
-                let col = f64::from(x0) + f64::from(p.x - 1) + 0.5;
-                let row = f64::from(y0) + f64::from(p.y - 1) + 0.5;
-                grid.pixel_to_metres(col, row)
-            })
-            .collect()
-    };
-    let outer = contours
-        .iter()
-        .enumerate()
-        .filter(|(_, c)| c.border_type == BorderType::Outer)
-        .max_by(|a, b| {
-            polygon_area(&to_m(a.1))
-                .abs()
-                .total_cmp(&polygon_area(&to_m(b.1)).abs())
-        });
-    let Some((oi, oc)) = outer else {
-        return (Vec::new(), Vec::new());
-    };
-    let exterior = finish(to_m(oc), simplify_m, true);
-    let exterior = if distinct(&exterior) < 3 {
-        pixel_box(bbox, grid)
-    } else {
-        exterior
-    };
-    let holes = contours
-        .iter()
-        .filter(|c| c.border_type == BorderType::Hole && c.parent == Some(oi))
-        .map(|c| finish(to_m(c), simplify_m, false))
-        .filter(|r| distinct(r) >= 3 && polygon_area(r).abs() > 0.0)
-        .collect();
-    (exterior, holes)
-}
-
-fn finish(ring: Ring, simplify_m: f64, ccw: bool) -> Ring {
-    let mut r = simplify_ring(&ring, simplify_m);
-    if distinct(&r) < 3 {
-        r = ring;
-    }
-    if (polygon_area(&r) > 0.0) != ccw {
-        r.reverse();
-    }
-    r
-}
-
-fn distinct(r: &[Point]) -> usize {
-    let mut v: Vec<Point> = r.to_vec();
-    v.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
-    v.dedup();
-    if polygon_area(r).abs() < 1e-12 {
-        v.len().min(2)
-    } else {
-        v.len()
-    }
-}
-
-/// The outer corners of a pixel box, CCW in metres (for one-pixel-thin spaces).
-fn pixel_box(bbox: [u32; 4], grid: &OccupancyGrid) -> Ring {
-    let [x0, y0, x1, y1] = bbox.map(f64::from);
-    let mut r = vec![
-        grid.pixel_to_metres(x0, y1 + 1.0),
-        grid.pixel_to_metres(x1 + 1.0, y1 + 1.0),
-        grid.pixel_to_metres(x1 + 1.0, y0),
-        grid.pixel_to_metres(x0, y0),
-    ];
-    if polygon_area(&r) < 0.0 {
-        r.reverse();
-    }
-    r
+    exterior.map(|(_, exterior)| LabelRings { exterior, holes })
 }
 
 #[cfg(test)]
@@ -133,19 +110,18 @@ mod tests {
             }
         }
         labels.count = 1;
-        let b = bounding_boxes(&labels);
-        assert_eq!(b[1], [1, 1, 5, 5]);
-        let (ext, holes) = outline(&labels, 1, b[1], &grid, 0.01);
+        let out = outlines(&labels, &grid, 0.01);
+        let (ext, holes) = &out[1];
         assert_eq!(ext.len(), 4);
-        assert!(polygon_area(&ext) > 0.0);
-        // Pixel centres 1.5..5.5 in x, and y = 7 - row - 0.5.
-        assert!(ext.contains(&[1.5, 5.5]) && ext.contains(&[5.5, 1.5]));
+        assert!((polygon_area(ext) - 25.0).abs() < 1e-12);
+        // Pixel corners 1..6 in x, and y = 7 - row.
+        assert!(ext.contains(&[1.0, 6.0]) && ext.contains(&[6.0, 1.0]));
         assert_eq!(holes.len(), 1);
-        assert!(polygon_area(&holes[0]) < 0.0);
+        assert!((polygon_area(&holes[0]) + 1.0).abs() < 1e-12);
     }
 
     #[test]
-    fn a_thin_line_gets_a_box() {
+    fn a_thin_line_is_a_one_pixel_rectangle() {
         let grid = OccupancyGrid::from_cells(5, 1, 1.0, [0.0; 3], vec![Cell::Free; 5]);
         let labels = Labels {
             width: 5,
@@ -153,8 +129,12 @@ mod tests {
             data: vec![0, 1, 1, 1, 0],
             count: 1,
         };
-        let (ext, _) = outline(&labels, 1, [1, 0, 3, 0], &grid, 0.01);
-        assert_eq!(ext.len(), 4);
-        assert!((polygon_area(&ext) - 3.0).abs() < 1e-9);
+        let out = outlines(&labels, &grid, 0.01);
+        assert_eq!(out[1].0.len(), 4);
+        assert!((polygon_area(&out[1].0) - 3.0).abs() < 1e-9);
     }
 }
+
+#[cfg(test)]
+#[path = "polygon_tiling_tests.rs"]
+mod tiling_tests;

@@ -12,6 +12,7 @@ mod support;
 
 mod demo;
 mod extract;
+mod extract_tiling;
 mod query;
 mod query_cli;
 mod query_golden;
