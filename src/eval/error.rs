@@ -29,6 +29,12 @@ pub enum EvalError {
         /// The size given.
         cell_m: f64,
     },
+    /// The geodesic raster's gap to bridge is not a finite number >= 0.
+    #[error("the gap to bridge between spaces must be a finite number >= 0 m, got {gap_m}")]
+    BadGap {
+        /// The gap given.
+        gap_m: f64,
+    },
     /// The model has no space to rasterise.
     #[error("the model has no space, so there is no free space to walk through")]
     NoSpaces,

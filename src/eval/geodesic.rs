@@ -94,9 +94,26 @@ impl FreeSpaceGrid {
     /// Errors: `cell_m` not finite and > 0, a model without spaces, or more
     /// than [`GEODESIC_MAX_CELLS`] cells.
     pub fn new(nrg: &Nrg, cell_m: f64) -> Result<FreeSpaceGrid, EvalError> {
+        FreeSpaceGrid::with_gap(nrg, cell_m, 0.0)
+    }
+
+    /// [`FreeSpaceGrid::new`], then also frees every cell within
+    /// `round(gap_m / cell_m)` cells (Chebyshev) of a free cell: a square
+    /// dilation that bridges gaps up to about `2 gap_m` wide between spaces
+    /// that should touch but do not (extracted outlines run through the
+    /// centres of their boundary pixels, so neighbours are a pixel apart).
+    /// It also bridges walls thinner than that; 0 is the exact union.
+    ///
+    /// Errors: those of [`FreeSpaceGrid::new`], and `gap_m` not finite and
+    /// >= 0.
+    pub fn with_gap(nrg: &Nrg, cell_m: f64, gap_m: f64) -> Result<FreeSpaceGrid, EvalError> {
         if !(cell_m.is_finite() && cell_m > 0.0) {
             return Err(EvalError::BadCellSize { cell_m });
         }
+        if !(gap_m.is_finite() && gap_m >= 0.0) {
+            return Err(EvalError::BadGap { gap_m });
+        }
+        let grow = (gap_m / cell_m).round().min(250.0) as usize;
         let bounds = nrg
             .spaces()
             .iter()
@@ -110,7 +127,7 @@ impl FreeSpaceGrid {
                 ]
             })
             .ok_or(EvalError::NoSpaces)?;
-        let pad = SIGHT_RADIUS as usize + 1;
+        let pad = SIGHT_RADIUS as usize + 1 + grow;
         let nx_f = ((bounds[2] - bounds[0]) / cell_m).ceil() + 2.0 * pad as f64 + 1.0;
         let ny_f = ((bounds[3] - bounds[1]) / cell_m).ceil() + 2.0 * pad as f64 + 1.0;
         if !(nx_f * ny_f <= GEODESIC_MAX_CELLS as f64) {
@@ -131,6 +148,15 @@ impl FreeSpaceGrid {
         };
         let mut free = vec![0u8; raster.nx * raster.ny];
         raster.fill_spaces(nrg, &mut free);
+        if grow > 0 {
+            let blocked: Vec<u8> = free.iter().map(|&f| 1 - f.min(1)).collect();
+            let to_free = chessboard_clearance(&blocked, raster.nx, raster.ny, grow as u8 + 1);
+            for (f, d) in free.iter_mut().zip(&to_free) {
+                if usize::from(*d) <= grow {
+                    *f = 1;
+                }
+            }
+        }
         let clear = chessboard_clearance(&free, raster.nx, raster.ny, SIGHT_RADIUS as u8 + 1);
         let (steps, sight) = neighbourhood(raster.nx);
         Ok(FreeSpaceGrid {

@@ -113,6 +113,8 @@ impl FidelitySummary {
 pub struct FidelityReport {
     /// The geodesic raster's cell size, metres.
     pub cell_m: f64,
+    /// The gap bridged between spaces, metres (0: the exact union).
+    pub gap_m: f64,
     /// The seed the pairs were drawn with.
     pub seed: u64,
     /// Why the geodesic raster was refused, if it was; then every
@@ -139,11 +141,27 @@ pub fn route_fidelity(
     cell_m: f64,
     router: Router<'_>,
 ) -> FidelityReport {
-    let (grid, raster_error) = match FreeSpaceGrid::new(nrg, cell_m) {
+    route_fidelity_with_gap(nrg, pairs, seed, cell_m, 0.0, router)
+}
+
+/// [`route_fidelity`] on a model whose spaces do not quite touch: the
+/// geodesic raster bridges gaps of about `2 gap_m`
+/// ([`FreeSpaceGrid::with_gap`]) and a sample within `gap_m` of a space
+/// (rather than [`BOUNDARY_TOLERANCE_M`]) counts as inside it. Use about
+/// one map pixel for extracted models, 0 for exact ones.
+pub fn route_fidelity_with_gap(
+    nrg: &Nrg,
+    pairs: usize,
+    seed: u64,
+    cell_m: f64,
+    gap_m: f64,
+    router: Router<'_>,
+) -> FidelityReport {
+    let (grid, raster_error) = match FreeSpaceGrid::with_gap(nrg, cell_m, gap_m) {
         Ok(g) => (Some(g), None),
         Err(e) => (None, Some(e.to_string())),
     };
-    let spaces = SpaceIndex::new(nrg);
+    let spaces = SpaceIndex::new(nrg, gap_m.max(BOUNDARY_TOLERANCE_M));
     let measured: Vec<PairFidelity> = pick_pairs(nrg, pairs, seed)
         .into_iter()
         .map(|(a, b)| {
@@ -160,6 +178,7 @@ pub fn route_fidelity(
     }
     FidelityReport {
         cell_m,
+        gap_m,
         seed,
         raster_error,
         summary,
@@ -271,11 +290,12 @@ pub fn sample_polyline(line: &[Point], step: f64) -> Vec<Point> {
 /// The spaces with their bounding boxes, for "is this point in any space".
 struct SpaceIndex<'a> {
     spaces: Vec<([f64; 4], &'a Space)>,
+    tolerance_m: f64,
 }
 
 impl<'a> SpaceIndex<'a> {
-    fn new(nrg: &'a Nrg) -> SpaceIndex<'a> {
-        let t = BOUNDARY_TOLERANCE_M;
+    fn new(nrg: &'a Nrg, tolerance_m: f64) -> SpaceIndex<'a> {
+        let t = tolerance_m;
         let spaces = nrg
             .spaces()
             .iter()
@@ -295,7 +315,10 @@ impl<'a> SpaceIndex<'a> {
                 Some(([b[0] - t, b[1] - t, b[2] + t, b[3] + t], s))
             })
             .collect();
-        SpaceIndex { spaces }
+        SpaceIndex {
+            spaces,
+            tolerance_m,
+        }
     }
 
     /// Whether `p` is in some space: inside or on (within the tolerance)
@@ -306,18 +329,18 @@ impl<'a> SpaceIndex<'a> {
                 && p[0] <= b[2]
                 && p[1] >= b[1]
                 && p[1] <= b[3]
-                && in_or_on(p, &s.polygon)
-                && !s.holes.iter().any(|h| strictly_in(p, h))
+                && in_or_on(p, &s.polygon, self.tolerance_m)
+                && !s.holes.iter().any(|h| strictly_in(p, h, self.tolerance_m))
         })
     }
 }
 
-fn in_or_on(p: Point, ring: &Ring) -> bool {
-    point_in_ring(p, ring) || distance_to_ring(p, ring) <= BOUNDARY_TOLERANCE_M
+fn in_or_on(p: Point, ring: &Ring, tolerance_m: f64) -> bool {
+    point_in_ring(p, ring) || distance_to_ring(p, ring) <= tolerance_m
 }
 
-fn strictly_in(p: Point, ring: &Ring) -> bool {
-    point_in_ring(p, ring) && distance_to_ring(p, ring) > BOUNDARY_TOLERANCE_M
+fn strictly_in(p: Point, ring: &Ring, tolerance_m: f64) -> bool {
+    point_in_ring(p, ring) && distance_to_ring(p, ring) > tolerance_m
 }
 
 /// Distance from `p` to the nearest edge of the (closed) ring.
@@ -381,7 +404,7 @@ mod tests {
         s.holes
             .push(vec![[1.0, 1.0], [1.0, 3.0], [3.0, 3.0], [3.0, 1.0]]);
         let nrg = Nrg::new(vec![s], vec![]).unwrap();
-        let index = SpaceIndex::new(&nrg);
+        let index = SpaceIndex::new(&nrg, BOUNDARY_TOLERANCE_M);
         for p in [[4.0, 2.0], [2.0, 4.0], [0.0, 0.0], [1.0, 2.0], [0.5, 0.5]] {
             assert!(index.contains(p), "{p:?}");
         }

@@ -16,6 +16,7 @@ mod query;
 mod query_cli;
 mod query_golden;
 mod query_props;
+mod route_fidelity;
 mod route_props;
 
 mod diff_cli;
