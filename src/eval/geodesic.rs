@@ -130,7 +130,7 @@ impl FreeSpaceGrid {
         let pad = SIGHT_RADIUS as usize + 1 + grow;
         let nx_f = ((bounds[2] - bounds[0]) / cell_m).ceil() + 2.0 * pad as f64 + 1.0;
         let ny_f = ((bounds[3] - bounds[1]) / cell_m).ceil() + 2.0 * pad as f64 + 1.0;
-        if !(nx_f * ny_f <= GEODESIC_MAX_CELLS as f64) {
+        if nx_f * ny_f > GEODESIC_MAX_CELLS as f64 {
             return Err(EvalError::TooManyCells {
                 cells: nx_f * ny_f,
                 limit: GEODESIC_MAX_CELLS,

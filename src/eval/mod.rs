@@ -30,6 +30,6 @@ pub use metrics::{
 pub use picture::{DOOR_RIGHT, DOOR_WRONG, LINE_FOUND, LINE_MISSED, evaluation_picture};
 pub use route_fidelity::{
     BOUNDARY_TOLERANCE_M, FidelityReport, FidelitySummary, LENGTH_TOLERANCE, PairFidelity, Router,
-    SAMPLE_STEP_M, polyline_length, route_fidelity, sample_polyline,
+    SAMPLE_STEP_M, polyline_length, route_fidelity, route_fidelity_with_gap, sample_polyline,
 };
 pub use simulated::{SimulatedScore, evaluate_simulated};
