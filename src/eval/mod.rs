@@ -3,17 +3,24 @@
 //! Owns the metrics: room-segmentation recall/precision exactly as IPA's
 //! `evaluation_segmentation.cpp` (BENCHMARK.md §1.1), door recall/precision
 //! against the GT's doorway lines, connection recall/precision, and a
-//! picture of where extraction and ground truth disagree. Uses
-//! grid, imaging, extract, sim and model; must not use store, server or the
-//! terminal.
+//! picture of where extraction and ground truth disagree; the free-space
+//! geodesic and the route-fidelity harness that measure routes against it.
+//! Uses grid, imaging, extract, sim and model; must not use store, server,
+//! the terminal, or (for the geodesic) route.
 
 mod error;
+mod geodesic;
 mod ground_truth;
 mod metrics;
 mod picture;
+mod route_fidelity;
 mod simulated;
 
 pub use error::EvalError;
+pub use geodesic::{
+    FreeSpaceGrid, GEODESIC_MAX_CELLS, GeodesicPath, SIGHT_RADIUS, free_space_geodesic,
+    free_space_geodesic_path,
+};
 pub use ground_truth::{DoorLine, GroundTruth, load_ground_truth};
 pub use metrics::{
     ConnectionPairs, Detection, DoorMatches, Evaluation, RoomScores, connection_pairs,
@@ -21,4 +28,8 @@ pub use metrics::{
     room_scores,
 };
 pub use picture::{DOOR_RIGHT, DOOR_WRONG, LINE_FOUND, LINE_MISSED, evaluation_picture};
+pub use route_fidelity::{
+    BOUNDARY_TOLERANCE_M, FidelityReport, FidelitySummary, LENGTH_TOLERANCE, PairFidelity, Router,
+    SAMPLE_STEP_M, polyline_length, route_fidelity, route_fidelity_with_gap, sample_polyline,
+};
 pub use simulated::{SimulatedScore, evaluate_simulated};

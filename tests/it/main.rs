@@ -18,6 +18,7 @@ mod query_cli;
 mod query_golden;
 mod query_props;
 mod route_building;
+mod route_fidelity;
 mod route_props;
 
 mod diff_cli;
