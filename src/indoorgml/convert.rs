@@ -5,7 +5,9 @@
 //! `navi:TransitionSpace`, door → `navi:ConnectionSpace` (thick doors only),
 //! other → `core:CellSpace`) with a 2D `gml:Polygon`, and a `State` at its
 //! anchor, dual both ways. A navigable connection becomes a `Transition`
-//! (weight = length in metres, a LineString between the anchors). A
+//! (weight = length in metres; geometry = the walked polyline from one
+//! anchor to the other when the caller passes one ([`from_nrg_with_paths`]),
+//! else the straight LineString between the anchors). A
 //! non-navigable `adjacent` connection becomes a `core:CellSpaceBoundary`
 //! without geometry or dual, referenced by both cells' `partialboundedBy`:
 //! in IndoorGML a shared boundary without a Transition is exactly "adjacent
@@ -13,7 +15,9 @@
 //! length, a space's attributes) go in `gml:description` as a JSON object.
 //!
 //! Reading: the layer whose States are dual to the most cells is the
-//! navigation layer; its Transitions become connections, and boundaries
+//! navigation layer; its Transitions become connections (length = the
+//! weight; a missing or 0 weight is fixed from the LineString's length and
+//! counted in [`WeightFixes`]), and boundaries
 //! shared by two cells without a Transition become `adjacent` connections.
 //! A 3D cell's footprint is its largest floor face (the faces at the
 //! solid's lowest z), else the convex hull of its vertices.
@@ -26,12 +30,22 @@ use serde_json::{Map, Value, json};
 use super::IndoorGmlError;
 use super::document::*;
 use crate::model::{
-    Connection, ConnectionKind, Nrg, Point, Ring, Space, SpaceId, SpaceKind, polygon_area,
-    polygon_centroid,
+    Connection, ConnectionKind, ConnectionPaths, Nrg, Point, Ring, Space, SpaceId, SpaceKind,
+    polygon_area, polygon_centroid,
 };
 
-/// Describes `nrg` as an IndoorGML document (see the module docs).
+/// Describes `nrg` as an IndoorGML document (see the module docs), each
+/// Transition a straight LineString between the anchors.
 pub fn from_nrg(nrg: &Nrg) -> Document {
+    from_nrg_with_paths(nrg, &ConnectionPaths::new())
+}
+
+/// Describes `nrg` as an IndoorGML document, each Transition's LineString
+/// the connection's polyline in `paths` when it has one (oriented from the
+/// Transition's first State to its second), else the straight line between
+/// the anchors. Weights are the model's `length_m`: pass a model whose
+/// lengths are the lengths of `paths` (`route::walked_model` gives both).
+pub fn from_nrg_with_paths(nrg: &Nrg, paths: &ConnectionPaths) -> Document {
     let mut cells = Vec::with_capacity(nrg.spaces().len());
     let mut boundaries = Vec::new();
     let mut states = Vec::with_capacity(nrg.spaces().len());
@@ -58,7 +72,7 @@ pub fn from_nrg(nrg: &Nrg) -> Document {
                     id: Some(format!("{id}-g")),
                     coords: Coords {
                         dim: 2,
-                        values: vec![a.anchor[0], a.anchor[1], b.anchor[0], b.anchor[1]],
+                        values: transition_line(paths.get(&c.key()), a.anchor, b.anchor),
                     },
                 }),
             });
@@ -148,6 +162,23 @@ pub fn from_nrg(nrg: &Nrg) -> Document {
     }
 }
 
+/// The flat coordinates of a Transition from anchor `a` to anchor `b`:
+/// the path when it has two points or more (reversed if it runs from `b`),
+/// else the straight segment.
+fn transition_line(path: Option<&Vec<Point>>, a: Point, b: Point) -> Vec<f64> {
+    let mut points: Vec<Point> = match path {
+        Some(p) if p.len() >= 2 => p.clone(),
+        _ => vec![a, b],
+    };
+    let (Some(&first), Some(&last)) = (points.first(), points.last()) else {
+        return Vec::new();
+    };
+    if distance(first, a) + distance(last, b) > distance(first, b) + distance(last, a) {
+        points.reverse();
+    }
+    points.iter().flat_map(|p| *p).collect()
+}
+
 fn cell_id(id: SpaceId) -> String {
     format!("C{id}")
 }
@@ -208,8 +239,34 @@ fn described_connection(description: Option<&str>) -> (Option<ConnectionKind>, O
     (kind, length)
 }
 
+/// Transitions read with a missing or 0 weight, and what their
+/// connections' lengths were set from.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct WeightFixes {
+    /// How many got their LineString's length.
+    pub from_geometry: usize,
+    /// The connections (`(a, b)`, `a < b`) of those without a usable
+    /// LineString: their length is the straight distance between the
+    /// anchors until a caller with a navigation layer sets the walked one.
+    pub without_geometry: Vec<(SpaceId, SpaceId)>,
+}
+
+impl WeightFixes {
+    /// How many weights were fixed in all.
+    pub fn total(&self) -> usize {
+        self.from_geometry + self.without_geometry.len()
+    }
+}
+
 /// Reads a document as a model (see the module docs).
 pub fn to_nrg(doc: &Document) -> Result<Nrg, IndoorGmlError> {
+    to_nrg_fixing(doc).map(|(nrg, _)| nrg)
+}
+
+/// Reads a document as a model, saying which Transitions had a missing or
+/// 0 weight and how their lengths were set (see [`WeightFixes`]).
+pub fn to_nrg_fixing(doc: &Document) -> Result<(Nrg, WeightFixes), IndoorGmlError> {
+    let mut fixes = WeightFixes::default();
     let cells = doc.cells();
     let ids = space_ids(cells);
     let cell_index: HashMap<&str, usize> = cells
@@ -263,11 +320,30 @@ pub fn to_nrg(doc: &Document) -> Result<Nrg, IndoorGmlError> {
                     } else {
                         ConnectionKind::Open
                     });
-            let length_m = t
-                .weight
-                .filter(|w| w.is_finite() && *w >= 0.0)
-                .or_else(|| t.geometry.as_ref().map(|g| polyline_length(&g.coords)))
-                .unwrap_or_else(|| distance(anchor(ca), anchor(cb)));
+            let weight = t.weight.filter(|w| w.is_finite() && *w > 0.0);
+            let length_m = match weight {
+                Some(w) => w,
+                None => {
+                    let line = t
+                        .geometry
+                        .as_ref()
+                        .map(|g| polyline_length(&g.coords))
+                        .filter(|l| l.is_finite() && *l > 0.0);
+                    match line {
+                        Some(l) => {
+                            fixes.from_geometry += 1;
+                            l
+                        }
+                        None => {
+                            let (x, y) = (ids[ca], ids[cb]);
+                            fixes
+                                .without_geometry
+                                .push(if x <= y { (x, y) } else { (y, x) });
+                            distance(anchor(ca), anchor(cb))
+                        }
+                    }
+                }
+            };
             connections.push(Connection {
                 a: ids[ca],
                 b: ids[cb],
@@ -305,7 +381,8 @@ pub fn to_nrg(doc: &Document) -> Result<Nrg, IndoorGmlError> {
             });
         }
     }
-    Nrg::new(spaces, connections).map_err(|e| IndoorGmlError::Model(e.to_string()))
+    let nrg = Nrg::new(spaces, connections).map_err(|e| IndoorGmlError::Model(e.to_string()))?;
+    Ok((nrg, fixes))
 }
 
 fn ordered(a: usize, b: usize) -> (usize, usize) {
