@@ -153,10 +153,10 @@ pub(crate) fn shortest_walk(
     let mut best = f64::INFINITY;
     // The goal's predecessor gate (NONE: direct, inside one space).
     let mut best_pred = NONE;
-    if from.space == to.space {
-        if let Some(c) = from.direct(mesh, layer, to) {
-            best = polyline_length(&walk(mesh, from.at, to.at, &c, layer.clearance_m));
-        }
+    if from.space == to.space
+        && let Some(c) = from.direct(mesh, layer, to)
+    {
+        best = polyline_length(&walk(mesh, from.at, to.at, &c, layer.clearance_m));
     }
     for (j, g) in mesh.space_gates[from.space as usize].iter().enumerate() {
         let c = from.to_gates[j];
