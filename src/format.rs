@@ -159,3 +159,30 @@ pub fn write_model(nrg: &Nrg, path: &Path) -> Result<(), FormatError> {
         source,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn transitions_without_weight_or_line_get_the_walked_length() {
+        let nrg = crate::fixtures::corridor_building(3);
+        let mut doc = indoorgml::from_nrg(&nrg);
+        let layers = doc.graph.iter_mut().flat_map(|g| &mut g.layer_groups);
+        for l in layers.flat_map(|g| &mut g.layers) {
+            for t in &mut l.transitions {
+                t.weight = None;
+                t.geometry = None;
+            }
+        }
+        let (back, fixes) = from_document(&doc).unwrap();
+        let walked = walked_model(&nrg).nrg;
+        let navigable = walked
+            .connections()
+            .iter()
+            .filter(|c| c.kind.is_navigable());
+        assert_eq!(fixes.without_geometry.len(), navigable.count());
+        assert_eq!(fixes.from_geometry, 0);
+        assert_eq!(back.connections(), walked.connections());
+    }
+}
