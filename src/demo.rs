@@ -3,7 +3,7 @@
 //! route and store the re-extracted map as a second revision, then show
 //! the route in both and what changed, and write IndoorGML and a picture.
 //!
-//! Uses sim, grid, extract, store, query, route, indoorgml and render:
+//! Uses sim, grid, extract, ingest, store, query, route, format and render:
 //! everything it prints comes from those modules, nothing is canned.
 
 use std::collections::BTreeSet;
@@ -124,11 +124,14 @@ pub fn run(opts: &DemoOptions, out: &mut dyn Write) -> Result<(), DemoError> {
         m.params = serde_json::to_value(&params).ok();
         m
     };
-    let rev_a = store.import(
+    let rev_a = crate::ingest::ingest(
+        &mut store,
         &opts.map,
         &first.nrg,
         meta("demo: simulated building, as mapped"),
-    )?;
+        None,
+    )?
+    .imported;
 
     // A route across the building, and its first door.
     let (from, to, route) = longest_room_route(&first.nrg).ok_or(DemoError::NoRoute)?;
@@ -144,11 +147,14 @@ pub fn run(opts: &DemoOptions, out: &mut dyn Write) -> Result<(), DemoError> {
         }
     }
     let second = extract(&shut, &params)?;
-    let rev_b = store.import(
+    let rev_b = crate::ingest::ingest(
+        &mut store,
         &opts.map,
         &second.nrg,
         meta(&format!("demo: door {} shut", stable(door))),
-    )?;
+        None,
+    )?
+    .imported;
     let (a, b) = (rev_a.revision.seq, rev_b.revision.seq);
     say(
         out,
@@ -185,7 +191,8 @@ pub fn run(opts: &DemoOptions, out: &mut dyn Write) -> Result<(), DemoError> {
     say(out, indent(&changes(&old, &new)))?;
 
     let gml = opts.dir.join("building.gml");
-    crate::indoorgml::write_nrg_file(&new, &gml)?;
+    let text = crate::format::render_model(&new, crate::format::ModelFormat::IndoorGml);
+    crate::atomic::write(&gml, text.as_bytes()).map_err(io(&gml))?;
     let picture = opts.dir.join("building.png");
     let png = crate::render::kind_picture_png(&grid, &first.labels, &first.nrg, &route.waypoints)?;
     crate::atomic::write(&picture, &png).map_err(io(&picture))?;

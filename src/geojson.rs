@@ -2,14 +2,16 @@
 //!
 //! Each space is a Polygon feature (`"feature": "space"`, properties `id`,
 //! `kind`, `name`, `area_m2`, `anchor`, `attributes`); each connection is a
-//! LineString feature between the two anchors (`"feature": "connection"`,
-//! properties `a`, `b`, `kind`, `length_m`). Coordinates are metres in the
+//! LineString feature (`"feature": "connection"`, properties `a`, `b`,
+//! `kind`, `length_m`) from `a`'s anchor to `b`'s: the walked polyline
+//! through the doorway when the caller passes one ([`to_geojson_with_paths`],
+//! with `length_m` its length), else the straight segment. Coordinates are metres in the
 //! map frame, not WGS84 (GeoJSON's default CRS): load the file as a
 //! projected layer in QGIS. Reading accepts exactly this shape back.
 
 use serde_json::{Map, Value, json};
 
-use crate::model::{Connection, Nrg, Point, Ring, Space, SpaceId};
+use crate::model::{Connection, ConnectionPaths, Nrg, Point, Ring, Space, SpaceId};
 
 /// Why a GeoJSON document is not an nrgdb model.
 #[derive(Debug, thiserror::Error)]
@@ -31,8 +33,17 @@ pub enum GeoJsonError {
     Model(#[from] crate::model::ModelError),
 }
 
-/// The model as a GeoJSON FeatureCollection.
+/// The model as a GeoJSON FeatureCollection, connections as straight
+/// lines between the anchors.
 pub fn to_geojson(nrg: &Nrg) -> Value {
+    to_geojson_with_paths(nrg, &ConnectionPaths::new())
+}
+
+/// The model as a GeoJSON FeatureCollection, each connection drawn as its
+/// polyline in `paths` when it has one (from `a`'s anchor to `b`'s). The
+/// `length_m` property is the model's: pass a model whose lengths are the
+/// paths' (`route::walked_model` gives both).
+pub fn to_geojson_with_paths(nrg: &Nrg, paths: &ConnectionPaths) -> Value {
     let mut features = Vec::with_capacity(nrg.spaces().len() + nrg.connections().len());
     for s in nrg.spaces() {
         let rings: Vec<Value> = std::iter::once(&s.polygon)
@@ -61,11 +72,26 @@ pub fn to_geojson(nrg: &Nrg) -> Value {
         features.push(json!({
             "type": "Feature",
             "id": format!("connection-{}-{}", c.a, c.b),
-            "geometry": {"type": "LineString", "coordinates": [a.anchor, b.anchor]},
+            "geometry": {"type": "LineString", "coordinates": line(paths.get(&c.key()), c, a.anchor, b.anchor)},
             "properties": {"feature": "connection", "a": c.a, "b": c.b, "kind": c.kind, "length_m": c.length_m}
         }));
     }
     json!({"type": "FeatureCollection", "features": features})
+}
+
+/// A connection's line from `a`'s anchor to `b`'s: its path (stored from
+/// the smaller id) when it has two points or more, else the segment.
+fn line(path: Option<&Vec<Point>>, c: &Connection, a: Point, b: Point) -> Value {
+    match path {
+        Some(p) if p.len() >= 2 => {
+            let mut pts = p.clone();
+            if c.key().0 != c.a {
+                pts.reverse();
+            }
+            json!(pts)
+        }
+        _ => json!([a, b]),
+    }
 }
 
 fn closed(ring: &[Point]) -> Value {

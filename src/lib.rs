@@ -21,6 +21,7 @@ pub mod geojson;
 pub mod grid;
 pub mod imaging;
 pub mod indoorgml;
+pub mod ingest;
 pub mod model;
 pub mod query;
 pub mod render;

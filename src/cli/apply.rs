@@ -55,11 +55,10 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     );
     let meta =
         ImportMeta::new(args.message, author(args.author)).with_source(name, text.as_bytes());
-    let done = store
-        .import(&map, &result, meta)
+    let done = nrgdb::ingest::ingest(&mut store, &map, &result, meta, None)
         .into_diagnostic()
         .wrap_err_with(|| format!("storing the result in map '{map}'"))?;
-    let r = &done.revision;
+    let r = &done.imported.revision;
     writeln!(
         out,
         "{}@{}: {} spaces ({} new, {} changed, {} gone), {} connections",

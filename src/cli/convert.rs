@@ -14,7 +14,8 @@ use nrgdb::indoorgml;
     after_help = "Formats by extension: .gml/.xml IndoorGML 1.0.3, .json the model's JSON form, \
 .geojson a GeoJSON FeatureCollection (metres in the map frame).\n\
 IndoorGML to IndoorGML keeps the whole document (3D geometry, every layer, inter-layer connections); \
-any other conversion goes through the 2D model."
+any other conversion goes through the 2D model, written with walked connection lengths \
+(IndoorGML Transitions and GeoJSON connection lines are the walked paths through the doorways)."
 )]
 pub struct Args {
     /// The file to read.
@@ -46,8 +47,9 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         .into_diagnostic()?;
         return Ok(ExitCode::SUCCESS);
     }
-    let nrg = format::read_model(&args.input, args.max_bytes).into_diagnostic()?;
+    let (nrg, fixes) = format::read_model_fixing(&args.input, args.max_bytes).into_diagnostic()?;
     format::write_model(&nrg, &args.output).into_diagnostic()?;
+    super::report_fixes(&fixes, out)?;
     writeln!(
         out,
         "wrote {} ({} spaces, {} connections)",

@@ -127,7 +127,8 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     }
     if let Some(path) = &args.gml {
         let (update, _) = with_base_ids(&a.nrg, &moved, &changes).into_diagnostic()?;
-        nrgdb::indoorgml::write_nrg_file(&update, path)
+        let text = nrgdb::format::render_model(&update, nrgdb::format::ModelFormat::IndoorGml);
+        nrgdb::atomic::write(path, text.as_bytes())
             .into_diagnostic()
             .wrap_err_with(|| format!("writing the IndoorGML update {}", path.display()))?;
     }

@@ -6,8 +6,10 @@ use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr};
 use nrgdb::extract::{ExtractParams, Extraction, Method, extract};
+use nrgdb::format::ModelFormat;
 use nrgdb::grid::{LoadOptions, OccupancyGrid, load_image, load_map};
 use nrgdb::render::{RenderOptions, Scene};
+use nrgdb::route::{WalkedModel, walked_model};
 
 use super::progress;
 use super::render::{PictureFormat, write_picture};
@@ -231,15 +233,13 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     };
     let spinner = progress::spinner(format!("extracting {}", map.display()));
     let (grid, params) = args.map.load(map)?;
-    let x = extract(&grid, &params)
-        .into_diagnostic()
-        .wrap_err_with(|| format!("{}: extraction failed", map.display()))?;
+    let (x, walked) = extract_walked(&grid, &params, map)?;
     spinner.finish_and_clear();
     // Encode everything before writing anything, so a failure leaves no half output.
     let gml = args
         .out
         .as_ref()
-        .map(|_| nrgdb::indoorgml::write_string(&nrgdb::indoorgml::from_nrg(&x.nrg)));
+        .map(|_| nrgdb::format::render(&walked, ModelFormat::IndoorGml));
     let json = args.json.as_ref().map(|_| x.to_json());
     let png = match &args.labels {
         Some(_) => Some(
@@ -272,6 +272,21 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         writeln!(out, "{:>10}  {:8.2} ms", "total", total.as_secs_f64() * 1e3).into_diagnostic()?;
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Extracts `grid` and gives its model walked connection lengths, with
+/// the walked paths for the IndoorGML output.
+fn extract_walked(
+    grid: &OccupancyGrid,
+    params: &ExtractParams,
+    map: &Path,
+) -> miette::Result<(Extraction, WalkedModel)> {
+    let mut x = extract(grid, params)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("{}: extraction failed", map.display()))?;
+    let walked = walked_model(&x.nrg);
+    x.nrg = walked.nrg.clone();
+    Ok((x, walked))
 }
 
 /// Draws the extraction over its map.
@@ -368,14 +383,12 @@ fn run_batch(args: &Args, inputs: &[PathBuf], out: &mut dyn Write) -> miette::Re
 /// Extracts one map of a batch and writes its outputs.
 fn extract_into(args: &Args, map: &Path, dir: &Path, stem: &str) -> miette::Result<Extraction> {
     let (grid, params) = args.map.load(map)?;
-    let x = extract(&grid, &params)
-        .into_diagnostic()
-        .wrap_err_with(|| format!("{}: extraction failed", map.display()))?;
+    let (x, walked) = extract_walked(&grid, &params, map)?;
     for format in &args.formats {
         match format {
             OutputFormat::Gml => write_out(
                 &dir.join(format!("{stem}.gml")),
-                nrgdb::indoorgml::write_string(&nrgdb::indoorgml::from_nrg(&x.nrg)).as_bytes(),
+                nrgdb::format::render(&walked, ModelFormat::IndoorGml).as_bytes(),
             )?,
             OutputFormat::Json => {
                 write_out(&dir.join(format!("{stem}.json")), x.to_json().as_bytes())?

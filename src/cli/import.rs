@@ -8,11 +8,11 @@ use miette::{IntoDiagnostic, WrapErr};
 use nrgdb::store::ImportMeta;
 
 use super::db::{DbArg, author};
-use super::load_model;
+use super::{load_model, report_fixes};
 
 /// Store a model as the next revision of a map (the map is created on its
 /// first import). Spaces continuing spaces of the previous revision keep
-/// their ids and names.
+/// their ids and names; connection lengths are stored as walked lengths.
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// The model: .gml/.xml (IndoorGML), .json, .geojson, or .yaml (a ROS occupancy map, extracted first).
@@ -53,12 +53,12 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         ImportMeta::new(args.message, author(args.author)).with_source(name, &model.bytes);
     meta.params = model.params;
     let mut store = args.db.open()?;
-    let done = store
-        .import_with_grid(&args.map, &model.nrg, meta, model.grid.as_ref())
+    let done = nrgdb::ingest::ingest(&mut store, &args.map, &model.nrg, meta, model.grid.as_ref())
         .into_diagnostic()
         .wrap_err_with(|| format!("importing {} into map '{}'", args.file.display(), args.map))?;
     spinner.finish_and_clear();
-    let r = &done.revision;
+    report_fixes(&model.weights_fixed, out)?;
+    let r = &done.imported.revision;
     writeln!(
         out,
         "{}@{}: {} spaces ({} new, {} changed, {} gone), {} connections",

@@ -6,8 +6,9 @@ use std::path::Path;
 
 use miette::{IntoDiagnostic, WrapErr};
 use nrgdb::extract::{ExtractParams, extract};
+use nrgdb::format::ModelFormat;
 use nrgdb::grid::{LoadOptions, load_map};
-use nrgdb::indoorgml::DEFAULT_MAX_BYTES;
+use nrgdb::indoorgml::{DEFAULT_MAX_BYTES, WeightFixes};
 use nrgdb::model::Nrg;
 
 /// A model read from a file, with the bytes it came from.
@@ -20,6 +21,8 @@ pub struct ModelFile {
     pub params: Option<serde_json::Value>,
     /// The occupancy grid, when the model was extracted from a map.
     pub grid: Option<nrgdb::grid::OccupancyGrid>,
+    /// IndoorGML Transitions whose missing or 0 weight was fixed.
+    pub weights_fixed: WeightFixes,
 }
 
 /// Reads a model: `.gml`/`.xml` (IndoorGML), `.json` (model JSON),
@@ -46,22 +49,46 @@ pub fn load_model(path: &Path) -> miette::Result<ModelFile> {
             bytes,
             params,
             grid: Some(grid),
+            weights_fixed: WeightFixes::default(),
         });
     }
-    let nrg = nrgdb::format::read_model(path, DEFAULT_MAX_BYTES).into_diagnostic()?;
+    let (nrg, weights_fixed) =
+        nrgdb::format::read_model_fixing(path, DEFAULT_MAX_BYTES).into_diagnostic()?;
     Ok(ModelFile {
         nrg,
         bytes,
         params: None,
         grid: None,
+        weights_fixed,
     })
 }
 
+/// Says how many IndoorGML Transition weights were fixed on reading, if any.
+pub fn report_fixes(fixes: &WeightFixes, out: &mut dyn std::io::Write) -> miette::Result<()> {
+    if fixes.total() == 0 {
+        return Ok(());
+    }
+    let walked = fixes.without_geometry.len();
+    let from = match (fixes.from_geometry, walked) {
+        (_, 0) => "set from their geometry".to_string(),
+        (0, _) => "set from their walked path (no geometry)".to_string(),
+        (g, w) => format!("{g} set from their geometry, {w} from their walked path"),
+    };
+    writeln!(
+        out,
+        "fixed {} transition weights (missing or 0): {from}",
+        fixes.total()
+    )
+    .into_diagnostic()
+}
+
 /// Writes a model atomically in the format its extension names
-/// (`.gml`, `.json`, `.geojson`); `-` writes JSON to `out`.
+/// (`.gml`, `.json`, `.geojson`); `-` writes JSON to `out`. Either way with
+/// walked connection lengths and paths (`nrgdb::format::render_model`).
 pub fn write_model(path: &Path, nrg: &Nrg, out: &mut dyn std::io::Write) -> miette::Result<()> {
     if path == Path::new("-") {
-        return writeln!(out, "{}", nrg.to_json()).into_diagnostic();
+        let json = nrgdb::format::render_model(nrg, ModelFormat::Json);
+        return out.write_all(json.as_bytes()).into_diagnostic();
     }
     nrgdb::format::write_model(nrg, path).into_diagnostic()
 }

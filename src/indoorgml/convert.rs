@@ -5,7 +5,9 @@
 //! `navi:TransitionSpace`, door → `navi:ConnectionSpace` (thick doors only),
 //! other → `core:CellSpace`) with a 2D `gml:Polygon`, and a `State` at its
 //! anchor, dual both ways. A navigable connection becomes a `Transition`
-//! (weight = length in metres, a LineString between the anchors). A
+//! (weight = length in metres; geometry = the walked polyline from one
+//! anchor to the other when the caller passes one ([`from_nrg_with_paths`]),
+//! else the straight LineString between the anchors). A
 //! non-navigable `adjacent` connection becomes a `core:CellSpaceBoundary`
 //! without geometry or dual, referenced by both cells' `partialboundedBy`:
 //! in IndoorGML a shared boundary without a Transition is exactly "adjacent
@@ -13,7 +15,9 @@
 //! length, a space's attributes) go in `gml:description` as a JSON object.
 //!
 //! Reading: the layer whose States are dual to the most cells is the
-//! navigation layer; its Transitions become connections, and boundaries
+//! navigation layer; its Transitions become connections (length = the
+//! weight; a missing or 0 weight is fixed from the LineString's length and
+//! counted in [`WeightFixes`]), and boundaries
 //! shared by two cells without a Transition become `adjacent` connections.
 //! A 3D cell's footprint is its largest floor face (the faces at the
 //! solid's lowest z), else the convex hull of its vertices.
@@ -26,12 +30,22 @@ use serde_json::{Map, Value, json};
 use super::IndoorGmlError;
 use super::document::*;
 use crate::model::{
-    Connection, ConnectionKind, Nrg, Point, Ring, Space, SpaceId, SpaceKind, polygon_area,
-    polygon_centroid,
+    Connection, ConnectionKind, ConnectionPaths, Nrg, Point, Ring, Space, SpaceId, SpaceKind,
+    polygon_area, polygon_centroid,
 };
 
-/// Describes `nrg` as an IndoorGML document (see the module docs).
+/// Describes `nrg` as an IndoorGML document (see the module docs), each
+/// Transition a straight LineString between the anchors.
 pub fn from_nrg(nrg: &Nrg) -> Document {
+    from_nrg_with_paths(nrg, &ConnectionPaths::new())
+}
+
+/// Describes `nrg` as an IndoorGML document, each Transition's LineString
+/// the connection's polyline in `paths` when it has one (oriented from the
+/// Transition's first State to its second), else the straight line between
+/// the anchors. Weights are the model's `length_m`: pass a model whose
+/// lengths are the lengths of `paths` (`route::walked_model` gives both).
+pub fn from_nrg_with_paths(nrg: &Nrg, paths: &ConnectionPaths) -> Document {
     let mut cells = Vec::with_capacity(nrg.spaces().len());
     let mut boundaries = Vec::new();
     let mut states = Vec::with_capacity(nrg.spaces().len());
@@ -58,7 +72,7 @@ pub fn from_nrg(nrg: &Nrg) -> Document {
                     id: Some(format!("{id}-g")),
                     coords: Coords {
                         dim: 2,
-                        values: vec![a.anchor[0], a.anchor[1], b.anchor[0], b.anchor[1]],
+                        values: transition_line(paths.get(&c.key()), a.anchor, b.anchor),
                     },
                 }),
             });
@@ -148,6 +162,23 @@ pub fn from_nrg(nrg: &Nrg) -> Document {
     }
 }
 
+/// The flat coordinates of a Transition from anchor `a` to anchor `b`:
+/// the path when it has two points or more (reversed if it runs from `b`),
+/// else the straight segment.
+fn transition_line(path: Option<&Vec<Point>>, a: Point, b: Point) -> Vec<f64> {
+    let mut points: Vec<Point> = match path {
+        Some(p) if p.len() >= 2 => p.clone(),
+        _ => vec![a, b],
+    };
+    let (Some(&first), Some(&last)) = (points.first(), points.last()) else {
+        return Vec::new();
+    };
+    if distance(first, a) + distance(last, b) > distance(first, b) + distance(last, a) {
+        points.reverse();
+    }
+    points.iter().flat_map(|p| *p).collect()
+}
+
 fn cell_id(id: SpaceId) -> String {
     format!("C{id}")
 }
@@ -208,8 +239,34 @@ fn described_connection(description: Option<&str>) -> (Option<ConnectionKind>, O
     (kind, length)
 }
 
+/// Transitions read with a missing or 0 weight, and what their
+/// connections' lengths were set from.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct WeightFixes {
+    /// How many got their LineString's length.
+    pub from_geometry: usize,
+    /// The connections (`(a, b)`, `a < b`) of those without a usable
+    /// LineString: their length is the straight distance between the
+    /// anchors until a caller with a navigation layer sets the walked one.
+    pub without_geometry: Vec<(SpaceId, SpaceId)>,
+}
+
+impl WeightFixes {
+    /// How many weights were fixed in all.
+    pub fn total(&self) -> usize {
+        self.from_geometry + self.without_geometry.len()
+    }
+}
+
 /// Reads a document as a model (see the module docs).
 pub fn to_nrg(doc: &Document) -> Result<Nrg, IndoorGmlError> {
+    to_nrg_fixing(doc).map(|(nrg, _)| nrg)
+}
+
+/// Reads a document as a model, saying which Transitions had a missing or
+/// 0 weight and how their lengths were set (see [`WeightFixes`]).
+pub fn to_nrg_fixing(doc: &Document) -> Result<(Nrg, WeightFixes), IndoorGmlError> {
+    let mut fixes = WeightFixes::default();
     let cells = doc.cells();
     let ids = space_ids(cells);
     let cell_index: HashMap<&str, usize> = cells
@@ -263,11 +320,30 @@ pub fn to_nrg(doc: &Document) -> Result<Nrg, IndoorGmlError> {
                     } else {
                         ConnectionKind::Open
                     });
-            let length_m = t
-                .weight
-                .filter(|w| w.is_finite() && *w >= 0.0)
-                .or_else(|| t.geometry.as_ref().map(|g| polyline_length(&g.coords)))
-                .unwrap_or_else(|| distance(anchor(ca), anchor(cb)));
+            let weight = t.weight.filter(|w| w.is_finite() && *w > 0.0);
+            let length_m = match weight {
+                Some(w) => w,
+                None => {
+                    let line = t
+                        .geometry
+                        .as_ref()
+                        .map(|g| polyline_length(&g.coords))
+                        .filter(|l| l.is_finite() && *l > 0.0);
+                    match line {
+                        Some(l) => {
+                            fixes.from_geometry += 1;
+                            l
+                        }
+                        None => {
+                            let (x, y) = (ids[ca], ids[cb]);
+                            fixes
+                                .without_geometry
+                                .push(if x <= y { (x, y) } else { (y, x) });
+                            distance(anchor(ca), anchor(cb))
+                        }
+                    }
+                }
+            };
             connections.push(Connection {
                 a: ids[ca],
                 b: ids[cb],
@@ -305,7 +381,8 @@ pub fn to_nrg(doc: &Document) -> Result<Nrg, IndoorGmlError> {
             });
         }
     }
-    Nrg::new(spaces, connections).map_err(|e| IndoorGmlError::Model(e.to_string()))
+    let nrg = Nrg::new(spaces, connections).map_err(|e| IndoorGmlError::Model(e.to_string()))?;
+    Ok((nrg, fixes))
 }
 
 fn ordered(a: usize, b: usize) -> (usize, usize) {
@@ -489,4 +566,117 @@ fn polyline_length(coords: &Coords) -> f64 {
 
 fn distance(a: Point, b: Point) -> f64 {
     (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn cell(id: u32, x0: f64, y0: f64) -> String {
+        let (x1, y1) = (x0 + 2.0, y0 + 2.0);
+        format!(
+            r##"<core:cellSpaceMember><core:CellSpace gml:id="C{id}"><core:cellSpaceGeometry><core:Geometry2D>
+<gml:Polygon gml:id="C{id}-g"><gml:exterior><gml:LinearRing><gml:posList srsDimension="2">{x0} {y0} {x1} {y0} {x1} {y1} {x0} {y1} {x0} {y0}</gml:posList></gml:LinearRing></gml:exterior></gml:Polygon>
+</core:Geometry2D></core:cellSpaceGeometry><core:duality xlink:href="#S{id}"/></core:CellSpace></core:cellSpaceMember>"##
+        )
+    }
+
+    fn state(id: u32, x: f64, y: f64, connects: &[&str]) -> String {
+        let connects: String = connects
+            .iter()
+            .map(|t| format!(r##"<core:connects xlink:href="#{t}"/>"##))
+            .collect();
+        format!(
+            r##"<core:stateMember><core:State gml:id="S{id}"><core:duality xlink:href="#C{id}"/>{connects}
+<core:geometry><gml:Point gml:id="S{id}-g"><gml:pos srsDimension="2">{x} {y}</gml:pos></gml:Point></core:geometry></core:State></core:stateMember>"##
+        )
+    }
+
+    fn transition(id: &str, a: u32, b: u32, weight: Option<&str>, line: Option<&str>) -> String {
+        let weight = weight.map_or(String::new(), |w| format!("<core:weight>{w}</core:weight>"));
+        let line = line.map_or(String::new(), |l| {
+            format!(
+                r#"<core:geometry><gml:LineString gml:id="{id}-g"><gml:posList srsDimension="2">{l}</gml:posList></gml:LineString></core:geometry>"#
+            )
+        });
+        format!(
+            r##"<core:transitionMember><core:Transition gml:id="{id}">{weight}<core:connects xlink:href="#S{a}"/><core:connects xlink:href="#S{b}"/>{line}</core:Transition></core:transitionMember>"##
+        )
+    }
+
+    /// Four 2 m squares: 1 | 2 | 3 in a row, 4 above 1. Transitions:
+    /// 1-2 weight 0 with a bent line, 2-3 no weight with a straight line,
+    /// 1-4 weight 0 and no line, 2-4 weight 7.5.
+    fn hand_made() -> String {
+        let cells: String = [(1, 0.0, 0.0), (2, 2.0, 0.0), (3, 4.0, 0.0), (4, 0.0, 2.0)]
+            .iter()
+            .map(|&(id, x, y)| cell(id, x, y))
+            .collect();
+        let states = [
+            state(1, 1.0, 1.0, &["T1", "T3"]),
+            state(2, 3.0, 1.0, &["T1", "T2", "T4"]),
+            state(3, 5.0, 1.0, &["T2"]),
+            state(4, 1.0, 3.0, &["T3", "T4"]),
+        ]
+        .concat();
+        let transitions = [
+            transition("T1", 1, 2, Some(" 0.0 "), Some("1 1 2 1.5 3 1")),
+            transition("T2", 2, 3, None, Some("3 1 5 1")),
+            transition("T3", 1, 4, Some("0"), None),
+            transition("T4", 2, 4, Some("7.5"), Some("3 1 1 3")),
+        ]
+        .concat();
+        format!(
+            r#"<?xml version="1.0" encoding="UTF-8"?>
+<core:IndoorFeatures gml:id="F" xmlns:core="http://www.opengis.net/indoorgml/1.0/core" xmlns:gml="http://www.opengis.net/gml/3.2" xmlns:xlink="http://www.w3.org/1999/xlink">
+<core:primalSpaceFeatures><core:PrimalSpaceFeatures gml:id="P">{cells}</core:PrimalSpaceFeatures></core:primalSpaceFeatures>
+<core:multiLayeredGraph><core:MultiLayeredGraph gml:id="G"><core:spaceLayers gml:id="SL"><core:spaceLayerMember><core:SpaceLayer gml:id="L">
+<core:nodes gml:id="N">{states}</core:nodes><core:edges gml:id="E">{transitions}</core:edges>
+</core:SpaceLayer></core:spaceLayerMember></core:spaceLayers></core:MultiLayeredGraph></core:multiLayeredGraph>
+</core:IndoorFeatures>"#
+        )
+    }
+
+    #[test]
+    fn missing_or_zero_weights_are_fixed_from_the_line_and_counted() {
+        let doc = crate::indoorgml::read_str(&hand_made()).unwrap();
+        let (nrg, fixes) = to_nrg_fixing(&doc).unwrap();
+        assert_eq!(fixes.from_geometry, 2);
+        assert_eq!(fixes.without_geometry, vec![(SpaceId(1), SpaceId(4))]);
+        assert_eq!(fixes.total(), 3);
+        let length = |a, b| nrg.connection(SpaceId(a), SpaceId(b)).unwrap().length_m;
+        // 1-2: two legs of √(1² + 0.5²).
+        assert!((length(1, 2) - 2.0 * 1.25f64.sqrt()).abs() < 1e-12);
+        assert!((length(2, 3) - 2.0).abs() < 1e-12);
+        // No line: the straight distance until a caller walks it.
+        assert!((length(1, 4) - 2.0).abs() < 1e-12);
+        // A positive weight is kept, whatever the line says.
+        assert_eq!(length(2, 4), 7.5);
+        assert_eq!(to_nrg(&doc).unwrap(), nrg);
+    }
+
+    #[test]
+    fn transitions_draw_the_given_path_from_their_first_state() {
+        let doc = crate::indoorgml::read_str(&hand_made()).unwrap();
+        let nrg = to_nrg(&doc).unwrap();
+        let mut paths = ConnectionPaths::new();
+        // Given from 2's side: written reversed, from S1 to S2.
+        paths.insert(
+            (SpaceId(1), SpaceId(2)),
+            vec![[3.0, 1.0], [2.0, 0.5], [1.0, 1.0]],
+        );
+        let out = from_nrg_with_paths(&nrg, &paths);
+        let ts = &out.layers()[0].transitions;
+        let line = |id: &str| -> Vec<f64> {
+            let t = ts.iter().find(|t| t.info.id == id).unwrap();
+            t.geometry.as_ref().unwrap().coords.values.clone()
+        };
+        assert_eq!(line("T1-2"), vec![1.0, 1.0, 2.0, 0.5, 3.0, 1.0]);
+        assert_eq!(line("T2-3"), vec![3.0, 1.0, 5.0, 1.0]);
+        let t = ts.iter().find(|t| t.info.id == "T1-2").unwrap();
+        assert_eq!(
+            t.weight,
+            Some(nrg.connection(SpaceId(1), SpaceId(2)).unwrap().length_m)
+        );
+    }
 }

@@ -7,7 +7,10 @@
 //! survive a round trip), the reader ([`read_str`], [`read_file`]), the
 //! writer ([`write_string`], [`write_file`]), the mapping to and from the
 //! model ([`from_nrg`], [`to_nrg`]) and the checker ([`check`]). Uses
-//! quick-xml and the model; knows nothing of SQL, HTTP or the terminal.
+//! quick-xml and the model; knows nothing of SQL, HTTP or the terminal,
+//! nor of routing: walked Transition paths are passed in
+//! ([`from_nrg_with_paths`]), and weights a document lacks are reported
+//! ([`to_nrg_fixing`]) for the caller to walk.
 
 pub mod check;
 mod convert;
@@ -22,7 +25,7 @@ mod xml_out;
 use std::path::Path;
 
 pub use check::{Finding, check};
-pub use convert::{from_nrg, to_nrg};
+pub use convert::{WeightFixes, from_nrg, from_nrg_with_paths, to_nrg, to_nrg_fixing};
 pub use document::Document;
 pub use dom::{NS_CORE, NS_GML, NS_NAVI};
 pub use error::IndoorGmlError;

@@ -95,3 +95,9 @@ impl Connection {
         }
     }
 }
+
+/// The walked polyline of each connection that has one, keyed by
+/// [`Connection::key`], running from the smaller id's anchor to the
+/// other's. Writers draw a connection with its polyline when given one,
+/// else as the straight line between the anchors.
+pub type ConnectionPaths = std::collections::BTreeMap<(SpaceId, SpaceId), Vec<super::Point>>;

@@ -15,7 +15,7 @@ mod interior_point;
 mod nrg;
 mod space;
 
-pub use connection::{Connection, ConnectionKind};
+pub use connection::{Connection, ConnectionKind, ConnectionPaths};
 pub use error::ModelError;
 pub use geometry::{Point, Ring, point_in_ring, polygon_area, polygon_centroid, ring_is_ccw};
 pub use graph::ConnectivityGraph;

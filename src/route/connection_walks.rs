@@ -1,7 +1,7 @@
 //! The walked path of every navigable connection: from one space's anchor
 //! to the other's through their shared doorway or boundary, as IndoorGML
 //! Transitions and GeoJSON connection lines carry it, and the model's
-//! connection lengths set from it.
+//! connection lengths set from it ([`walked_model`]).
 
 use std::sync::Arc;
 
@@ -9,7 +9,7 @@ use serde::Serialize;
 
 use super::nav::Endpoint;
 use super::{Budget, NavMesh, Profile, RouteRequest};
-use crate::model::{Connection, Nrg, Point, SpaceId};
+use crate::model::{Connection, ConnectionPaths, Nrg, Point, SpaceId};
 
 /// The walked path of one connection.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -73,25 +73,78 @@ fn walk_one(nav: &NavMesh, c: &Connection, all: &[SpaceId]) -> ConnectionWalk {
     }
 }
 
+/// A model as nrgdb stores and writes it: every navigable connection's
+/// `length_m` is its walked length, and `paths` holds the walked polyline
+/// of each (what IndoorGML Transitions and GeoJSON connection lines draw).
+#[derive(Debug, Clone, PartialEq)]
+pub struct WalkedModel {
+    /// The model with walked lengths.
+    pub nrg: Nrg,
+    /// The walked polyline of each navigable connection, by
+    /// [`Connection::key`], from the smaller id's anchor to the other's.
+    pub paths: ConnectionPaths,
+    /// How many lengths changed by more than a millimetre.
+    pub lengths_changed: usize,
+}
+
+/// `nrg` with walked connection lengths and paths: the one function every
+/// writer (IndoorGML, GeoJSON, model JSON) and every way into the store
+/// goes through, so they all carry the same lengths.
+///
+/// ```
+/// use nrgdb::route::walked_model;
+/// let nrg = nrgdb::fixtures::corridor_building(2);
+/// let walked = walked_model(&nrg);
+/// for c in walked.nrg.connections().iter().filter(|c| c.kind.is_navigable()) {
+///     let path = &walked.paths[&c.key()];
+///     let own: f64 = path.windows(2).map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1])).sum();
+///     assert!((own - c.length_m).abs() < 1e-9);
+/// }
+/// ```
+pub fn walked_model(nrg: &Nrg) -> WalkedModel {
+    WalkedModel::on(&NavMesh::new(Arc::new(nrg.clone())))
+}
+
+impl WalkedModel {
+    /// [`walked_model`] over an already built navigation layer (a cached
+    /// revision's).
+    pub fn on(nav: &NavMesh) -> WalkedModel {
+        let walks = connection_walks(nav);
+        let mut changed = 0;
+        let mut paths = ConnectionPaths::new();
+        let mut walked: std::collections::HashMap<(SpaceId, SpaceId), f64> =
+            std::collections::HashMap::with_capacity(walks.len());
+        for w in walks {
+            let key = if w.a <= w.b { (w.a, w.b) } else { (w.b, w.a) };
+            let mut points = w.points;
+            if key.0 != w.a {
+                points.reverse();
+            }
+            walked.insert(key, w.length_m);
+            paths.insert(key, points);
+        }
+        let mut connections = nav.nrg().connections().to_vec();
+        for c in &mut connections {
+            if let Some(&length_m) = walked.get(&c.key()) {
+                if (c.length_m - length_m).abs() > 1e-3 {
+                    changed += 1;
+                }
+                c.length_m = length_m;
+            }
+        }
+        let nrg = Nrg::new(nav.nrg().spaces().to_vec(), connections)
+            .unwrap_or_else(|_| nav.nrg().clone());
+        WalkedModel {
+            nrg,
+            paths,
+            lengths_changed: changed,
+        }
+    }
+}
+
 /// `nrg` with every navigable connection's `length_m` set to its walked
 /// length, and how many lengths changed by more than a millimetre.
 pub fn with_walked_lengths(nrg: Nrg) -> (Nrg, usize) {
-    let nav = NavMesh::new(Arc::new(nrg));
-    let walks = connection_walks(&nav);
-    let mut nrg = (*nav.nrg()).clone();
-    let mut changed = 0;
-    let mut connections = nrg.connections().to_vec();
-    for c in &mut connections {
-        if let Some(w) = walks.iter().find(|w| w.a == c.a && w.b == c.b) {
-            if (c.length_m - w.length_m).abs() > 1e-3 {
-                changed += 1;
-            }
-            c.length_m = w.length_m;
-        }
-    }
-    let spaces = nrg.spaces().to_vec();
-    if let Ok(updated) = Nrg::new(spaces, connections) {
-        nrg = updated;
-    }
-    (nrg, changed)
+    let walked = walked_model(&nrg);
+    (walked.nrg, walked.lengths_changed)
 }

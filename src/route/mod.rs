@@ -38,7 +38,9 @@ mod steps;
 
 pub use alternatives::alternatives;
 pub use budget::Budget;
-pub use connection_walks::{ConnectionWalk, connection_walks, with_walked_lengths};
+pub use connection_walks::{
+    ConnectionWalk, WalkedModel, connection_walks, walked_model, with_walked_lengths,
+};
 pub use error::RouteError;
 pub use graph::RouteGraph;
 pub use nav::{Endpoint, MAX_CLEARANCE_M, NavMesh, Profile};

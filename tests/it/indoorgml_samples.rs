@@ -214,3 +214,84 @@ fn exports_of_valid_samples_are_schema_valid() {
         "some exported samples are not schema-valid (see stderr)"
     );
 }
+
+/// 313_4F_2D's Transitions all have weight 0 but a LineString: on import
+/// each gets its LineString's length, no connection is 0 m long, and the
+/// import says how many it fixed (the library's count, the CLI's line).
+#[test]
+fn sample_313_zero_weights_are_fixed_on_import() {
+    let Some(shared) = shared_dir("indoorgml/samples/313_4F_2D.gml") else {
+        return;
+    };
+    let file = shared
+        .join("indoorgml/samples/313_4F_2D.gml")
+        .canonicalize()
+        .unwrap();
+    let doc = read_file(&file, indoorgml::DEFAULT_MAX_BYTES).unwrap();
+    let zero: usize = doc
+        .layers()
+        .iter()
+        .flat_map(|l| &l.transitions)
+        .filter(|t| t.weight.is_none_or(|w| w == 0.0))
+        .count();
+    assert!(zero > 0, "the sample has weight-0 Transitions");
+    let (nrg, fixes) = nrgdb::format::from_document(&doc).unwrap();
+    let navigable: Vec<_> = nrg
+        .connections()
+        .iter()
+        .filter(|c| c.kind.is_navigable())
+        .collect();
+    assert_eq!(fixes.total(), navigable.len());
+    assert!(fixes.total() <= zero);
+    assert_eq!(fixes.from_geometry, fixes.total(), "all have a LineString");
+    for c in nrg.connections() {
+        assert!(c.length_m > 0.0, "{:?} has length {}", c.key(), c.length_m);
+    }
+    // Each fixed length is its Transition's own LineString length.
+    let t = doc
+        .layers()
+        .iter()
+        .flat_map(|l| &l.transitions)
+        .find(|t| t.info.id == "T1")
+        .unwrap();
+    let pts: Vec<[f64; 2]> = t.geometry.as_ref().unwrap().coords.xy().collect();
+    let own: f64 = pts
+        .windows(2)
+        .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]))
+        .sum();
+    assert!(own > 0.0);
+    assert!(
+        nrg.connections()
+            .iter()
+            .any(|c| (c.length_m - own).abs() < 1e-9)
+    );
+
+    let dir = tempfile::tempdir().unwrap();
+    let out = crate::support::nrgdb(
+        dir.path(),
+        &[
+            "import",
+            "--db",
+            "t.db",
+            "--map",
+            "m",
+            file.to_str().unwrap(),
+        ],
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{stdout}{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let line = format!(
+        "fixed {} transition weights (missing or 0): set from their geometry",
+        fixes.total()
+    );
+    assert!(stdout.contains(&line), "{stdout}");
+    let stored = nrgdb::store::Store::open(&dir.path().join("t.db"))
+        .unwrap()
+        .load("m", None)
+        .unwrap();
+    assert!(stored.connections().iter().all(|c| c.length_m > 0.0));
+}

@@ -6,6 +6,7 @@ mod indoorgml_check;
 mod indoorgml_fuzz;
 mod indoorgml_roundtrip;
 mod indoorgml_samples;
+mod indoorgml_walked;
 mod sim;
 mod sim_accuracy;
 mod support;

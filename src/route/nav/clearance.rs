@@ -176,7 +176,7 @@ fn arc(out: &mut Vec<Point>, peg: &Peg, a: Point, b: Point) {
     } else {
         (ta - tb).rem_euclid(tau)
     };
-    if sweep < 1e-9 || sweep > 1.5 * std::f64::consts::PI {
+    if !(1e-9..=1.5 * std::f64::consts::PI).contains(&sweep) {
         return;
     }
     let k = (sweep / ARC_STEP).ceil().max(1.0);

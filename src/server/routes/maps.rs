@@ -90,9 +90,11 @@ pub async fn indoorgml(
     let xml = state
         .blocking(move |ctx| {
             let r = ctx.revision(&map, rev)?;
-            Ok(crate::indoorgml::write_string(&crate::indoorgml::from_nrg(
-                &r.nrg,
-            )))
+            let walked = crate::route::WalkedModel::on(&r.nav);
+            Ok(crate::format::render(
+                &walked,
+                crate::format::ModelFormat::IndoorGml,
+            ))
         })
         .await?;
     let response = (
@@ -114,7 +116,11 @@ pub async fn geojson(
     let body = state
         .blocking(move |ctx| {
             let r = ctx.revision(&map, rev)?;
-            Ok(crate::geojson::to_geojson(&r.nrg).to_string())
+            let walked = crate::route::WalkedModel::on(&r.nav);
+            Ok(crate::format::render(
+                &walked,
+                crate::format::ModelFormat::GeoJson,
+            ))
         })
         .await?;
     let response = ([(header::CONTENT_TYPE, "application/geo+json")], body).into_response();

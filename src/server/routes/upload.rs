@@ -4,7 +4,10 @@
 //! `.json`, `.geojson`), or such a model file as the raw body
 //! (`application/xml`, `application/json`, `application/geo+json`).
 //! Everything is read and checked before the one import transaction, so a
-//! malformed upload stores nothing.
+//! malformed upload stores nothing. The model goes in through
+//! [`crate::ingest::ingest`] (walked connection lengths); IndoorGML
+//! Transitions with a missing or 0 weight are fixed on reading and counted
+//! in the answer's `weights_fixed`.
 
 use axum::Json;
 use axum::body::Body;
@@ -92,20 +95,25 @@ fn utf8(bytes: &[u8], what: &str) -> Result<String, ApiError> {
         .map_err(|_| ApiError::BadUpload(format!("{what} is not UTF-8 text")))
 }
 
-/// Reads a model file of `kind`.
-fn read_model(kind: Kind, bytes: &[u8], name: &str) -> Result<Nrg, ApiError> {
+/// Reads a model file of `kind`, with how many IndoorGML Transition
+/// weights were missing or 0 and fixed.
+fn read_model(kind: Kind, bytes: &[u8], name: &str) -> Result<(Nrg, usize), ApiError> {
     let text = utf8(bytes, name)?;
     let bad = |e: String| ApiError::BadUpload(format!("{name}: {e}"));
-    match kind {
-        Kind::IndoorGml => crate::indoorgml::read_str(&text)
-            .and_then(|d| crate::indoorgml::to_nrg(&d))
-            .map_err(|e| bad(e.to_string())),
+    let nrg = match kind {
+        Kind::IndoorGml => {
+            return crate::indoorgml::read_str(&text)
+                .and_then(|d| crate::format::from_document(&d))
+                .map(|(nrg, fixes)| (nrg, fixes.total()))
+                .map_err(|e| bad(e.to_string()));
+        }
         Kind::GeoJson => crate::geojson::from_geojson(&text).map_err(|e| bad(e.to_string())),
         _ if text.contains("\"FeatureCollection\"") => {
             crate::geojson::from_geojson(&text).map_err(|e| bad(e.to_string()))
         }
         _ => Nrg::from_json(&text).map_err(|e| bad(e.to_string())),
-    }
+    }?;
+    Ok((nrg, 0))
 }
 
 /// Extracts a model from a map YAML and its image (written to a temporary
@@ -154,10 +162,10 @@ fn extract_map(
     Ok((extraction.nrg, grid, params))
 }
 
-/// The model and import metadata described by a multipart body.
-/// A model to import, and the occupancy grid it was extracted from (kept
-/// with the revision, see [`crate::store::Store::grid`]).
-type Upload = (Nrg, Option<OccupancyGrid>);
+/// A model to import, the occupancy grid it was extracted from (kept with
+/// the revision, see [`crate::store::Store::grid`]) and how many IndoorGML
+/// Transition weights were fixed on reading.
+type Upload = (Nrg, Option<OccupancyGrid>, usize);
 
 fn from_multipart(body: &[u8], boundary: &str, meta: &mut ImportMeta) -> Result<Upload, ApiError> {
     let parts = multipart::parse(body, boundary).map_err(|e| ApiError::BadUpload(e.to_string()))?;
@@ -192,13 +200,13 @@ fn from_multipart(body: &[u8], boundary: &str, meta: &mut ImportMeta) -> Result<
             meta.source_name = Some(format!("{} + {image_name}", name(y, "map.yaml")));
             meta.source_sha256 = Some(sha256_hex(&bytes));
             meta.params = Some(params);
-            Ok((nrg, Some(grid)))
+            Ok((nrg, Some(grid), 0))
         }
         (None, None, Some((k, p))) => {
             let file = name(p, "upload");
-            let nrg = read_model(k, p.data, &file)?;
+            let (nrg, fixed) = read_model(k, p.data, &file)?;
             *meta = std::mem::take(meta).with_source(file, p.data);
-            Ok((nrg, None))
+            Ok((nrg, None, fixed))
         }
         (Some(_), None, _) => Err(ApiError::BadUpload(
             "a map YAML needs its image (a PGM or PNG part)".into(),
@@ -235,9 +243,9 @@ pub async fn upload(
         p.get("message").unwrap_or(""),
         p.get("author").unwrap_or("nrgdb serve"),
     );
-    let done = state
+    let (done, weights_fixed) = state
         .blocking(move |ctx| {
-            let (nrg, grid) = if let Some(b) = multipart::boundary(&content_type) {
+            let (nrg, grid, fixed) = if let Some(b) = multipart::boundary(&content_type) {
                 from_multipart(&bytes, &b, &mut meta)?
             } else {
                 let kind = kind_of_type(&content_type).filter(|k| !matches!(k, Kind::MapYaml | Kind::Image));
@@ -246,11 +254,12 @@ pub async fn upload(
                         "Content-Type '{content_type}' is not accepted: use multipart/form-data, application/xml (IndoorGML), application/json or application/geo+json"
                     )));
                 };
-                let nrg = read_model(kind, &bytes, "body")?;
+                let (nrg, fixed) = read_model(kind, &bytes, "body")?;
                 meta = std::mem::take(&mut meta).with_source("upload", &bytes);
-                (nrg, None)
+                (nrg, None, fixed)
             };
-            Ok(ctx.store().import_with_grid(&map, &nrg, meta, grid.as_ref())?)
+            let done = crate::ingest::ingest(ctx.store(), &map, &nrg, meta, grid.as_ref())?;
+            Ok((done.imported, fixed))
         })
         .await?;
     let info = &done.revision;
@@ -265,7 +274,7 @@ pub async fn upload(
     let location = format!("/maps/{}/revisions/{}/geojson", info.map, info.seq);
     let mut response = (
         StatusCode::CREATED,
-        Json(json!({ "revision": info, "ids": ids })),
+        Json(json!({ "revision": info, "ids": ids, "weights_fixed": weights_fixed })),
     )
         .into_response();
     if let Ok(v) = HeaderValue::from_str(&location) {
@@ -290,7 +299,7 @@ mod tests {
         let nrg = crate::fixtures::corridor_building(2);
         assert_eq!(
             read_model(Kind::Json, nrg.to_json().as_bytes(), "x").unwrap(),
-            nrg
+            (nrg, 0)
         );
         assert!(read_model(Kind::Json, b"{", "x").is_err());
     }
