@@ -24,35 +24,22 @@ use std::time::Instant;
 use nrgdb::eval::{FidelityReport, FidelitySummary, PairFidelity, route_fidelity_with_gap};
 use nrgdb::extract::{ExtractParams, extract};
 use nrgdb::grid::{LoadOptions, load_map};
-use nrgdb::model::{Nrg, Point, SpaceId, SpaceKind, point_in_ring};
-use nrgdb::route::{Budget, RouteGraph, RouteRequest, shortest_route};
+use nrgdb::model::{Nrg, Point};
+use nrgdb::route::{Budget, Endpoint, NavMesh, Profile, RouteRequest, shortest_route};
 use nrgdb::sim::{SimParams, simulate, write_simulation};
 use serde::Serialize;
 
-/// The router under test: anchor-to-anchor routes of `nrgdb::route` (the
-/// "before" figure). Swap this for the navigation layer to measure it.
+/// The router under test: the navigation layer at zero clearance, from
+/// point to point (the free-space geodesic it should match).
 fn router(nrg: &Nrg) -> impl Fn(Point, Point) -> Option<(f64, Vec<Point>)> {
-    let graph = RouteGraph::new(nrg);
+    let nav = NavMesh::new(std::sync::Arc::new(nrg.clone()));
     move |from, to| {
-        let request = RouteRequest::new(space_at(nrg, from)?, space_at(nrg, to)?);
-        let routes = shortest_route(&graph, nrg, &request, &Budget::unlimited()).ok()?;
+        let mut request = RouteRequest::between(Endpoint::Point(from), Endpoint::Point(to));
+        request.profile = Profile::exact();
+        let routes = shortest_route(&nav, &request, &Budget::unlimited()).ok()?;
         let route = routes.into_iter().next()?;
         Some((route.length_m, route.waypoints))
     }
-}
-
-/// The space anchored at `p`, else a non-door space containing it.
-fn space_at(nrg: &Nrg, p: Point) -> Option<SpaceId> {
-    let spaces = nrg.spaces();
-    spaces
-        .iter()
-        .find(|s| s.anchor == p)
-        .or_else(|| {
-            spaces
-                .iter()
-                .find(|s| s.kind != SpaceKind::Door && point_in_ring(p, &s.polygon))
-        })
-        .map(|s| s.id)
 }
 
 struct Args {

@@ -7,8 +7,7 @@ use std::sync::Arc;
 
 use serde::Serialize;
 
-use super::nav::Endpoint;
-use super::{Budget, NavMesh, Profile, RouteRequest};
+use super::{Budget, NavMesh, Profile};
 use crate::model::{Connection, ConnectionPaths, Nrg, Point, SpaceId};
 
 /// The walked path of one connection.
@@ -28,48 +27,43 @@ pub struct ConnectionWalk {
 }
 
 /// The walked path of each navigable connection of `nav`'s model, at zero
-/// clearance, through the two spaces only; in connection order.
+/// clearance, through the two spaces only; in connection order. One small
+/// search per connection, with every other space closed.
 pub fn connection_walks(nav: &NavMesh) -> Vec<ConnectionWalk> {
     let nrg = nav.nrg();
-    let all: Vec<SpaceId> = nrg.spaces().iter().map(|s| s.id).collect();
+    let level = nav.level(&Profile::exact());
+    let mut closed = vec![true; nav.space_ids(&level).len()];
+    let budget = Budget::unlimited();
     nrg.connections()
         .iter()
         .filter(|c| c.kind.is_navigable())
-        .map(|c| walk_one(nav, c, &all))
+        .map(|c| {
+            let walked = nav.walk_between(&level, c.a, c.b, &mut closed, &budget);
+            match walked {
+                Some((length_m, points)) => ConnectionWalk {
+                    a: c.a,
+                    b: c.b,
+                    length_m,
+                    points,
+                    straight: false,
+                },
+                None => straight(nrg, c),
+            }
+        })
         .collect()
 }
 
-fn walk_one(nav: &NavMesh, c: &Connection, all: &[SpaceId]) -> ConnectionWalk {
-    let nrg = nav.nrg();
-    let avoid: Vec<SpaceId> = all
-        .iter()
-        .copied()
-        .filter(|s| *s != c.a && *s != c.b)
-        .collect();
-    let mut request = RouteRequest::between(Endpoint::Space(c.a), Endpoint::Space(c.b));
-    request.profile = Profile::exact();
-    let walked = super::shortest_route::route_avoiding(nav, &request, &avoid, &Budget::unlimited())
-        .ok()
-        .flatten();
-    match walked {
-        Some(route) => ConnectionWalk {
-            a: c.a,
-            b: c.b,
-            length_m: route.length_m,
-            points: route.waypoints,
-            straight: false,
-        },
-        None => {
-            let anchor = |id| nrg.space(id).map_or([0.0, 0.0], |s| s.anchor);
-            let (p, q) = (anchor(c.a), anchor(c.b));
-            ConnectionWalk {
-                a: c.a,
-                b: c.b,
-                length_m: (p[0] - q[0]).hypot(p[1] - q[1]),
-                points: vec![p, q],
-                straight: true,
-            }
-        }
+/// The straight line between a connection's anchors (spaces that share no
+/// walkable boundary).
+fn straight(nrg: &Nrg, c: &Connection) -> ConnectionWalk {
+    let anchor = |id| nrg.space(id).map_or([0.0, 0.0], |s| s.anchor);
+    let (p, q) = (anchor(c.a), anchor(c.b));
+    ConnectionWalk {
+        a: c.a,
+        b: c.b,
+        length_m: (p[0] - q[0]).hypot(p[1] - q[1]),
+        points: vec![p, q],
+        straight: true,
     }
 }
 

@@ -44,8 +44,6 @@ pub(crate) struct Gate {
     pub ends: [u32; 2],
     /// The triangle on each side and its space: `(tri, space)`.
     pub sides: [(u32, u32); 2],
-    /// Midpoint of the edge, metres.
-    pub mid: Point,
 }
 
 /// The triangulated floor.
@@ -270,11 +268,9 @@ impl Mesh {
                         let key = e.as_undirected().fix().index();
                         let gate = *gate_of_edge.entry(key).or_insert_with(|| {
                             let [p, q] = e.vertices().map(|v| v.fix().index() as u32);
-                            let (pp, pq) = (points[p as usize], points[q as usize]);
                             gates.push(Gate {
                                 ends: [p, q],
                                 sides: [(t, space), (other, os)],
-                                mid: [(pp[0] + pq[0]) / 2.0, (pp[1] + pq[1]) / 2.0],
                             });
                             (gates.len() - 1) as u32
                         });

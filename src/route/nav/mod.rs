@@ -329,3 +329,28 @@ impl NavMesh {
             .unwrap_or(f64::INFINITY)
     }
 }
+
+impl NavMesh {
+    /// The walk from `a`'s anchor to `b`'s through those two spaces only
+    /// on `level`: `closed` must mark every space closed on entry and is
+    /// left so. Length and polyline, or `None`.
+    pub(crate) fn walk_between(
+        &self,
+        level: &Level,
+        a: SpaceId,
+        b: SpaceId,
+        closed: &mut [bool],
+        budget: &Budget,
+    ) -> Option<(f64, Vec<Point>)> {
+        let mesh = &level.mesh;
+        let (sa, sb) = (mesh.space(a)?, mesh.space(b)?);
+        let from = self.end(level, &Endpoint::Space(a)).ok()?;
+        let to = self.end(level, &Endpoint::Space(b)).ok()?;
+        closed[sa as usize] = false;
+        closed[sb as usize] = false;
+        let walked = self.walk(level, &from, &to, closed, budget);
+        closed[sa as usize] = true;
+        closed[sb as usize] = true;
+        walked.map(|w| (w.length_m, w.points))
+    }
+}
