@@ -438,9 +438,18 @@ fn space(cell: &Cell, id: SpaceId, state: Option<&State>) -> Result<Space, Indoo
         _ => SpaceKind::Other,
     };
     let (polygon, holes) = footprint(cell)?;
+    // The State's point when it lies in the cell; else (no State, or a
+    // point outside, as some files have) the cell's pole of
+    // inaccessibility, an interior point routes can start from.
+    let inside = |p: &[f64; 2]| {
+        crate::model::point_in_ring(*p, &polygon)
+            && !holes.iter().any(|h| crate::model::point_in_ring(*p, h))
+    };
     let anchor = state
         .and_then(|s| s.point.as_ref())
         .and_then(|p| p.coords.xy().next())
+        .filter(inside)
+        .or_else(|| crate::model::pole_of_inaccessibility(&polygon, &holes, 0.01).map(|(p, _)| p))
         .or_else(|| polygon_centroid(&polygon))
         .unwrap_or([0.0, 0.0]);
     let mut attributes = description_to_attributes(cell.info.description.as_deref());

@@ -24,6 +24,26 @@ fn exact(from: SpaceId, to: SpaceId) -> RouteRequest {
 }
 
 proptest! {
+    #![proptest_config(ProptestConfig::with_cases(8))]
+
+    /// The walked length at zero clearance is the free-space geodesic: an
+    /// independent raster search (`eval::free_space_geodesic`, 2.5 cm
+    /// cells, any-angle moves) over the union of the spaces agrees within 2 %.
+    #[test]
+    fn route_length_is_the_geodesic(b in building(), i in 0usize..64, j in 0usize..64) {
+        let nav = nav(&b);
+        let n = b.rooms.len();
+        let (a, c) = (b.rooms[i % n], b.rooms[j % n]);
+        prop_assume!(a != c);
+        let r = shortest_route(&nav, &exact(a, c), &Budget::unlimited()).unwrap();
+        let anchor = |id: SpaceId| b.nrg.space(id).unwrap().anchor;
+        let geodesic = nrgdb::eval::free_space_geodesic(&b.nrg, anchor(a), anchor(c), 0.025).unwrap();
+        let ratio = r[0].length_m / geodesic;
+        prop_assert!((0.98..=1.02).contains(&ratio), "walked {} m, geodesic {} m", r[0].length_m, geodesic);
+    }
+}
+
+proptest! {
     #![proptest_config(ProptestConfig::with_cases(48))]
 
     #[test]
@@ -118,4 +138,30 @@ fn bounds(ring: &[Point]) -> (Point, Point) {
         }
     }
     (lo, hi)
+}
+
+/// Issue 18: neighbouring rooms on one corridor are a few metres apart on
+/// foot, not the sum of anchor-to-anchor hops. Office 1 (anchor (2, 4.6))
+/// and room 11 (anchor (6, 4.6)) open through 1 m doors at x 1.5–2.5 and
+/// 5.5–6.5 onto the corridor's wall at y = 2: at zero clearance the walk
+/// bends at the doorway corners (2.5, 2) and (5.5, 2).
+#[test]
+fn neighbouring_rooms_are_a_few_metres_apart() {
+    let nrg = nrgdb::fixtures::corridor_building(6);
+    let nav = NavMesh::new(Arc::new(nrg));
+    let r = shortest_route(&nav, &exact(SpaceId(10), SpaceId(11)), &Budget::unlimited()).unwrap();
+    let expected = 2.0 * 0.5f64.hypot(2.6) + 3.0;
+    assert!((r[0].length_m - expected).abs() < 1e-9, "{}", r[0].length_m);
+    assert_eq!(
+        r[0].waypoints,
+        vec![[2.0, 4.6], [2.5, 2.0], [5.5, 2.0], [6.0, 4.6]]
+    );
+    // With a person's clearance it is a little longer, still a few metres.
+    let walked = shortest_route(
+        &nav,
+        &RouteRequest::new(SpaceId(10), SpaceId(11)),
+        &Budget::unlimited(),
+    )
+    .unwrap();
+    assert!(walked[0].length_m > expected && walked[0].length_m < expected + 1.0);
 }
