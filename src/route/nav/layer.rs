@@ -6,6 +6,7 @@
 
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
+use std::sync::OnceLock;
 
 use super::clearance::{clear_walk, edge_open, traversal_open};
 use super::funnel::{dist, funnel, polyline_length};
@@ -192,8 +193,12 @@ pub(crate) struct Layer {
     pub gate_open: Vec<bool>,
     /// Local index of each triangle within its space.
     pub local: Vec<u32>,
-    /// One table per space (dense index).
-    pub tables: Vec<SpaceTable>,
+    /// The anchor of each space: its triangle and point.
+    anchors: Vec<(u32, Point)>,
+    /// One table per space (dense index), built when a route first needs
+    /// it: a revision that is only listed, located or diffed never pays
+    /// for them.
+    tables: Vec<OnceLock<SpaceTable>>,
 }
 
 impl Layer {
@@ -215,17 +220,57 @@ impl Layer {
             .iter()
             .map(|g| crossings(mesh, g.ends, clearance_m))
             .collect();
-        let tables = (0..mesh.space_ids.len() as u32)
-            .map(|s| table(mesh, nrg, &local, s, clearance_m, &gate_open, &samples))
+        let anchors = (0..mesh.space_ids.len() as u32)
+            .map(|s| anchor(mesh, nrg, s))
             .collect();
         Layer {
             clearance_m,
             samples,
             gate_open,
             local,
-            tables,
+            anchors,
+            tables: (0..mesh.space_ids.len()).map(|_| OnceLock::new()).collect(),
         }
     }
+
+    /// The table of space `s`, built on first use.
+    pub fn table(&self, mesh: &Mesh, s: u32) -> &SpaceTable {
+        static EMPTY: SpaceTable = SpaceTable {
+            sources: Vec::new(),
+            trees: Vec::new(),
+            costs: Vec::new(),
+        };
+        let (Some(cell), Some(anchor)) =
+            (self.tables.get(s as usize), self.anchors.get(s as usize))
+        else {
+            return &EMPTY;
+        };
+        cell.get_or_init(|| {
+            table(
+                mesh,
+                &self.local,
+                s,
+                self.clearance_m,
+                &self.gate_open,
+                &self.samples,
+                *anchor,
+            )
+        })
+    }
+}
+
+/// The anchor of space `s` on the mesh: the model's anchor when it lies in
+/// the space, else the centroid of its first triangle.
+fn anchor(mesh: &Mesh, nrg: &Nrg, s: u32) -> (u32, Point) {
+    let tris = &mesh.space_tris[s as usize];
+    let Some(first) = tris.first() else {
+        return (NONE, [0.0, 0.0]);
+    };
+    nrg.space(mesh.space_ids[s as usize])
+        .map(|sp| sp.anchor)
+        .and_then(|p| mesh.locate(p, Some(s)).map(|t| (t, p)))
+        .filter(|(t, _)| mesh.tris[*t as usize].space == s)
+        .unwrap_or_else(|| (*first, mesh.centroid(*first)))
 }
 
 /// The crossing points of the gate `ends`, on the part of it at least `r`
@@ -249,12 +294,12 @@ fn crossings(mesh: &Mesh, ends: [u32; 2], r: f64) -> [Point; SAMPLES] {
 #[allow(clippy::too_many_arguments)]
 fn table(
     mesh: &Mesh,
-    nrg: &Nrg,
     local: &[u32],
     s: u32,
     r: f64,
     gate_open: &[bool],
     samples: &[[Point; SAMPLES]],
+    anchor: (u32, Point),
 ) -> SpaceTable {
     let tris = &mesh.space_tris[s as usize];
     if tris.is_empty() {
@@ -272,12 +317,6 @@ fn table(
             samples[*g as usize].map(|p| (side, p))
         })
         .collect();
-    let anchor = nrg
-        .space(mesh.space_ids[s as usize])
-        .map(|sp| sp.anchor)
-        .and_then(|p| mesh.locate(p, Some(s)).map(|t| (t, p)))
-        .filter(|(t, _)| mesh.tris[*t as usize].space == s)
-        .unwrap_or_else(|| (tris[0], mesh.centroid(tris[0])));
     sources.push(anchor);
     let gates = &mesh.space_gates[s as usize];
     let n = sources.len();

@@ -216,7 +216,7 @@ impl NavMesh {
                 if mesh.space_tris[s as usize].is_empty() {
                     return Err(RouteError::NotNavigable(*id));
                 }
-                End::anchor(&level.layer, s).ok_or(RouteError::NotNavigable(*id))
+                End::anchor(&level.mesh, &level.layer, s).ok_or(RouteError::NotNavigable(*id))
             }
             Endpoint::Point(p) => match mesh.locate(*p, None) {
                 Some(t) => Ok(End::point(mesh, &level.layer, *p, t)),

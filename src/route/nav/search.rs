@@ -37,8 +37,8 @@ enum EndKind {
 
 impl End {
     /// The anchor of space `s`.
-    pub fn anchor(layer: &Layer, s: u32) -> Option<End> {
-        let table = layer.tables.get(s as usize)?;
+    pub fn anchor(mesh: &Mesh, layer: &Layer, s: u32) -> Option<End> {
+        let table = layer.table(mesh, s);
         let a = table.anchor();
         let (tri, at) = *table.sources.get(a)?;
         let to_gates = (0..a).map(|j| table.cost(a, j)).collect();
@@ -56,7 +56,7 @@ impl End {
         let space = mesh.tris[tri as usize].space;
         let r = layer.clearance_m;
         let tree = Tree::grow(mesh, &layer.local, space, tri, at, r);
-        let table = &layer.tables[space as usize];
+        let table = layer.table(mesh, space);
         let gates = &mesh.space_gates[space as usize];
         let mut to_gates = vec![f64::INFINITY; gates.len() * SAMPLES];
         for (j, g) in gates.iter().enumerate() {
@@ -84,7 +84,7 @@ impl End {
     /// Triangles from this end to source `j` (a gate crossing) of its space
     /// (`outbound`) or from there to this end.
     fn channel(&self, mesh: &Mesh, layer: &Layer, j: usize, outbound: bool) -> Option<Vec<u32>> {
-        let table = &layer.tables[self.space as usize];
+        let table = layer.table(mesh, self.space);
         match &self.kind {
             EndKind::Anchor => {
                 let a = table.anchor();
@@ -190,7 +190,7 @@ pub(crate) fn shortest_walk(
                 continue;
             }
             let list = &mesh.space_gates[t as usize];
-            let table = &layer.tables[t as usize];
+            let table = layer.table(mesh, t);
             let Some(jg) = list.iter().position(|x| *x as usize == g) else {
                 continue;
             };
@@ -260,7 +260,7 @@ fn assemble(
             let (g, h) = (w[0], w[1]);
             let t = pred[h as usize].1;
             spaces.push(t);
-            let table = &layer.tables[t as usize];
+            let table = layer.table(mesh, t);
             let c = table.channel(mesh, &layer.local, index_in(t, g)?, index_in(t, h)?)?;
             tris.extend(c);
         }
@@ -304,11 +304,11 @@ pub(crate) fn anchor_distances(
         }
     }
     let mut out = vec![f64::INFINITY; mesh.space_ids.len()];
-    let start_table = &layer.tables[from.space as usize];
+    let start_table = layer.table(mesh, from.space);
     out[from.space as usize] = match from.kind {
         EndKind::Anchor => 0.0,
         EndKind::Point(_) => {
-            let anchor = End::anchor(layer, from.space);
+            let anchor = End::anchor(mesh, layer, from.space);
             anchor
                 .and_then(|a| from.direct(mesh, layer, &a))
                 .map_or(f64::INFINITY, |c| {
@@ -331,7 +331,7 @@ pub(crate) fn anchor_distances(
                 continue;
             }
             let list = &mesh.space_gates[t as usize];
-            let table = &layer.tables[t as usize];
+            let table = layer.table(mesh, t);
             let Some(jg) = list.iter().position(|x| *x as usize == g) else {
                 continue;
             };
