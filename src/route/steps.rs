@@ -162,6 +162,8 @@ pub(crate) fn describe(nrg: &Nrg, mesh: &Mesh, legs: &[Walk], profile: &Profile)
             points.extend(leg.points.iter());
         }
         let mut seg = base;
+        // Arc length at the start of segment `seg`, kept as it advances.
+        let mut at = cumulative_at(&points, seg);
         let mut leg_spaces = leg.spaces.iter();
         if spaces.last() == leg.spaces.first() {
             leg_spaces.next();
@@ -170,7 +172,11 @@ pub(crate) fn describe(nrg: &Nrg, mesh: &Mesh, legs: &[Walk], profile: &Profile)
         for g in &leg.gates {
             let gate = &mesh.gates[*g as usize];
             let [a, b] = gate.ends.map(|v| mesh.point(v));
-            let (i, s, x) = crossing(&points, seg, a, b, cumulative_at(&points, seg));
+            let (i, s, x) = crossing(&points, seg, a, b, at);
+            at += points[seg..=i.min(points.len().saturating_sub(1))]
+                .windows(2)
+                .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]))
+                .sum::<f64>();
             seg = i;
             crossings.push((s, x));
         }
