@@ -6,13 +6,13 @@
 //! model and the figures per group; `--json` prints everything as JSON.
 //!
 //! ```text
-//! cargo run --release --example route_fidelity [-- MAPS_DIR --pairs 25 --sims 10 --cell 0.025 --gap-px 1 --seed 1 --json]
+//! cargo run --release --example route_fidelity [-- MAPS_DIR --pairs 25 --sims 10 --cell 0.025 --gap-px 0 --seed 1 --json]
 //! ```
-//! Extracted outlines run through the centres of their boundary pixels, so
-//! neighbouring spaces are a pixel apart: for extracted models the geodesic
-//! bridges gaps of up to `2 * gap-px` pixels and a sample within `gap-px`
-//! pixels of a space is inside it (`--gap-px 0`: the exact union, under
-//! which extracted models are mostly disconnected). True plans use 0.
+//! Extracted spaces tile the free space exactly (outlines along pixel
+//! edges), so `--gap-px 0`, the exact union of the spaces, is the honest
+//! setting; `--gap-px N` lets the geodesic bridge gaps of up to `2N` pixels
+//! and counts samples within `N` pixels of a space as inside (for models
+//! whose spaces do not touch).
 //! MAPS_DIR defaults to `$NRGDB_SHARED/maps` (NRGDB_SHARED defaults to
 //! `../shared`); every `*.yaml` in it is extracted with the default
 //! parameters. Simulated buildings (seeds 1..=`--sims`) are measured twice:
@@ -56,7 +56,7 @@ fn parse_args() -> Result<Args, Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
     let mut dir = None;
     let (mut pairs, mut sims, mut cell_m, mut seed, mut json) = (25, 10, 0.025, 1, false);
-    let mut gap_px = 1.0;
+    let mut gap_px = 0.0;
     while let Some(a) = args.next() {
         let mut value = || args.next().ok_or(format!("{a} needs a value"));
         match a.as_str() {

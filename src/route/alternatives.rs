@@ -68,7 +68,11 @@ pub fn alternatives(
         };
         found.push(candidates.swap_remove(next));
     }
-    Ok(found.into_iter().map(|(r, _)| r).collect())
+    // The search crosses gates at sampled points, so a route found later
+    // can be a little shorter than an earlier one: sort by walked length.
+    let mut routes: Vec<Route> = found.into_iter().map(|(r, _)| r).collect();
+    routes.sort_by(|a, b| a.length_m.total_cmp(&b.length_m));
+    Ok(routes)
 }
 
 #[cfg(test)]

@@ -119,7 +119,10 @@ proptest! {
         let routes = shortest_route(&nav, &req, &Budget::unlimited()).unwrap();
         prop_assert!(!routes.is_empty() && routes.len() <= k);
         let best = shortest_route(&nav, &exact(a, c), &Budget::unlimited()).unwrap();
-        prop_assert!((routes[0].length_m - best[0].length_m).abs() < 1e-9);
+        // The first is the plain shortest route, or one a little shorter
+        // that the door-distinct search found.
+        prop_assert!(routes[0].length_m <= best[0].length_m + 1e-9);
+        prop_assert!(routes[0].length_m >= 0.99 * best[0].length_m);
         for w in routes.windows(2) {
             prop_assert!(w[0].length_m <= w[1].length_m + 1e-9);
         }
@@ -164,4 +167,27 @@ fn neighbouring_rooms_are_a_few_metres_apart() {
     )
     .unwrap();
     assert!(walked[0].length_m > expected && walked[0].length_m < expected + 1.0);
+}
+
+/// A hall with hundreds of doors (one corridor space, 400 door gates) gets
+/// approximate in-space tables instead of 1 200² funnels, so its first
+/// route comes back at once; the route is still walked through doorways.
+#[test]
+fn a_corridor_with_hundreds_of_doors_routes_without_stalling() {
+    let nrg = nrgdb::fixtures::corridor_building(400);
+    let nav = NavMesh::new(Arc::new(nrg));
+    let r = shortest_route(
+        &nav,
+        &exact(SpaceId(10), SpaceId(409)),
+        &Budget::unlimited(),
+    )
+    .unwrap();
+    // Down through door 10000, along the wall face, up through door 10399.
+    let straight = 4.0 * 399.0;
+    assert!(
+        r[0].length_m >= straight && r[0].length_m < straight + 6.0,
+        "{}",
+        r[0].length_m
+    );
+    assert_eq!(r[0].doors, vec![SpaceId(10_000), SpaceId(10_399)]);
 }

@@ -27,6 +27,10 @@ pub(crate) struct Tree {
 /// search can pass a doorway near the side it turns to.
 pub(crate) const SAMPLES: usize = 3;
 
+/// Spaces with more gates than this get approximate in-space lengths
+/// (tree distances) instead of one funnel per pair of crossing points.
+const EXACT_TABLE_GATES: usize = 200;
+
 /// Where along a gate its crossing points lie (fractions of its free part).
 const SAMPLE_AT: [f64; SAMPLES] = [0.1, 0.5, 0.9];
 
@@ -352,6 +356,18 @@ fn table(
                 continue;
             }
             let (ti, tj) = (tree_of(i), tree_of(j));
+            if gates.len() > EXACT_TABLE_GATES {
+                // A hall with hundreds of doors: n² funnels would take
+                // minutes, so the search uses the tree's distance through
+                // edge midpoints (never below the straight line); the route
+                // it picks is still straightened exactly.
+                let lt = local[sources[j].0 as usize] as usize;
+                let through = trees[ti].cost.get(lt).copied().unwrap_or(f64::INFINITY);
+                let length = through.max(dist(sources[i].1, sources[j].1));
+                costs[i * n + j] = length;
+                costs[j * n + i] = length;
+                continue;
+            }
             let channel = if ti == tj {
                 Some(vec![sources[i].0])
             } else {
