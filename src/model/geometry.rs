@@ -65,6 +65,24 @@ pub fn polygon_centroid(ring: &[Point]) -> Option<Point> {
     Some([cx / (6.0 * area), cy / (6.0 * area)])
 }
 
+/// Distance from `p` to the segment `a`–`b`, metres.
+///
+/// ```
+/// use nrgdb::model::segment_distance;
+/// assert_eq!(segment_distance([1.0, 2.0], [0.0, 0.0], [3.0, 0.0]), 2.0);
+/// assert_eq!(segment_distance([5.0, 0.0], [0.0, 0.0], [3.0, 0.0]), 2.0);
+/// ```
+pub fn segment_distance(p: Point, a: Point, b: Point) -> f64 {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let len2 = dx * dx + dy * dy;
+    let t = if len2 > 0.0 {
+        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (p[0] - a[0] - t * dx).hypot(p[1] - a[1] - t * dy)
+}
+
 /// Whether `p` lies inside the ring (even-odd rule; points on an edge may
 /// go either way).
 ///

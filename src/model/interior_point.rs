@@ -7,7 +7,7 @@
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
-use super::geometry::{Point, point_in_ring, polygon_centroid};
+use super::geometry::{Point, point_in_ring, polygon_centroid, segment_distance};
 
 /// Signed distance from `p` to the polygon's boundary: positive inside
 /// (exterior minus holes), negative outside.
@@ -17,15 +17,7 @@ fn signed_distance(p: Point, exterior: &[Point], holes: &[Vec<Point>]) -> f64 {
     for ring in std::iter::once(exterior).chain(holes.iter().map(Vec::as_slice)) {
         let n = ring.len();
         for i in 0..n {
-            let (a, b) = (ring[i], ring[(i + 1) % n]);
-            let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-            let len2 = dx * dx + dy * dy;
-            let t = if len2 > 0.0 {
-                (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
-            } else {
-                0.0
-            };
-            best = best.min((p[0] - a[0] - t * dx).hypot(p[1] - a[1] - t * dy));
+            best = best.min(segment_distance(p, ring[i], ring[(i + 1) % n]));
         }
     }
     if inside { best } else { -best }

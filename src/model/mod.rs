@@ -17,7 +17,9 @@ mod space;
 
 pub use connection::{Connection, ConnectionKind, ConnectionPaths};
 pub use error::ModelError;
-pub use geometry::{Point, Ring, point_in_ring, polygon_area, polygon_centroid, ring_is_ccw};
+pub use geometry::{
+    Point, Ring, point_in_ring, polygon_area, polygon_centroid, ring_is_ccw, segment_distance,
+};
 pub use graph::ConnectivityGraph;
 pub use interior_point::pole_of_inaccessibility;
 pub use nrg::Nrg;

@@ -7,6 +7,7 @@
 
 use nrgdb::model::{
     Connection, ConnectionKind, Nrg, Point, Space, SpaceId, SpaceKind, point_in_ring,
+    segment_distance,
 };
 use proptest::prelude::*;
 
@@ -238,17 +239,7 @@ pub fn building() -> impl Strategy<Value = Building> {
 }
 
 fn on_edge(p: Point, ring: &[Point]) -> bool {
-    (0..ring.len()).any(|i| {
-        let (a, b) = (ring[i], ring[(i + 1) % ring.len()]);
-        let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-        let len2 = dx * dx + dy * dy;
-        let t = if len2 > 0.0 {
-            (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
-        } else {
-            0.0
-        };
-        (p[0] - a[0] - t * dx).hypot(p[1] - a[1] - t * dy) < 1e-6
-    })
+    (0..ring.len()).any(|i| segment_distance(p, ring[i], ring[(i + 1) % ring.len()]) < 1e-6)
 }
 
 /// Whether `p` lies in some space (its boundary counts as inside).

@@ -145,7 +145,7 @@ async fn route_is_osrm_shaped() {
     for corner in [[2.5, 2.0], [21.5, 2.0], [1.5, 2.0], [22.5, 2.0]] {
         let nearest = line
             .windows(2)
-            .map(|w| segment_distance(corner, w[0], w[1]))
+            .map(|w| nrgdb::model::segment_distance(corner, w[0], w[1]))
             .fold(f64::INFINITY, f64::min);
         assert!(
             nearest >= 0.2 - 1e-9,
@@ -354,15 +354,4 @@ async fn cors_is_opt_in() {
     assert_eq!(other.status, 200);
     assert!(other.header("access-control-allow-origin").is_none());
     s.stop().await;
-}
-
-fn segment_distance(p: [f64; 2], a: [f64; 2], b: [f64; 2]) -> f64 {
-    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-    let len2 = dx * dx + dy * dy;
-    let t = if len2 > 0.0 {
-        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p[0] - a[0] - t * dx).hypot(p[1] - a[1] - t * dy)
 }

@@ -362,15 +362,8 @@ impl Mesh {
     /// The edge of `t` shared with `u` as (right, left) end points seen when
     /// walking from `t` into `u`; `None` when they are not neighbours.
     pub fn portal(&self, t: u32, u: u32) -> Option<(Point, Point)> {
-        let tri = &self.tris[t as usize];
-        (0..3).find_map(|i| {
-            let next = match tri.across[i] {
-                Across::Inside(n) => n,
-                Across::Gate { tri, .. } => tri,
-                Across::Wall => return None,
-            };
-            (next == u).then(|| (self.point(tri.v[i]), self.point(tri.v[(i + 1) % 3])))
-        })
+        self.portal_vertices(t, u)
+            .map(|(a, b)| (self.point(a), self.point(b)))
     }
 
     /// [`Mesh::portal`] as vertex indices.

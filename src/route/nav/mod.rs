@@ -30,6 +30,7 @@ use self::mesh::Mesh;
 pub(crate) use self::search::Walk;
 use self::search::{End, shortest_walk};
 use super::{Budget, RouteError};
+pub(crate) use crate::model::segment_distance;
 use crate::model::{Nrg, Point, SpaceId, SpaceKind};
 
 /// How the walker moves: the clearance it keeps from walls and furniture,
@@ -284,18 +285,6 @@ pub(crate) fn distance_to_space(p: Point, s: &crate::model::Space) -> f64 {
         .flat_map(|r| (0..r.len()).map(move |i| (r[i], r[(i + 1) % r.len()])))
         .map(|(a, b)| segment_distance(p, a, b))
         .fold(f64::INFINITY, f64::min)
-}
-
-/// Distance from `p` to the segment `a`–`b`.
-pub(crate) fn segment_distance(p: Point, a: Point, b: Point) -> f64 {
-    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-    let len2 = dx * dx + dy * dy;
-    let t = if len2 > 0.0 {
-        (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p[0] - a[0] - t * dx).hypot(p[1] - a[1] - t * dy)
 }
 
 impl NavMesh {
