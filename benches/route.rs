@@ -16,6 +16,7 @@ use nrgdb::grid::{LoadOptions, load_map};
 use nrgdb::model::{Nrg, SpaceId, SpaceKind};
 use nrgdb::query::demo;
 use nrgdb::route::{Budget, NavMesh, Profile, RouteRequest, shortest_route};
+use nrgdb::sim::SplitMix64;
 
 /// 25 room pairs drawn with a fixed SplitMix64 stream.
 fn pairs(nrg: &Nrg) -> Vec<(SpaceId, SpaceId)> {
@@ -25,14 +26,8 @@ fn pairs(nrg: &Nrg) -> Vec<(SpaceId, SpaceId)> {
         .filter(|s| s.kind == SpaceKind::Room)
         .map(|s| s.id)
         .collect();
-    let mut state = 0x5EED_u64;
-    let mut next = |n: usize| {
-        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) % n as u64) as usize
-    };
+    let mut rng = SplitMix64::new(0x5EED);
+    let mut next = |n: usize| (rng.next_u64() % n as u64) as usize;
     let mut out = Vec::new();
     while out.len() < 25 && rooms.len() > 1 {
         let (a, b) = (rooms[next(rooms.len())], rooms[next(rooms.len())]);

@@ -330,22 +330,9 @@ pub(crate) fn ring_corners(ring: &RingArcs, geom: &[Vec<Corner>]) -> Vec<Corner>
 mod tests {
     use super::*;
 
-    fn image(rows: &[&str]) -> Labels {
-        let data: Vec<u32> = rows
-            .iter()
-            .flat_map(|r| r.bytes().map(|b| u32::from(b - b'0')))
-            .collect();
-        Labels {
-            width: rows[0].len() as u32,
-            height: rows.len() as u32,
-            count: data.iter().copied().max().unwrap_or(0),
-            data,
-        }
-    }
-
     #[test]
     fn a_lone_label_is_one_closed_arc() {
-        let b = trace_boundaries(&image(&["000", "011", "000"]));
+        let b = trace_boundaries(&Labels::from_digits(&["000", "011", "000"]));
         assert_eq!(b.arcs.len(), 1);
         assert_eq!(b.arcs[0].pts, [[1, 1], [3, 1], [3, 2], [1, 2], [1, 1]]);
         assert_eq!((b.arcs[0].left, b.arcs[0].right), (0, 1));
@@ -355,7 +342,7 @@ mod tests {
 
     #[test]
     fn two_labels_share_their_arc() {
-        let b = trace_boundaries(&image(&["1122", "1122"]));
+        let b = trace_boundaries(&Labels::from_digits(&["1122", "1122"]));
         // Junctions at the top and bottom of the shared edge.
         let shared: Vec<&Arc> = b
             .arcs

@@ -9,20 +9,6 @@ use crate::grid::Cell;
 
 const RES: f64 = 0.05;
 
-/// Digits per pixel (0 = no space), rows top down.
-fn image(rows: &[&str]) -> Labels {
-    let data: Vec<u32> = rows
-        .iter()
-        .flat_map(|r| r.bytes().map(|b| u32::from(b - b'0')))
-        .collect();
-    Labels {
-        width: rows[0].len() as u32,
-        height: rows.len() as u32,
-        count: data.iter().copied().max().unwrap_or(0),
-        data,
-    }
-}
-
 fn geo_polygon((ext, holes): &(Ring, Vec<Ring>)) -> Polygon {
     let line = |r: &Ring| LineString::new(r.iter().map(|p| Coord { x: p[0], y: p[1] }).collect());
     Polygon::new(line(ext), holes.iter().map(line).collect())
@@ -102,7 +88,7 @@ fn shared_edges(a: &(Ring, Vec<Ring>), b: &(Ring, Vec<Ring>)) -> usize {
 
 #[test]
 fn a_room_a_door_strip_and_a_corridor_share_their_edges() {
-    let labels = image(&[
+    let labels = Labels::from_digits(&[
         "0000000000",
         "0111102220",
         "0111132220",
@@ -139,7 +125,7 @@ fn simplified_staircases_stay_shared_without_gaps_or_overlaps() {
         rows.push(row);
     }
     let rows: Vec<&str> = rows.iter().map(String::as_str).collect();
-    let (labels, out) = tile(image(&rows), 0.2);
+    let (labels, out) = tile(Labels::from_digits(&rows), 0.2);
     // Shared arcs leave no gap: the union is one polygon without holes,
     // and only the outer corners (cut by the tolerance) lose area.
     let polys: Vec<Polygon> = out[1..].iter().map(geo_polygon).collect();
@@ -159,7 +145,7 @@ fn simplified_staircases_stay_shared_without_gaps_or_overlaps() {
 
 #[test]
 fn a_checkerboard_pinch_gives_simple_rings() {
-    let labels = image(&["000000", "011220", "011220", "012120", "022110", "000000"]);
+    let labels = Labels::from_digits(&["000000", "011220", "011220", "012120", "022110", "000000"]);
     let (labels, out) = tile(labels, 0.01);
     assert_exact_areas(&labels, &out);
     assert!(out[1].1.is_empty() && out[2].1.is_empty());
@@ -167,7 +153,7 @@ fn a_checkerboard_pinch_gives_simple_rings() {
 
 #[test]
 fn a_label_with_a_hole_shares_it_with_the_label_inside() {
-    let labels = image(&[
+    let labels = Labels::from_digits(&[
         "0000000", "0111110", "0122210", "0122010", "0111110", "0000000",
     ]);
     let (labels, out) = tile(labels, 0.01);
@@ -181,7 +167,7 @@ fn a_label_with_a_hole_shares_it_with_the_label_inside() {
 
 #[test]
 fn a_label_in_two_pieces_keeps_its_largest() {
-    let labels = image(&["00000000", "01110220", "01110210", "01110220", "00000000"]);
+    let labels = Labels::from_digits(&["00000000", "01110220", "01110210", "01110220", "00000000"]);
     let (labels, out) = tile(labels, 0.01);
     assert_exact_areas(&labels, &out);
     // The lone 1 in the 2s went to 2: labels and polygons agree.

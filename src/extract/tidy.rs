@@ -244,22 +244,9 @@ fn union(parent: &mut [usize], a: usize, b: usize) {
 mod tests {
     use super::*;
 
-    fn image(rows: &[&str]) -> Labels {
-        let data: Vec<u32> = rows
-            .iter()
-            .flat_map(|r| r.bytes().map(|b| u32::from(b - b'0')))
-            .collect();
-        Labels {
-            width: rows[0].len() as u32,
-            height: rows.len() as u32,
-            count: data.iter().copied().max().unwrap_or(0),
-            data,
-        }
-    }
-
     #[test]
     fn a_checkerboard_pinch_is_closed() {
-        let mut l = image(&["0000", "0120", "0210", "0000"]);
+        let mut l = Labels::from_digits(&["0000", "0120", "0210", "0000"]);
         assert!(tidy_labels(&mut l) > 0);
         // No 2x2 block has a diagonal pair apart from its other two pixels.
         assert_eq!(close_pinches(&mut l.clone()), 0);
@@ -268,7 +255,7 @@ mod tests {
 
     #[test]
     fn the_smaller_piece_goes_to_its_neighbour() {
-        let mut l = image(&["1110022", "1110212", "1110022"]);
+        let mut l = Labels::from_digits(&["1110022", "1110212", "1110022"]);
         tidy_labels(&mut l);
         // The lone 1 among the 2s becomes a 2.
         assert_eq!(l.data[7 + 5], 2);

@@ -23,6 +23,22 @@ pub struct Labels {
 }
 
 impl Labels {
+    /// A label image from rows of digits, top row first (tests: `"0110"`
+    /// is a row with label 1 in its middle two pixels).
+    #[cfg(test)]
+    pub(crate) fn from_digits(rows: &[&str]) -> Labels {
+        let data: Vec<u32> = rows
+            .iter()
+            .flat_map(|r| r.bytes().map(|b| u32::from(b - b'0')))
+            .collect();
+        Labels {
+            width: rows.first().map_or(0, |r| r.len() as u32),
+            height: rows.len() as u32,
+            count: data.iter().copied().max().unwrap_or(0),
+            data,
+        }
+    }
+
     /// An all-zero label image.
     pub fn new(width: u32, height: u32) -> Labels {
         Labels {

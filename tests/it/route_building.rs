@@ -9,6 +9,7 @@ use nrgdb::model::{
     Connection, ConnectionKind, Nrg, Point, Space, SpaceId, SpaceKind, point_in_ring,
     segment_distance,
 };
+use nrgdb::sim::SplitMix64;
 use proptest::prelude::*;
 
 /// A generated building and its rooms.
@@ -20,15 +21,11 @@ pub struct Building {
 
 const WALL: f64 = 0.1;
 
-struct Rng(u64);
+struct Rng(SplitMix64);
 
 impl Rng {
     fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
+        self.0.next_f64()
     }
     fn range(&mut self, lo: f64, hi: f64) -> f64 {
         // Centimetre steps keep coordinates tidy.
@@ -67,7 +64,7 @@ fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> Vec<Point> {
 
 /// One building from a seed.
 pub fn generate(seed: u64) -> Building {
-    let mut rng = Rng(seed);
+    let mut rng = Rng(SplitMix64::new(seed));
     let mut b = Builder {
         spaces: Vec::new(),
         connections: Vec::new(),

@@ -44,6 +44,8 @@ pub(crate) struct Gate {
     pub ends: [u32; 2],
     /// The triangle on each side and its space: `(tri, space)`.
     pub sides: [(u32, u32); 2],
+    /// This gate's index in `Mesh::space_gates` of each side's space.
+    pub slots: [u32; 2],
 }
 
 /// The triangulated floor.
@@ -271,6 +273,7 @@ impl Mesh {
                             gates.push(Gate {
                                 ends: [p, q],
                                 sides: [(t, space), (other, os)],
+                                slots: [0; 2],
                             });
                             (gates.len() - 1) as u32
                         });
@@ -292,9 +295,10 @@ impl Mesh {
             space_tris[tri.space as usize].push(t as u32);
         }
         let mut space_gates = vec![Vec::new(); space_ids.len()];
-        for (g, gate) in gates.iter().enumerate() {
-            for (_, s) in gate.sides {
-                space_gates[s as usize].push(g as u32);
+        for (g, gate) in gates.iter_mut().enumerate() {
+            for (side, (_, s)) in gate.sides.iter().enumerate() {
+                gate.slots[side] = space_gates[*s as usize].len() as u32;
+                space_gates[*s as usize].push(g as u32);
             }
         }
         Mesh {
@@ -377,6 +381,14 @@ impl Mesh {
             };
             (next == u).then(|| (tri.v[i], tri.v[(i + 1) % 3]))
         })
+    }
+
+    /// The index of gate `g` in `space_gates[s]`, when `s` is one of its sides.
+    pub fn slot(&self, g: u32, s: u32) -> Option<usize> {
+        let gate = self.gates.get(g as usize)?;
+        (0..2)
+            .find(|i| gate.sides[*i].1 == s)
+            .map(|i| gate.slots[i] as usize)
     }
 
     /// The dense index of a space.

@@ -191,7 +191,7 @@ pub(crate) fn shortest_walk(
             }
             let list = &mesh.space_gates[t as usize];
             let table = layer.table(mesh, t);
-            let Some(jg) = list.iter().position(|x| *x as usize == g) else {
+            let Some(jg) = mesh.slot(g as u32, t) else {
                 continue;
             };
             let src = jg * SAMPLES + k;
@@ -244,10 +244,7 @@ fn assemble(
     // The source index of node `n` in space `s`'s table.
     let index_in = |s: u32, n: u32| {
         let (g, k) = (n / SAMPLES as u32, n as usize % SAMPLES);
-        mesh.space_gates[s as usize]
-            .iter()
-            .position(|x| *x == g)
-            .map(|j| j * SAMPLES + k)
+        mesh.slot(g, s).map(|j| j * SAMPLES + k)
     };
     let mut tris: Vec<u32> = Vec::new();
     let mut spaces = vec![from.space];
@@ -332,7 +329,7 @@ pub(crate) fn anchor_distances(
             }
             let list = &mesh.space_gates[t as usize];
             let table = layer.table(mesh, t);
-            let Some(jg) = list.iter().position(|x| *x as usize == g) else {
+            let Some(jg) = mesh.slot(g as u32, t) else {
                 continue;
             };
             let src = jg * SAMPLES + k;
