@@ -30,9 +30,8 @@ use std::collections::{BTreeMap, BTreeSet, HashMap};
 use pathfinding::prelude::{Matrix, kuhn_munkres};
 
 use super::door_match::{DoorSide, door_candidates, door_sides, line_share};
-use super::door_width::convex_hull;
 use super::overlap_area::{Edges, intersection_area_of};
-use crate::model::{Nrg, Point, Ring, Space, SpaceId, polygon_area};
+use crate::model::{Nrg, Point, Ring, Space, SpaceId, convex_hull, polygon_area};
 
 /// Tuning of [`match_spaces`].
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -37,7 +37,6 @@ mod change_set;
 mod compare;
 mod detect;
 mod door_match;
-mod door_width;
 mod error;
 mod matching;
 mod overlap_area;
@@ -53,7 +52,6 @@ pub use change_set::{
 };
 pub use compare::{AlignMode, Comparison, MODEL_GRID_M, Revision, compare, model_grid};
 pub use detect::{DiffParams, diff};
-pub use door_width::door_width;
 pub use error::DiffError;
 pub use matching::{
     MatchParams, Overlaps, SpaceMatch, match_overlaps, match_spaces, overlap_iou, overlaps,
