@@ -13,6 +13,7 @@ mod support;
 
 mod demo;
 mod extract;
+mod extract_doors;
 mod extract_tiling;
 mod query;
 mod query_cli;
