@@ -56,10 +56,11 @@ pub struct WidthScores {
 /// three pixels wide holds the most pixels (1° steps; the least spread
 /// breaks ties), refined to the principal axis of that band's pixels; the
 /// stroke is the pixels within three pixels of the band's middle; along
-/// it, a whole position counts where at least half the typical (median)
-/// number of pixels is drawn, and the length is the longest run of such
-/// positions (gaps of one pixel bridged), each pixel counted whole (a run
-/// of n pixels along a row is n long).
+/// it, the length is the longest run of drawn whole positions (gaps of one
+/// pixel bridged) once its ends are trimmed to positions with at least
+/// half the typical (median) number of pixels (a waist inside the run
+/// stays), each pixel counted whole (a run of n pixels along a row is n
+/// long).
 ///
 /// ```
 /// use nrgdb::eval::{DoorLine, gt_line_length_px};
@@ -147,20 +148,24 @@ pub fn gt_line_length_px(line: &DoorLine, width: u32) -> f64 {
     let mut counts: Vec<usize> = positions.values().map(|e| e.0).collect();
     counts.sort_unstable();
     let typical = counts.get(counts.len() / 2).copied().unwrap_or(0);
-    let drawn: Vec<(i64, f64, f64)> = positions
-        .iter()
-        .filter(|(_, e)| 2 * e.0 >= typical)
-        .map(|(k, e)| (*k, e.1, e.2))
-        .collect();
-    // The longest run of drawn positions, gaps of one bridged.
-    let (mut best, mut start) = (0.0f64, None::<f64>);
-    for (i, &(k, lo_a, hi_a)) in drawn.iter().enumerate() {
-        let s0 = match (start, i.checked_sub(1).and_then(|j| drawn.get(j))) {
-            (Some(s0), Some(prev)) if k - prev.0 <= 2 => s0,
-            _ => lo_a,
-        };
-        start = Some(s0);
-        best = best.max(hi_a - s0);
+    // Runs of drawn positions (gaps of one bridged), each with its thin
+    // ends (under half the typical count: spurs) trimmed; a thin waist
+    // inside a run stays.
+    let list: Vec<(i64, usize, f64, f64)> =
+        positions.iter().map(|(k, e)| (*k, e.0, e.1, e.2)).collect();
+    let mut best = 0.0f64;
+    let mut start = 0usize;
+    for i in 0..list.len() {
+        let ends_run = list.get(i + 1).is_none_or(|next| next.0 - list[i].0 > 2);
+        if !ends_run {
+            continue;
+        }
+        let run = &list[start..=i];
+        let full = |e: &&(i64, usize, f64, f64)| 2 * e.1 >= typical;
+        if let (Some(first), Some(last)) = (run.iter().find(full), run.iter().rev().find(full)) {
+            best = best.max(last.3 - first.2);
+        }
+        start = i + 1;
     }
     // Centres span `best`; each end pixel adds half its projected size.
     best + c.abs() + s.abs()
@@ -295,6 +300,24 @@ mod tests {
         };
         let len = gt_line_length_px(&l, w);
         assert!((len - 17.0).abs() < 0.5, "{len}");
+    }
+
+    #[test]
+    fn a_waist_inside_a_thick_line_is_kept() {
+        // Five wide, 21 long, two wide for five of its positions.
+        let w = 100u32;
+        let px: Vec<u32> = (0..21u32)
+            .flat_map(|y| {
+                let cols = if (9..14).contains(&y) { 2 } else { 5 };
+                (0..cols).map(move |x| (y + 10) * w + 20 + x)
+            })
+            .collect();
+        let line = DoorLine {
+            pixels: px,
+            rooms: vec![1, 2],
+        };
+        let len = gt_line_length_px(&line, w);
+        assert!((len - 21.0).abs() < 0.5, "{len}");
     }
 
     #[test]

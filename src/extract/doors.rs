@@ -122,14 +122,13 @@ fn stretches(list: &[Crossing], w: usize, join_px: i64) -> Vec<Vec<usize>> {
 ///
 /// Where the border crosses a bounded opening, the door's line is the
 /// opening's narrowest chord ([`door_span`]) and the door is the opening
-/// from one face of the wall to the other (its [`DoorSpan`]), grown from
-/// the border's pixels over the pixels of its two regions. Where the wall
-/// is no thicker than `limits.min_depth`, or there is no opening narrower
-/// than `limits.max_width` through the border's centre, the door is the
-/// band within `limits.min_depth / 2` of the border; without an opening
-/// its line is the diameter of the widest circle on the border
-/// ([`border_line`]; `dist` is each pixel's distance to the nearest
-/// obstacle).
+/// from one face of the wall to the other (its [`DoorSpan`]): the pixels
+/// of its two regions there; the regions then settle on either side of it
+/// ([`settle_sides`]). Where there is no opening narrower than
+/// `limits.max_width` through the border's centre (open space), the door
+/// is the band within `limits.min_depth / 2` of the border and its line
+/// the diameter of the widest circle on the border ([`border_line`];
+/// `dist` is each pixel's distance to the nearest obstacle).
 pub(crate) fn cut_doors(
     labels: &Labels,
     doors: &[&Border],
@@ -139,17 +138,14 @@ pub(crate) fn cut_doors(
     let mut out = labels.clone();
     let mut lines = Vec::with_capacity(doors.len());
     let mut banded: Vec<(usize, &Border)> = Vec::new();
+    let mut spanned: Vec<(u32, &Border, DoorSpan)> = Vec::new();
     for (k, door) in doors.iter().enumerate() {
         let label = labels.count + 1 + k as u32;
         match door_span(labels, door.pair, &door.pixels, limits) {
-            // A wall thinner than the thinnest door: the band.
-            Some(span) if span.depth() <= limits.min_depth + 1e-9 => {
-                banded.push((k, door));
-                lines.push(Some(span.line));
-            }
             Some(span) => {
                 fill_span(labels, &mut out, door, &span, label);
                 lines.push(Some(span.line));
+                spanned.push((label, door, span));
             }
             None => {
                 banded.push((k, door));
@@ -158,49 +154,65 @@ pub(crate) fn cut_doors(
         }
     }
     cut_bands(labels, &mut out, &banded, limits.min_depth);
+    // Only once every door has its pixels: the regions settle around them.
+    for (label, door, span) in &spanned {
+        settle_sides(labels, &mut out, door, span, *label, limits.search + 2.0);
+    }
     out.count = labels.count + doors.len() as u32;
     (out, lines)
 }
 
 /// Labels `label` the pixels of `door`'s two regions that `span` covers
-/// and no other door has taken, grown (4-connected) from the border's
-/// covered pixels; then any border pixel still touching the other region
-/// (a border that strays out of the opening), so the door always cuts the
-/// two regions apart.
+/// and no other door has taken.
 fn fill_span(labels: &Labels, out: &mut Labels, door: &Border, span: &DoorSpan, label: u32) {
     let (w, h) = (i64::from(labels.width), i64::from(labels.height));
     let (a, b) = door.pair;
-    let xy = |p: u32| (i64::from(p) % w, i64::from(p) / w);
-    let free_for_us = |out: &Labels, j: usize| {
-        let l = labels.data[j];
-        (l == a || l == b) && out.data[j] == l
-    };
-    let mut queue: VecDeque<u32> = VecDeque::new();
-    for &p in &door.pixels {
-        let (x, y) = xy(p);
-        if free_for_us(out, p as usize) && span.covers(x, y) {
-            out.data[p as usize] = label;
-            queue.push_back(p);
+    let [x0, y0, x1, y1] = span.bounds(0.0);
+    for y in y0.max(0)..=y1.min(h - 1) {
+        for x in x0.max(0)..=x1.min(w - 1) {
+            let j = (y * w + x) as usize;
+            let l = labels.data[j];
+            if (l == a || l == b) && out.data[j] == l && span.covers(x, y) {
+                out.data[j] = label;
+            }
         }
     }
-    while let Some(p) = queue.pop_front() {
-        let (x, y) = xy(p);
-        for (dx, dy) in [(-1, 0), (1, 0), (0, -1), (0, 1)] {
-            let (nx, ny) = (x + dx, y + dy);
-            if nx < 0 || ny < 0 || nx >= w || ny >= h {
+}
+
+/// After the doors are cut: where `door`'s border lay beside its opening
+/// (within `reach` of a face, between the jambs), its regions' pixels on
+/// the wrong side of the door (`label`) change sides, so the regions meet
+/// at the door; then any border pixel still touching the other region (a
+/// border that strays out of the opening) joins the door, so it always
+/// cuts the two regions apart.
+fn settle_sides(
+    labels: &Labels,
+    out: &mut Labels,
+    door: &Border,
+    span: &DoorSpan,
+    label: u32,
+    reach: f64,
+) {
+    let (w, h) = (i64::from(labels.width), i64::from(labels.height));
+    let (a, b) = door.pair;
+    let [x0, y0, x1, y1] = span.bounds(reach);
+    for y in y0.max(0)..=y1.min(h - 1) {
+        for x in x0.max(0)..=x1.min(w - 1) {
+            let j = (y * w + x) as usize;
+            if out.data[j] != labels.data[j] {
                 continue;
             }
-            let j = (ny * w + nx) as usize;
-            if free_for_us(out, j) && span.covers(nx, ny) {
-                out.data[j] = label;
-                queue.push_back(j as u32);
+            match (span.side(x, y, reach), labels.data[j]) {
+                (Some(true), l) if l == a => out.data[j] = b,
+                (Some(false), l) if l == b => out.data[j] = a,
+                _ => {}
             }
         }
     }
     for &p in &door.pixels {
-        let (x, y) = xy(p);
-        let mine = labels.data[p as usize];
-        if out.data[p as usize] != mine {
+        let (x, y) = (i64::from(p) % w, i64::from(p) / w);
+        let mine = out.data[p as usize];
+        if mine != a && mine != b {
             continue;
         }
         let other = if mine == a { b } else { a };

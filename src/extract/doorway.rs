@@ -48,21 +48,64 @@ pub(crate) struct DoorSpan {
 }
 
 impl DoorSpan {
-    /// How deep the door is across the doorway, in pixels.
-    pub fn depth(&self) -> f64 {
-        self.t[1] - self.t[0]
-    }
-
-    /// Whether the pixel `(x, y)`'s centre lies in the door's rectangle.
-    pub fn covers(&self, x: i64, y: i64) -> bool {
+    /// The pixel `(x, y)`'s centre in the span's frame: `(s, t)`.
+    fn frame(&self, x: i64, y: i64) -> (f64, f64) {
         let q = [
             x as f64 + 0.5 - self.origin[0],
             y as f64 + 0.5 - self.origin[1],
         ];
-        let s = q[0] * self.u[0] + q[1] * self.u[1];
-        let t = q[0] * self.n[0] + q[1] * self.n[1];
+        (
+            q[0] * self.u[0] + q[1] * self.u[1],
+            q[0] * self.n[0] + q[1] * self.n[1],
+        )
+    }
+
+    /// Whether the pixel `(x, y)`'s centre lies in the door's rectangle.
+    pub fn covers(&self, x: i64, y: i64) -> bool {
+        let (s, t) = self.frame(x, y);
         (self.s[0] - 1e-9..=self.s[1] + 1e-9).contains(&s)
             && (self.t[0] - 1e-9..=self.t[1] + 1e-9).contains(&t)
+    }
+
+    /// Which side of the door the pixel `(x, y)` is on, if its centre lies
+    /// in the opening's width within `reach` beyond a face: `Some(false)`
+    /// behind (the border's first region's side), `Some(true)` in front.
+    pub fn side(&self, x: i64, y: i64, reach: f64) -> Option<bool> {
+        let (s, t) = self.frame(x, y);
+        if !(self.s[0] - 1e-9..=self.s[1] + 1e-9).contains(&s) {
+            return None;
+        }
+        if t > self.t[1] + 1e-9 && t <= self.t[1] + reach {
+            Some(true)
+        } else if t < self.t[0] - 1e-9 && t >= self.t[0] - reach {
+            Some(false)
+        } else {
+            None
+        }
+    }
+
+    /// The pixels whose centres may lie within `reach` of the rectangle,
+    /// `[x0, y0, x1, y1]` (inclusive, unclipped).
+    pub fn bounds(&self, reach: f64) -> [i64; 4] {
+        let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
+        for s in self.s {
+            for t in [self.t[0] - reach, self.t[1] + reach] {
+                let c = [
+                    self.origin[0] + s * self.u[0] + t * self.n[0],
+                    self.origin[1] + s * self.u[1] + t * self.n[1],
+                ];
+                for k in 0..2 {
+                    lo[k] = lo[k].min(c[k]);
+                    hi[k] = hi[k].max(c[k]);
+                }
+            }
+        }
+        [
+            lo[0].floor() as i64 - 1,
+            lo[1].floor() as i64 - 1,
+            hi[0].ceil() as i64,
+            hi[1].ceil() as i64,
+        ]
     }
 }
 

@@ -119,6 +119,14 @@ pub struct Door {
 }
 
 impl Door {
+    /// The doorway line: from one jamb to the other through the middle of
+    /// the wall.
+    pub fn doorway(&self) -> [Point; 2] {
+        let [f, g] = &self.faces;
+        let mid = |p: Point, q: Point| [(p[0] + q[0]) / 2.0, (p[1] + q[1]) / 2.0];
+        [mid(f[0], g[0]), mid(f[1], g[1])]
+    }
+
     /// The centre of the doorway.
     pub fn centre(&self) -> Point {
         let [f, g] = &self.faces;
@@ -269,6 +277,7 @@ impl FloorPlan {
         for (s, d) in spaces.iter_mut().skip(anchors.len()).zip(&self.doors) {
             s.attributes
                 .insert("width_m".into(), Value::from(round_mm(d.width_m)));
+            s.doorway = Some(d.doorway());
         }
         for o in &self.openings {
             let (a, b) = (SpaceRef::Corridor(o.a), SpaceRef::Corridor(o.b));
@@ -368,6 +377,17 @@ mod tests {
             );
             for s in nrg.spaces() {
                 assert!(s.area_m2 > 0.0, "seed {seed}: {} has no area", s.label());
+            }
+            // Each door's doorway runs jamb to jamb: as long as it is wide,
+            // its middle the door's anchor.
+            for s in nrg.spaces().iter().filter(|s| s.kind == SpaceKind::Door) {
+                let d = crate::model::doorway(s).unwrap();
+                assert!(
+                    (d.length_m() - d.width_m).abs() < 1e-3,
+                    "seed {seed}: {d:?}"
+                );
+                let m = d.middle();
+                assert!(distance(m, s.anchor) < 1e-9, "seed {seed}: {d:?}");
             }
         }
     }
