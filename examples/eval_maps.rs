@@ -1,6 +1,7 @@
 //! Runs `nrgdb eval` over every map in the shared map set that has a ground
 //! truth (`<name>_gt.png` next to `<name>.yaml`) and prints a per-map table
-//! and the means, plain and furnished separately.
+//! (with the door width error's median and p90 in metres) and the means,
+//! plain and furnished separately.
 //!
 //! ```text
 //! cargo run --release --example eval_maps [-- MAPS_DIR [--method ccl] [--params p.toml] [--pictures OUT_DIR]]
@@ -43,9 +44,22 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .collect();
     names.sort();
     println!(
-        "{:<32} {:>6} {:>6} {:>6} {:>6} | {:>6} {:>6} | {:>6} {:>6} | {:>5} {:>7}",
-        "map", "R", "P", "Rmac", "Pmac", "doorR", "doorP", "connR", "connP", "rooms", "ms"
+        "{:<32} {:>6} {:>6} {:>6} {:>6} | {:>6} {:>6} | {:>6} {:>6} | {:>5} {:>5} | {:>5} {:>7}",
+        "map",
+        "R",
+        "P",
+        "Rmac",
+        "Pmac",
+        "doorR",
+        "doorP",
+        "connR",
+        "connP",
+        "wMed",
+        "wP90",
+        "rooms",
+        "ms"
     );
+    let metres = |v: Option<f64>| v.map_or_else(|| "-".to_string(), |m| format!("{m:.3}"));
     let mut groups: [(Vec<Evaluation>, &str); 3] = [
         (Vec::new(), "plain (IPA)"),
         (Vec::new(), "furnished (IPA)"),
@@ -65,7 +79,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let ms = t.elapsed().as_secs_f64() * 1e3;
         let e = evaluate(&gt, &x, grid.resolution);
         println!(
-            "{:<32} {:>6.2} {:>6.2} {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>5} {:>7.1}",
+            "{:<32} {:>6.2} {:>6.2} {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>5} {:>5} | {:>5} {:>7.1}",
             name,
             100.0 * e.rooms.recall_micro,
             100.0 * e.rooms.precision_micro,
@@ -75,6 +89,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             100.0 * e.doors.precision,
             100.0 * e.connections.recall,
             100.0 * e.connections.precision,
+            metres(e.widths.median_m),
+            metres(e.widths.p90_m),
             format!("{}/{}", e.rooms.segments, e.rooms.gt_rooms),
             ms
         );
@@ -98,8 +114,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
         let n = evals.len() as f64;
         let mean = |f: &dyn Fn(&Evaluation) -> f64| 100.0 * evals.iter().map(f).sum::<f64>() / n;
+        // Door width errors: the worst map's.
+        let worst = |f: &dyn Fn(&Evaluation) -> Option<f64>| {
+            metres(evals.iter().filter_map(f).reduce(f64::max))
+        };
         println!(
-            "mean {:<27} {:>6.2} {:>6.2} {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | n={}",
+            "mean {:<27} {:>6.2} {:>6.2} {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>5} {:>5} | n={} (w: worst)",
             label,
             mean(&|e| e.rooms.recall_micro),
             mean(&|e| e.rooms.precision_micro),
@@ -109,6 +129,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             mean(&|e| e.doors.precision),
             mean(&|e| e.connections.recall),
             mean(&|e| e.connections.precision),
+            worst(&|e| e.widths.median_m),
+            worst(&|e| e.widths.p90_m),
             evals.len()
         );
     }

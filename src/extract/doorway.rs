@@ -174,11 +174,10 @@ fn border_frame(labels: &Labels, pair: (u32, u32), pixels: &[u32]) -> Option<([f
         }
         for (dx, dy) in [(1i64, 0i64), (-1, 0), (0, 1), (0, -1)] {
             let (nx, ny) = (x as i64 + dx, y as i64 + dy);
-            if nx >= 0 && ny >= 0 && (nx as usize) < w && (ny as usize) < h {
-                if labels.data[ny as usize * w + nx as usize] == pair.1 {
-                    n[0] += dx as f64;
-                    n[1] += dy as f64;
-                }
+            let inside = nx >= 0 && ny >= 0 && (nx as usize) < w && (ny as usize) < h;
+            if inside && labels.data[ny as usize * w + nx as usize] == pair.1 {
+                n[0] += dx as f64;
+                n[1] += dy as f64;
             }
         }
     }

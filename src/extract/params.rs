@@ -124,10 +124,13 @@ pub struct ExtractParams {
     /// Walls thicker than this hold no doorway gaps (a longer narrow
     /// passage is a corridor). Default 1.2 m.
     pub wall_thickness_max_m: f64,
-    /// Thickness of a door space across the doorway. Default 0.1 m: a door
-    /// is a transition, and a thick one takes floor from the rooms it
-    /// joins (room recall on the IPA maps 95.98 % at 0.3 m, 96.72 % at
-    /// 0.1 m). The diff matches doors by their doorway line, not their
+    /// Least thickness of a door space across the doorway. A door spans
+    /// its doorway from one face of the wall to the other, so it is as
+    /// thick as the wall, and at least this where the wall is thinner, the
+    /// opening is a passage running on past 0.7 m (a corridor stub: the door
+    /// stays at its mouth) or the border crosses open space. Default 0.1 m:
+    /// a door is a transition, and a thick one takes floor from the rooms
+    /// it joins. The diff matches doors by their doorway line, not their
     /// area, so thin doors are no harder to follow across revisions.
     pub door_depth_m: f64,
     /// A passage narrower than `door_width_max_m` and at least this long
