@@ -12,6 +12,7 @@ mod sim_accuracy;
 mod support;
 
 mod demo;
+mod doorway_formats;
 mod extract;
 mod extract_doors;
 mod extract_tiling;
