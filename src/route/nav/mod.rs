@@ -15,9 +15,11 @@
 //! `rstar`; knows nothing of queries, storage or HTTP.
 
 mod clearance;
+mod dead_ends;
 mod funnel;
 pub(crate) mod layer;
 pub(crate) mod mesh;
+mod openings;
 mod search;
 
 use std::collections::HashMap;
@@ -144,15 +146,10 @@ fn door_widths(nrg: &Nrg, mesh: &Mesh) -> Vec<f64> {
                 return w;
             }
             let mut by_side: HashMap<u32, f64> = HashMap::new();
-            for g in &mesh.space_gates[s] {
-                let gate = &mesh.gates[*g as usize];
-                let other = if gate.sides[0].1 == s as u32 {
-                    gate.sides[1].1
-                } else {
-                    gate.sides[0].1
-                };
-                let [a, b] = gate.ends.map(|v| mesh.point(v));
-                *by_side.entry(other).or_default() += funnel::dist(a, b);
+            let openings = &mesh.openings;
+            for o in &openings.of_space[s] {
+                let other = openings.other_side(*o, s as u32);
+                *by_side.entry(other).or_default() += openings.list[*o as usize].length(mesh);
             }
             by_side.values().copied().fold(0.0, f64::max)
         })

@@ -1,0 +1,213 @@
+//! Openings: the gates between two spaces joined into the runs a walker
+//! sees as one doorway. A doorway whose outline follows pixel edges is a
+//! staircase of dozens of short triangle edges; searching over each edge
+//! would scan them all at every step, so the search works on openings
+//! instead: maximal chains of gate edges between the same two spaces,
+//! broken where a wall touches the chain.
+
+use std::collections::{HashMap, HashSet};
+
+use super::funnel::dist;
+use super::mesh::{Mesh, NONE};
+use crate::model::Point;
+
+/// One opening between two spaces.
+#[derive(Debug, Clone)]
+pub(crate) struct Opening {
+    /// Its gate edges in order along the chain.
+    pub gates: Vec<u32>,
+    /// The chain's vertices (one more than `gates`).
+    pub vertices: Vec<u32>,
+    /// The two spaces it joins (dense indices).
+    pub sides: [u32; 2],
+    /// This opening's index in `Openings::of_space` of each side's space.
+    pub slots: [u32; 2],
+}
+
+/// Every opening of a mesh and each space's openings.
+#[derive(Debug, Default)]
+pub(crate) struct Openings {
+    /// All openings.
+    pub list: Vec<Opening>,
+    /// The openings of each space (dense index).
+    pub of_space: Vec<Vec<u32>>,
+}
+
+impl Openings {
+    /// Joins the gates of `mesh` into openings.
+    pub fn new(mesh: &Mesh) -> Openings {
+        let mut by_pair: HashMap<(u32, u32), Vec<u32>> = HashMap::new();
+        for (g, gate) in mesh.gates.iter().enumerate() {
+            let (a, b) = (gate.sides[0].1, gate.sides[1].1);
+            by_pair
+                .entry((a.min(b), a.max(b)))
+                .or_default()
+                .push(g as u32);
+        }
+        let mut pairs: Vec<((u32, u32), Vec<u32>)> = by_pair.into_iter().collect();
+        pairs.sort_unstable();
+        let mut list = Vec::new();
+        for ((a, b), gates) in pairs {
+            for (gates, vertices) in chains(mesh, &gates) {
+                list.push(Opening {
+                    gates,
+                    vertices,
+                    sides: [a, b],
+                    slots: [0; 2],
+                });
+            }
+        }
+        let mut of_space = vec![Vec::new(); mesh.space_ids.len()];
+        for (o, opening) in list.iter_mut().enumerate() {
+            for side in 0..2 {
+                let s = opening.sides[side] as usize;
+                opening.slots[side] = of_space[s].len() as u32;
+                of_space[s].push(o as u32);
+            }
+        }
+        Openings { list, of_space }
+    }
+
+    /// The index of opening `o` in `of_space[s]`, when `s` is one of its
+    /// sides.
+    pub fn slot(&self, o: u32, s: u32) -> Option<usize> {
+        let opening = self.list.get(o as usize)?;
+        (0..2)
+            .find(|i| opening.sides[*i] == s)
+            .map(|i| opening.slots[i] as usize)
+    }
+
+    /// The space across opening `o` from `s`.
+    pub fn other_side(&self, o: u32, s: u32) -> u32 {
+        let [a, b] = self.list[o as usize].sides;
+        if a == s { b } else { a }
+    }
+}
+
+impl Opening {
+    /// Its length along the chain.
+    pub fn length(&self, mesh: &Mesh) -> f64 {
+        self.vertices
+            .windows(2)
+            .map(|w| dist(mesh.point(w[0]), mesh.point(w[1])))
+            .sum()
+    }
+
+    /// Whether a disc of radius `r` passes: the chain is at least `r` long
+    /// for each end that touches a wall.
+    pub fn open(&self, mesh: &Mesh, r: f64) -> bool {
+        if r <= 0.0 {
+            return true;
+        }
+        self.length(mesh) >= self.walled_ends(mesh) * r
+    }
+
+    fn walled_ends(&self, mesh: &Mesh) -> f64 {
+        let end = |v: Option<&u32>| v.is_some_and(|v| mesh.obstacle[*v as usize]);
+        f64::from(u8::from(end(self.vertices.first())) + u8::from(end(self.vertices.last())))
+    }
+
+    /// The points at fractions `at` of the part of the chain at least `r`
+    /// from a walled end, each with the gate edge it lies on.
+    pub fn crossings<const N: usize>(
+        &self,
+        mesh: &Mesh,
+        at: [f64; N],
+        r: f64,
+    ) -> [(u32, Point); N] {
+        let points: Vec<Point> = self.vertices.iter().map(|v| mesh.point(*v)).collect();
+        let mut cumulative = vec![0.0];
+        for w in points.windows(2) {
+            let last = cumulative.last().copied().unwrap_or(0.0);
+            cumulative.push(last + dist(w[0], w[1]));
+        }
+        let len = cumulative.last().copied().unwrap_or(0.0);
+        let inset = |v: Option<&u32>| {
+            if v.is_some_and(|v| mesh.obstacle[*v as usize]) {
+                r
+            } else {
+                0.0
+            }
+        };
+        let (lo, hi) = (
+            inset(self.vertices.first()),
+            len - inset(self.vertices.last()),
+        );
+        let (lo, hi) = if lo <= hi {
+            (lo, hi)
+        } else {
+            (len / 2.0, len / 2.0)
+        };
+        at.map(|f| {
+            let s = lo + f * (hi - lo);
+            let i = cumulative
+                .windows(2)
+                .position(|w| s <= w[1])
+                .unwrap_or(self.gates.len().saturating_sub(1));
+            let (a, b) = (points[i], points[i + 1]);
+            let seg = cumulative[i + 1] - cumulative[i];
+            let t = if seg > 0.0 {
+                ((s - cumulative[i]) / seg).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            (
+                self.gates[i],
+                [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])],
+            )
+        })
+    }
+}
+
+/// The chains of `gates` (all between the same two spaces): edges joined
+/// at vertices that no wall touches and that no third edge of the set
+/// meets. Each chain as its gates and its vertices in order.
+fn chains(mesh: &Mesh, gates: &[u32]) -> Vec<(Vec<u32>, Vec<u32>)> {
+    let mut at_vertex: HashMap<u32, Vec<u32>> = HashMap::new();
+    for g in gates {
+        for v in mesh.gates[*g as usize].ends {
+            at_vertex.entry(v).or_default().push(*g);
+        }
+    }
+    let joins =
+        |v: u32| !mesh.obstacle[v as usize] && at_vertex.get(&v).is_some_and(|l| l.len() == 2);
+    let mut used: HashSet<u32> = HashSet::new();
+    let mut out = Vec::new();
+    // Open chains first (from an end that does not join), then loops.
+    let starts: Vec<(u32, u32)> = gates
+        .iter()
+        .flat_map(|g| mesh.gates[*g as usize].ends.map(|v| (*g, v)))
+        .filter(|(_, v)| !joins(*v))
+        .chain(gates.iter().map(|g| (*g, mesh.gates[*g as usize].ends[0])))
+        .collect();
+    for (first, start) in starts {
+        if used.contains(&first) {
+            continue;
+        }
+        let mut chain = vec![first];
+        let mut vertices = vec![start];
+        used.insert(first);
+        let mut g = first;
+        let mut v = start;
+        loop {
+            let [p, q] = mesh.gates[g as usize].ends;
+            v = if p == v { q } else { p };
+            vertices.push(v);
+            if !joins(v) {
+                break;
+            }
+            let next = at_vertex
+                .get(&v)
+                .and_then(|l| l.iter().copied().find(|h| *h != g))
+                .unwrap_or(NONE);
+            if next == NONE || used.contains(&next) {
+                break;
+            }
+            used.insert(next);
+            chain.push(next);
+            g = next;
+        }
+        out.push((chain, vertices));
+    }
+    out
+}
