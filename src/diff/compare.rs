@@ -15,8 +15,9 @@ use serde::Serialize;
 
 use super::align::{AlignParams, Alignment, align_grids, alignment_quality};
 use super::change_set::ChangeSet;
-use super::detect::{DiffParams, diff};
+use super::detect::diff;
 use super::error::DiffError;
+use super::params::DiffParams;
 use super::transform::RigidTransform;
 use crate::grid::{Cell, OccupancyGrid};
 use crate::model::{Nrg, point_in_ring};

@@ -41,6 +41,8 @@ mod door_width;
 mod error;
 mod matching;
 mod overlap_area;
+mod overlaps;
+mod params;
 mod report;
 mod split_merge;
 mod transform;
@@ -52,11 +54,11 @@ pub use change_set::{
     SpaceChangeKind, Split, Summary,
 };
 pub use compare::{AlignMode, Comparison, MODEL_GRID_M, Revision, compare, model_grid};
-pub use detect::{DiffParams, diff};
+pub use detect::diff;
 pub use door_width::door_width;
 pub use error::DiffError;
-pub use matching::{
-    MatchParams, Overlaps, SpaceMatch, match_overlaps, match_spaces, overlap_iou, overlaps,
-};
+pub use matching::{SpaceMatch, match_overlaps, match_spaces, overlap_iou, overlaps};
+pub use overlaps::Overlaps;
+pub use params::{DiffParams, MatchParams};
 pub use report::ChangeRow;
 pub use transform::RigidTransform;
