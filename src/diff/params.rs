@@ -1,7 +1,10 @@
-//! The thresholds of change detection ([`DiffParams`]) and of space
-//! matching ([`MatchParams`]), in their own file so that the detector, the
-//! matcher, the door matcher and the split/merge finder can all read them
-//! without importing one another.
+//! Everything that tunes a comparison besides the two revisions: the
+//! thresholds of change detection ([`DiffParams`]), of space matching
+//! ([`MatchParams`]) and of alignment ([`AlignParams`]), when to align
+//! ([`AlignMode`]), and all of these together ([`DiffOptions`], what
+//! [`compare`](super::compare) takes). In their own file so that the
+//! detector, the matcher, the door matcher, the split/merge finder and the
+//! aligner can all read them without importing one another.
 //!
 //! Uses the diff error type only.
 
@@ -129,4 +132,62 @@ impl DiffParams {
         }
         Ok(())
     }
+}
+
+/// Tuning of [`align_grids`](super::align_grids).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct AlignParams {
+    /// Half-width of the translation search around the centroid fit, m
+    /// (default 4).
+    pub search_m: f64,
+    /// Wall points used (evenly subsampled; default 2000).
+    pub max_points: usize,
+    /// A wall point is an inlier within this distance of a reference wall;
+    /// `None`: twice the coarser map resolution.
+    pub inlier_tol_m: Option<f64>,
+    /// Smallest inlier share accepted (default 0.5).
+    pub min_inliers: f64,
+    /// A second, different fit this close to the best makes the alignment
+    /// ambiguous (default 0.05).
+    pub ambiguity_margin: f64,
+}
+
+impl Default for AlignParams {
+    fn default() -> Self {
+        AlignParams {
+            search_m: 4.0,
+            max_points: 2000,
+            inlier_tol_m: None,
+            min_inliers: 0.5,
+            ambiguity_margin: 0.05,
+        }
+    }
+}
+
+/// When to align B to A before comparing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum AlignMode {
+    /// Never: the two share a frame.
+    Never,
+    /// When their frames differ (see [`compare`](super::compare)).
+    #[default]
+    Auto,
+    /// Always.
+    Always,
+}
+
+/// What decides a change set besides the two revisions: when to align,
+/// the detection thresholds and the alignment tuning. Every entry point
+/// (CLI, query `DIFF`, server, renderer, viewer) passes one to
+/// [`compare`](super::compare); the default is what they use unless told
+/// otherwise.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct DiffOptions {
+    /// When to align B to A.
+    pub align: AlignMode,
+    /// Thresholds of the change detector.
+    pub params: DiffParams,
+    /// Tuning of the alignment.
+    pub align_params: AlignParams,
 }
