@@ -35,7 +35,7 @@ pub struct Args {
     #[arg(long, num_args = 2, value_names = ["FROM", "TO"])]
     pub route: Option<Vec<String>>,
     /// Draw what changed from A to B (revision numbers of the map, NAME@REV,
-    /// or model files); the picture shows B.
+    /// or model files); the picture shows B with the change set of `nrgdb diff A B`.
     #[arg(long, num_args = 2, value_names = ["A", "B"])]
     pub diff: Option<Vec<String>>,
     /// Pixels per metre [default: the longer side about 1200 px].

@@ -21,10 +21,10 @@ pub struct MatchParams {
     pub min_iou: f64,
     /// Largest distance in metres between the centres of two doors'
     /// doorway lines for them to be the same door (they must also join
-    /// the same spaces; see [`super::door_match`]). The default 0.5 m
-    /// absorbs re-cutting and alignment error and a door widened by up to
-    /// a metre on one side; a door moved farther along its wall, or to
-    /// another wall, is removed and added.
+    /// the same spaces; see the door matcher, `diff/door_match.rs`). The
+    /// default 0.5 m absorbs re-cutting and alignment error and a door
+    /// widened by up to a metre on one side; a door moved farther along
+    /// its wall, or to another wall, is removed and added.
     pub door_shift_m: f64,
 }
 
@@ -60,7 +60,7 @@ pub struct DiffParams {
     pub door_width_tol_m: f64,
     /// Two doors joining the same spaces are the same door when their
     /// doorway centres lie at most this far apart (default 0.5 m, as the
-    /// store's matcher; see [`super::door_match`]).
+    /// store's matcher; see the door matcher, `diff/door_match.rs`).
     pub door_shift_m: f64,
 }
 

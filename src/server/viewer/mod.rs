@@ -39,7 +39,7 @@ pub const SVG_PARAMS: [ParamDoc; 3] = [
         "diff",
         "string",
         false,
-        "draw what changed since this revision number",
+        "draw what changed since this revision number (the change set of GET /maps/{map}/diff?from=A&to=rev, aligned when the frames differ)",
     ),
     q(
         "map",
