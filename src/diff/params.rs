@@ -6,7 +6,8 @@
 //! detector, the matcher, the door matcher, the split/merge finder and the
 //! aligner can all read them without importing one another.
 //!
-//! Uses the diff error type only.
+//! Uses the diff error type only; must not use the other diff files (they
+//! all read this one), so no two of them import each other in a circle.
 
 use serde::{Deserialize, Serialize};
 
