@@ -7,13 +7,15 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr};
+use nrgdb::diff::{DiffOptions, compare};
 use nrgdb::grid::{LoadOptions, OccupancyGrid, load_map};
 use nrgdb::model::{Nrg, SpaceId};
+use nrgdb::query::LoadedRevision;
 use nrgdb::render::{LabelMode, RenderOptions, RouteOverlay, Scene, diff_overlay, render_svg};
 use nrgdb::route::{Budget, NavMesh, RouteRequest, shortest_route};
 
 use super::db::{DbArg, parse_map_rev};
-use super::load_model;
+use super::diff::load_file;
 
 /// Draw a model as a picture: each space filled by its kind over the
 /// occupancy map, the graph with labels, optionally a route or the changes
@@ -33,7 +35,7 @@ pub struct Args {
     #[arg(long, num_args = 2, value_names = ["FROM", "TO"])]
     pub route: Option<Vec<String>>,
     /// Draw what changed from A to B (revision numbers of the map, NAME@REV,
-    /// or model files); the picture shows B.
+    /// or model files); the picture shows B with the change set of `nrgdb diff A B`.
     #[arg(long, num_args = 2, value_names = ["A", "B"])]
     pub diff: Option<Vec<String>>,
     /// Pixels per metre [default: the longer side about 1200 px].
@@ -64,11 +66,17 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
             };
             let old = resolve(a, Some(&base), &args.db)?;
             let new = resolve(b, Some(&base), &args.db)?;
-            let overlay = diff_overlay(&old.nrg, &new.nrg);
-            let title = format!("{} -> {}", old.title, new.title);
-            (new.nrg, title, Some(overlay))
+            // The change set of `nrgdb diff A B`, drawn over B.
+            let done = compare(old.rev.side(), new.rev.side(), &DiffOptions::default())
+                .into_diagnostic()
+                .wrap_err_with(|| {
+                    format!("--diff: comparing {} with {}", old.rev.label, new.rev.label)
+                })?;
+            let overlay = diff_overlay(&done.changes, &old.rev.nrg, &new.rev.nrg);
+            let title = format!("{} -> {}", old.rev.label, new.rev.label);
+            (new.rev.nrg, title, Some(overlay))
         }
-        None => (base.nrg, base.title, None),
+        None => (base.rev.nrg, base.rev.label, None),
     };
     let map = background.as_deref().map(load_grid).transpose()?;
     let route = match &args.route {
@@ -171,10 +179,10 @@ pub fn write_picture(path: &Path, format: PictureFormat, scene: &Scene<'_>) -> m
         .wrap_err_with(|| format!("{}: cannot write", path.display()))
 }
 
-/// A model to draw, where it came from, and its map when it is one.
+/// A model to draw (labelled with where it came from, with the grid it
+/// was extracted from when known), and its map when it is one.
 struct Resolved {
-    nrg: Nrg,
-    title: String,
+    rev: LoadedRevision,
     /// The map's name in the database (for `--diff 1 3`).
     map_name: Option<String>,
     /// A .yaml occupancy map the model was extracted from.
@@ -191,10 +199,7 @@ fn resolve(spec: &str, base: Option<&Resolved>, db: &DbArg) -> miette::Result<Re
             .and_then(|e| e.to_str())
             .is_some_and(|e| e.eq_ignore_ascii_case("yaml") || e.eq_ignore_ascii_case("yml"));
         return Ok(Resolved {
-            nrg: load_model(path)?.nrg,
-            title: path
-                .file_name()
-                .map_or_else(|| spec.to_string(), |n| n.to_string_lossy().into_owned()),
+            rev: load_file(path)?,
             map_name: None,
             map_yaml: is_yaml.then(|| path.to_path_buf()),
         });
@@ -224,13 +229,11 @@ fn resolve(spec: &str, base: Option<&Resolved>, db: &DbArg) -> miette::Result<Re
                 db.db.display()
             )
         })?;
-    let nrg = store
-        .load(&name, Some(info.seq))
+    let rev = LoadedRevision::load(&store, &name, u64::from(info.seq))
         .into_diagnostic()
         .wrap_err_with(|| format!("loading {name}@{}", info.seq))?;
     Ok(Resolved {
-        nrg,
-        title: format!("{name}@{}", info.seq),
+        rev,
         map_name: Some(name),
         map_yaml: None,
     })

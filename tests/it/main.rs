@@ -24,7 +24,9 @@ mod route_props;
 
 mod diff_cli;
 mod diff_edits;
+mod diff_entry_points;
 mod diff_props;
+mod diff_self;
 mod diff_shared;
 mod diff_support;
 mod render_cli;

@@ -1,5 +1,6 @@
 //! `GET /maps/{map}/diff?from=&to=&align=`: what changed between two
-//! revisions of a map ([`crate::diff::compare`]: spaces added, removed,
+//! revisions of a map ([`crate::query::compare_revisions`], the change-set
+//! service on the revisions and their stored grids: spaces added, removed,
 //! resized, split, merged, re-kinded, renamed; connections; door widths),
 //! aligning the two when their frames differ.
 
@@ -9,7 +10,8 @@ use axum::http::Uri;
 use serde_json::{Value, json};
 
 use super::{ParamDoc, q};
-use crate::diff::{AlignMode, AlignParams, DiffError, DiffParams, Revision, compare};
+use crate::diff::{AlignMode, DiffError, DiffOptions};
+use crate::query::{QueryError, SourceError, compare_revisions};
 use crate::server::error::ApiError;
 use crate::server::params::{Params, parse_rev};
 use crate::server::state::AppState;
@@ -57,6 +59,22 @@ fn named(name: &str, e: StoreError) -> ApiError {
     }
 }
 
+/// A failed comparison as an API error: no reliable alignment is the
+/// caller's to fix (a 400 naming `parameter`, with `hint`), a busy store a
+/// 503, anything else ours.
+pub fn comparing_error(e: QueryError, parameter: &'static str, hint: &str) -> ApiError {
+    match e {
+        QueryError::Diff(e @ (DiffError::Unreliable { .. } | DiffError::TooFewWalls { .. })) => {
+            ApiError::bad(parameter, format!("{e} ({hint})"))
+        }
+        QueryError::Source(SourceError::Backend(e)) => match e.downcast::<StoreError>() {
+            Ok(e) => (*e).into(),
+            Err(e) => ApiError::Internal(format!("loading a revision: {e}")),
+        },
+        other => ApiError::Internal(other.to_string()),
+    }
+}
+
 /// `GET /maps/{map}/diff`.
 pub async fn diff(
     State(state): State<AppState>,
@@ -79,33 +97,22 @@ pub async fn diff(
                 .revision(&map, to)
                 .map_err(|e| named("to", e))?
                 .seq;
-            let a = ctx.revision(&map, Some(a_seq))?;
-            let b = ctx.revision(&map, Some(b_seq))?;
-            let ga = ctx.store().grid(&map, Some(a_seq))?;
-            let gb = ctx.store().grid(&map, Some(b_seq))?;
-            let done = compare(
-                Revision {
-                    nrg: &a.nrg,
-                    grid: ga.as_ref(),
-                },
-                Revision {
-                    nrg: &b.nrg,
-                    grid: gb.as_ref(),
-                },
-                mode,
-                &DiffParams::default(),
-                &AlignParams::default(),
+            let options = DiffOptions {
+                align: mode,
+                ..DiffOptions::default()
+            };
+            let done = compare_revisions(
+                &*ctx.store(),
+                &map,
+                u64::from(a_seq),
+                u64::from(b_seq),
+                &options,
             )
-            .map_err(|e| match e {
-                DiffError::Unreliable { .. } | DiffError::TooFewWalls { .. } => ApiError::bad(
-                    "align",
-                    format!("{e} (align=never compares the revisions as they are)"),
-                ),
-                other => ApiError::Internal(other.to_string()),
-            })?;
-            let mut changes = done.changes;
-            changes.from = Some(format!("{map}@{a_seq}"));
-            changes.to = Some(format!("{map}@{b_seq}"));
+            .map_err(|e| {
+                comparing_error(e, "align", "align=never compares the revisions as they are")
+            })?
+            .comparison;
+            let changes = done.changes;
             // The transform itself is in `changes.alignment`; this is its quality.
             let alignment = done.alignment.map(|al| {
                 json!({"inliers": al.inliers, "tolerance_m": al.tolerance_m, "rms_m": al.rms_m})

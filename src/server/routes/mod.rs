@@ -3,7 +3,7 @@
 //! document are both built from [`endpoints`], so adding a route is one
 //! line here (plus its handler).
 
-mod diff;
+pub(crate) mod diff;
 mod maps;
 mod query;
 mod route;

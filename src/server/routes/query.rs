@@ -11,6 +11,7 @@ use serde_json::{Value, json};
 
 use super::spaces::rows_as_objects;
 use super::{ParamDoc, REV, q};
+use crate::grid::OccupancyGrid;
 use crate::model::{Nrg, SpaceId};
 use crate::query::{
     Limits, MapInfo, QueryError, QueryResult, RevisionInfo, Session, Source, SourceError,
@@ -56,6 +57,9 @@ impl Source for QuerySource<'_> {
     }
     fn load(&self, map: &str, revision: u64) -> Result<Nrg, SourceError> {
         <Store as Source>::load(self.store, map, revision)
+    }
+    fn grid(&self, map: &str, revision: u64) -> Result<Option<OccupancyGrid>, SourceError> {
+        <Store as Source>::grid(self.store, map, revision)
     }
     fn rename_space(
         &mut self,
