@@ -355,3 +355,26 @@ async fn cors_is_opt_in() {
     assert!(other.header("access-control-allow-origin").is_none());
     s.stop().await;
 }
+
+/// Issue 21, defect 1: a 4 KB query of nested brackets (or NOTs) aborted
+/// the whole server, read-only included. Now it is a 400 and the server
+/// goes on answering.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn nested_query_does_not_crash_the_server() {
+    let s = TestServer::read_only().await;
+    let brackets = format!(
+        "FIND rooms WHERE {}area > 1{};",
+        "(".repeat(2_000),
+        ")".repeat(2_000)
+    );
+    let nots = format!("FIND rooms WHERE {}area > 1;", "NOT ".repeat(5_000));
+    for body in [brackets, nots] {
+        let r = s.post("/query", &[], body.as_bytes()).await;
+        r.assert_error(400, "query");
+        assert!(r.text().contains("nest at most 64 deep"), "{}", r.text());
+    }
+    let h = s.get("/health").await;
+    assert_eq!(h.status, 200);
+    assert_eq!(h.json()["status"], "ok");
+    s.stop().await;
+}

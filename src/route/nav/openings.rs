@@ -5,8 +5,6 @@
 //! instead: maximal chains of gate edges between the same two spaces,
 //! broken where a wall touches the chain.
 
-use std::collections::{HashMap, HashSet};
-
 use super::funnel::dist;
 use super::mesh::{Mesh, NONE};
 use crate::model::Point;
@@ -36,19 +34,16 @@ pub(crate) struct Openings {
 impl Openings {
     /// Joins the gates of `mesh` into openings.
     pub fn new(mesh: &Mesh) -> Openings {
-        let mut by_pair: HashMap<(u32, u32), Vec<u32>> = HashMap::new();
-        for (g, gate) in mesh.gates.iter().enumerate() {
-            let (a, b) = (gate.sides[0].1, gate.sides[1].1);
-            by_pair
-                .entry((a.min(b), a.max(b)))
-                .or_default()
-                .push(g as u32);
-        }
-        let mut pairs: Vec<((u32, u32), Vec<u32>)> = by_pair.into_iter().collect();
-        pairs.sort_unstable();
+        let pair = |g: u32| {
+            let [(_, a), (_, b)] = mesh.gates[g as usize].sides;
+            (a.min(b), a.max(b))
+        };
+        let mut order: Vec<u32> = (0..mesh.gates.len() as u32).collect();
+        order.sort_unstable_by_key(|g| (pair(*g), *g));
         let mut list = Vec::new();
-        for ((a, b), gates) in pairs {
-            for (gates, vertices) in chains(mesh, &gates) {
+        for group in order.chunk_by(|g, h| pair(*g) == pair(*h)) {
+            let (a, b) = pair(group[0]);
+            for (gates, vertices) in chains(mesh, group) {
                 list.push(Opening {
                     gates,
                     vertices,
@@ -159,34 +154,41 @@ impl Opening {
     }
 }
 
-/// The chains of `gates` (all between the same two spaces): edges joined
+/// The chains of `gates` (all between the same two spaces, sorted): edges joined
 /// at vertices that no wall touches and that no third edge of the set
 /// meets. Each chain as its gates and its vertices in order.
 fn chains(mesh: &Mesh, gates: &[u32]) -> Vec<(Vec<u32>, Vec<u32>)> {
-    let mut at_vertex: HashMap<u32, Vec<u32>> = HashMap::new();
-    for g in gates {
-        for v in mesh.gates[*g as usize].ends {
-            at_vertex.entry(v).or_default().push(*g);
-        }
-    }
-    let joins =
-        |v: u32| !mesh.obstacle[v as usize] && at_vertex.get(&v).is_some_and(|l| l.len() == 2);
-    let mut used: HashSet<u32> = HashSet::new();
+    // (vertex, gate) for both ends of every gate, sorted by vertex: the
+    // gates meeting at a vertex are one run.
+    let mut ends: Vec<(u32, u32)> = gates
+        .iter()
+        .flat_map(|g| mesh.gates[*g as usize].ends.map(|v| (v, *g)))
+        .collect();
+    ends.sort_unstable();
+    let at_vertex = |v: u32| {
+        let lo = ends.partition_point(|e| e.0 < v);
+        let hi = ends.partition_point(|e| e.0 <= v);
+        &ends[lo..hi]
+    };
+    let joins = |v: u32| !mesh.obstacle[v as usize] && at_vertex(v).len() == 2;
+    // `gates` is sorted (see `Openings::new`).
+    let index = |g: u32| gates.binary_search(&g).ok();
+    let mut used = vec![false; gates.len()];
     let mut out = Vec::new();
     // Open chains first (from an end that does not join), then loops.
-    let starts: Vec<(u32, u32)> = gates
+    let starts: Vec<(u32, u32)> = ends
         .iter()
-        .flat_map(|g| mesh.gates[*g as usize].ends.map(|v| (*g, v)))
-        .filter(|(_, v)| !joins(*v))
+        .filter(|(v, _)| !joins(*v))
+        .map(|(v, g)| (*g, *v))
         .chain(gates.iter().map(|g| (*g, mesh.gates[*g as usize].ends[0])))
         .collect();
     for (first, start) in starts {
-        if used.contains(&first) {
+        let Some(i) = index(first).filter(|i| !used[*i]) else {
             continue;
-        }
+        };
+        used[i] = true;
         let mut chain = vec![first];
         let mut vertices = vec![start];
-        used.insert(first);
         let mut g = first;
         let mut v = start;
         loop {
@@ -196,14 +198,15 @@ fn chains(mesh: &Mesh, gates: &[u32]) -> Vec<(Vec<u32>, Vec<u32>)> {
             if !joins(v) {
                 break;
             }
-            let next = at_vertex
-                .get(&v)
-                .and_then(|l| l.iter().copied().find(|h| *h != g))
+            let next = at_vertex(v)
+                .iter()
+                .map(|e| e.1)
+                .find(|h| *h != g)
                 .unwrap_or(NONE);
-            if next == NONE || used.contains(&next) {
+            let Some(j) = index(next).filter(|j| !used[*j]) else {
                 break;
-            }
-            used.insert(next);
+            };
+            used[j] = true;
             chain.push(next);
             g = next;
         }
