@@ -333,9 +333,14 @@ impl BoxGrid {
         let to_cell = |v: f64| (v / self.cell).floor() as i64;
         let (x0, y0) = (to_cell(s.min[0]), to_cell(s.min[1]));
         let (x1, y1) = (to_cell(s.max[0]), to_cell(s.max[1]));
-        let count = (x1 - x0 + 1).saturating_mul(y1 - y0 + 1);
-        (s.min.iter().chain(&s.max).all(|v| v.is_finite()) && count <= MAX_CELLS_PER_SHAPE)
-            .then_some((x0, y0, x1, y1))
+        // Checked: a box near ±1e308 saturates the casts to i64::MIN/MAX,
+        // and `x1 - x0 + 1` wrapped to a negative count that passed the
+        // bound (an import looped for ever holding the write lock).
+        let span = |lo: i64, hi: i64| hi.checked_sub(lo)?.checked_add(1);
+        let count = span(x0, x1)?.checked_mul(span(y0, y1)?)?;
+        (s.min.iter().chain(&s.max).all(|v| v.is_finite())
+            && (1..=MAX_CELLS_PER_SHAPE).contains(&count))
+        .then_some((x0, y0, x1, y1))
     }
 
     /// Indices of the shapes whose cells meet `s`'s cells (sorted, unique).
@@ -485,6 +490,22 @@ mod tests {
 
     fn nrg(spaces: Vec<Space>) -> Nrg {
         Nrg::new(spaces, vec![]).unwrap()
+    }
+
+    /// Issue 21, defect 3: far-flung coordinates made the cell count wrap
+    /// and matching loop for ever. Spaces at the model's coordinate limit
+    /// match like any others.
+    #[test]
+    fn far_coordinates_match_without_wrapping() {
+        let far = crate::model::MAX_COORD_M;
+        let a = nrg(vec![
+            rect(1, -far, -far, -far + 4.0, -far + 3.0),
+            rect(2, far - 4.0, far - 3.0, far, far),
+            rect(3, -far, -far, far, far),
+        ]);
+        let m = match_spaces(&a, &a, &MatchParams::default());
+        assert_eq!(m.len(), 3);
+        assert!(m.iter().all(|m| m.old == m.new));
     }
 
     #[test]

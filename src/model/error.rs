@@ -38,6 +38,18 @@ pub enum ModelError {
         /// Which value is broken.
         what: &'static str,
     },
+    /// A coordinate lies too far from the origin to be a building.
+    #[error(
+        "{what} of space {id} lies more than {limit_m} m from the origin; coordinates are metres in the map frame"
+    )]
+    TooFar {
+        /// The space concerned.
+        id: SpaceId,
+        /// Which value is out of range.
+        what: &'static str,
+        /// The limit, metres.
+        limit_m: f64,
+    },
     /// A connection length is negative or not finite.
     #[error("connection {a}-{b} has length {length_m} m; it must be finite and >= 0")]
     BadLength {

@@ -33,6 +33,12 @@ impl<'de> Deserialize<'de> for Nrg {
     }
 }
 
+/// How far from the origin of the map frame a coordinate may lie, metres
+/// (100 000 km: room for projected frames such as UTM or web Mercator, far
+/// from where areas and grid cell counts overflow). Issue 21: a coordinate
+/// at 1e308 made later imports into the map loop or exhaust memory.
+pub const MAX_COORD_M: f64 = 1.0e8;
+
 impl Nrg {
     /// Builds a model, checking its invariants and normalising order,
     /// connection direction and areas.
@@ -157,6 +163,12 @@ impl Nrg {
 
 fn check_space(space: &Space) -> Result<(), ModelError> {
     let finite = |p: &[f64; 2]| p[0].is_finite() && p[1].is_finite();
+    let near = |p: &[f64; 2]| p[0].abs() <= MAX_COORD_M && p[1].abs() <= MAX_COORD_M;
+    let far = |what: &'static str| ModelError::TooFar {
+        id: space.id,
+        what,
+        limit_m: MAX_COORD_M,
+    };
     if !finite(&space.anchor) {
         return Err(ModelError::NotFinite {
             id: space.id,
@@ -170,6 +182,12 @@ fn check_space(space: &Space) -> Result<(), ModelError> {
                 what: "polygon",
             });
         }
+        if !ring.iter().all(near) {
+            return Err(far("polygon"));
+        }
+    }
+    if !near(&space.anchor) {
+        return Err(far("anchor"));
     }
     if space.polygon.len() < 3 {
         return Err(ModelError::DegeneratePolygon(space.id));
@@ -228,6 +246,36 @@ mod tests {
             ),
             Err(ModelError::DuplicateConnection { .. })
         ));
+    }
+
+    /// Issue 21, defects 3–5: a coordinate at 1e308 was accepted and later
+    /// made matching loop, memory grow and geo's hull panic. It is refused
+    /// where every model is built, with the space and the limit named.
+    #[test]
+    fn far_flung_coordinates_are_refused_at_the_door() {
+        let mut s = square(7, 0.0);
+        s.polygon[2] = [1e308, 1.0];
+        let e = Nrg::new(vec![s], vec![]).unwrap_err();
+        assert!(matches!(
+            e,
+            ModelError::TooFar {
+                id: SpaceId(7),
+                what: "polygon",
+                ..
+            }
+        ));
+        assert!(e.to_string().contains("space 7"), "{e}");
+        let mut s = square(8, 0.0);
+        s.anchor = [0.5, -2e8];
+        assert!(matches!(
+            Nrg::new(vec![s], vec![]),
+            Err(ModelError::TooFar { what: "anchor", .. })
+        ));
+        let at_limit = square(9, MAX_COORD_M - 1.0);
+        assert!(Nrg::new(vec![at_limit], vec![]).is_ok());
+        let text = r#"{"spaces":[{"id":1,"kind":"room","anchor":[0,0],"polygon":[[0,0],[1e308,0],[0,1]]}],"connections":[]}"#;
+        let err = Nrg::from_json(text).unwrap_err().to_string();
+        assert!(err.contains("from the origin"), "{err}");
     }
 
     #[test]
