@@ -290,9 +290,16 @@ async fn exports_query_metrics_and_unknown_paths() {
     )
     .await
     .assert_error(400, "body");
-    // NAME writes: refused in its result slot on a read-only server.
-    let named = s.post("/query", &[], b"NAME 11 AS \"Lab\";").await.json();
-    assert_eq!(named["results"][0]["type"], "error");
+    // NAME writes: a read-only server refuses the whole request with 403
+    // (issue 21, defect 10: it answered 200 with an error inside), and
+    // runs none of its statements.
+    let named = s
+        .post("/query", &[], b"FIND rooms; NAME 11 AS \"Lab\";")
+        .await;
+    assert_eq!(
+        (named.status, named.json()["code"].as_str()),
+        (403, Some("ReadOnly"))
+    );
     assert_eq!(s.revision_count("building"), 1);
 
     let m = s.get("/metrics").await;

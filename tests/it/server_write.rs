@@ -297,6 +297,23 @@ async fn map_yaml_and_image_are_extracted() {
     s.stop().await;
 }
 
+/// Issue 21, defect 10: NAME through /query without the token answered
+/// 200 with an error inside; it is a 401 like every other write, with
+/// the wrong token too, and nothing is written.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn name_query_without_token_is_401() {
+    let s = TestServer::writable().await;
+    for headers in [&[][..], &[("Authorization", "Bearer nope")][..]] {
+        let r = s
+            .post("/query?map=building", headers, b"NAME 11 AS \"Lab\";")
+            .await;
+        assert_eq!(r.status, 401, "{}", r.text());
+        assert!(r.header("www-authenticate").unwrap().starts_with("Bearer"));
+    }
+    assert_eq!(s.revision_count("building"), 1);
+    s.stop().await;
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn name_query_with_token_writes_a_revision() {
     let s = TestServer::writable().await;

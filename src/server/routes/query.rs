@@ -14,9 +14,9 @@ use super::{ParamDoc, REV, q};
 use crate::grid::OccupancyGrid;
 use crate::model::{Nrg, SpaceId};
 use crate::query::{
-    Limits, MapInfo, QueryError, QueryResult, RevisionInfo, Session, Source, SourceError,
+    Limits, MapInfo, QueryError, QueryResult, RevisionInfo, Session, Source, SourceError, Statement,
 };
-use crate::server::auth::has_token;
+use crate::server::auth::{has_token, require_write};
 use crate::server::body::read_limited;
 use crate::server::error::ApiError;
 use crate::server::params::{Params, parse_rev};
@@ -135,6 +135,16 @@ pub async fn query(
             "query",
             "empty (send statements such as FIND rooms;)",
         ));
+    }
+    // A request that would write (NAME) is refused as a whole, 401 or
+    // 403 as for every other write, before anything runs (it used to
+    // answer 200 with an error in the statement's slot).
+    if crate::query::parse(&text)
+        .map_err(ApiError::from)?
+        .iter()
+        .any(Statement::writes)
+    {
+        require_write(state.config(), &headers)?;
     }
     let writable = has_token(state.config(), &headers);
     let limits = Limits {
