@@ -50,6 +50,16 @@ pub enum ModelError {
         /// The limit, metres.
         limit_m: f64,
     },
+    /// A space name longer than a name can sensibly be.
+    #[error("the name of space {id} has {chars} characters; at most {limit} are allowed")]
+    NameTooLong {
+        /// The space concerned.
+        id: SpaceId,
+        /// Its name's length in characters.
+        chars: usize,
+        /// The limit.
+        limit: usize,
+    },
     /// A connection length is negative or not finite.
     #[error("connection {a}-{b} has length {length_m} m; it must be finite and >= 0")]
     BadLength {

@@ -39,6 +39,10 @@ impl<'de> Deserialize<'de> for Nrg {
 /// at 1e308 made later imports into the map loop or exhaust memory.
 pub const MAX_COORD_M: f64 = 1.0e8;
 
+/// The longest space name a model holds, in characters (issue 21: a
+/// 70 000-character name was stored and broke every listing).
+pub const MAX_NAME_CHARS: usize = 1_000;
+
 impl Nrg {
     /// Builds a model, checking its invariants and normalising order,
     /// connection direction and areas.
@@ -192,6 +196,15 @@ fn check_space(space: &Space) -> Result<(), ModelError> {
     if space.polygon.len() < 3 {
         return Err(ModelError::DegeneratePolygon(space.id));
     }
+    if let Some(name) = &space.name
+        && name.chars().count() > MAX_NAME_CHARS
+    {
+        return Err(ModelError::NameTooLong {
+            id: space.id,
+            chars: name.chars().count(),
+            limit: MAX_NAME_CHARS,
+        });
+    }
     Ok(())
 }
 
@@ -270,6 +283,12 @@ mod tests {
         assert!(matches!(
             Nrg::new(vec![s], vec![]),
             Err(ModelError::TooFar { what: "anchor", .. })
+        ));
+        let mut named = square(10, 0.0);
+        named.name = Some("x".repeat(70_000));
+        assert!(matches!(
+            Nrg::new(vec![named], vec![]),
+            Err(ModelError::NameTooLong { chars: 70_000, .. })
         ));
         let at_limit = square(9, MAX_COORD_M - 1.0);
         assert!(Nrg::new(vec![at_limit], vec![]).is_ok());

@@ -186,6 +186,7 @@ impl From<StoreError> for ApiError {
             StoreError::NoSuchRevision { .. } => ApiError::not_found("rev", e.to_string()),
             StoreError::NoSuchSpace { .. } => ApiError::not_found("id", e.to_string()),
             StoreError::BadMapName { .. } => ApiError::bad("map", e.to_string()),
+            StoreError::TooLong { field, .. } => ApiError::bad(field, e.to_string()),
             StoreError::Model(m) => ApiError::BadUpload(m.to_string()),
             StoreError::Busy => ApiError::Busy,
             other => ApiError::Internal(other.to_string()),
