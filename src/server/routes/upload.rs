@@ -16,12 +16,12 @@ use axum::http::{HeaderMap, HeaderValue, StatusCode, Uri, header};
 use axum::response::{IntoResponse, Response};
 use serde_json::json;
 
-use super::{ParamDoc, q};
 use crate::extract::{ExtractParams, extract};
 use crate::grid::{LoadOptions, OccupancyGrid, load_map};
 use crate::model::Nrg;
 use crate::server::auth::require_write;
 use crate::server::body::read_limited;
+use crate::server::endpoint::{ParamDoc, q};
 use crate::server::error::ApiError;
 use crate::server::multipart::{self, Part};
 use crate::server::params::Params;
