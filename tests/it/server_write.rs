@@ -1,8 +1,13 @@
 //! Issue #7: uploads. Token rules (403 read-only, 401 without the token),
 //! size limit (413), malformed uploads store nothing, a new revision is
 //! served by the next request, multipart map YAML + image is extracted.
+//! Issue #19: an upload is read from memory, never written to a temporary
+//! folder.
 
-use super::server_client::{TOKEN, TestServer};
+use std::io::{BufRead, BufReader};
+use std::process::{Command, Stdio};
+
+use super::server_client::{TOKEN, TestServer, request};
 
 const AUTH: (&str, &str) = ("Authorization", "Bearer test-token-42");
 
@@ -366,4 +371,64 @@ async fn revision_written_by_another_process_is_served_next() {
     assert_eq!(r["revision"], 2);
     assert_eq!(r["spaces"].as_array().unwrap().len(), 8);
     s.stop().await;
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn issue_19_map_upload_leaves_no_temporary_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let tmp = dir.path().join("tmp");
+    std::fs::create_dir(&tmp).unwrap();
+    let db = dir.path().join("up.sqlite");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_nrgdb"))
+        .args(["serve", "--addr", "127.0.0.1:0", "--token", TOKEN, "--db"])
+        .arg(&db)
+        .env("TMPDIR", &tmp)
+        .stdout(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut line = String::new();
+    BufReader::new(child.stdout.as_mut().unwrap())
+        .read_line(&mut line)
+        .unwrap();
+    let url = line
+        .split_whitespace()
+        .find(|w| w.starts_with("http://"))
+        .unwrap();
+    let addr: std::net::SocketAddr = url.trim_start_matches("http://").parse().unwrap();
+    let (yaml, pgm) = floor_pgm();
+    let headers = [("Content-Type", "multipart/form-data; boundary=B"), AUTH];
+    let broken = multipart(
+        "B",
+        &[
+            ("yaml", Some("floor.yaml"), yaml.as_bytes()),
+            ("image", Some("floor.pgm"), b"P5\n240 160\n255\n"),
+        ],
+    );
+    let r = request(addr, "POST", "/maps/floor/revisions", &headers, &broken).await;
+    assert_eq!(r.status, 400, "{}", r.text());
+    assert!(
+        r.json()["message"]
+            .as_str()
+            .unwrap()
+            .starts_with("floor.pgm: ")
+    );
+    let body = multipart(
+        "B",
+        &[
+            ("yaml", Some("floor.yaml"), yaml.as_bytes()),
+            ("image", Some("floor.pgm"), &pgm),
+        ],
+    );
+    let r = request(addr, "POST", "/maps/floor/revisions", &headers, &body).await;
+    assert_eq!(r.status, 201, "{}", r.text());
+    let killed = Command::new("kill")
+        .args(["-TERM", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(killed.success());
+    assert!(child.wait().unwrap().success());
+    let left: Vec<_> = std::fs::read_dir(&tmp).unwrap().collect();
+    assert!(left.is_empty(), "temporary files left: {left:?}");
+    let store = nrgdb::store::Store::open(&db).unwrap();
+    assert_eq!(store.revisions("floor").unwrap().len(), 1);
 }
