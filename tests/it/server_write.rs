@@ -386,9 +386,10 @@ impl Drop for Killed {
 
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn issue_19_map_upload_leaves_no_temporary_files() {
+    // The server's temporary folder does not exist: an upload written to
+    // a temporary file (as before issue 19) fails; one read in memory not.
     let dir = tempfile::tempdir().unwrap();
-    let tmp = dir.path().join("tmp");
-    std::fs::create_dir(&tmp).unwrap();
+    let tmp = dir.path().join("no-temp-dir");
     let db = dir.path().join("up.sqlite");
     let mut child = Killed(
         Command::new(env!("CARGO_BIN_EXE_nrgdb"))
@@ -440,8 +441,17 @@ async fn issue_19_map_upload_leaves_no_temporary_files() {
         .unwrap();
     assert!(killed.success());
     assert!(child.0.wait().unwrap().success());
-    let left: Vec<_> = std::fs::read_dir(&tmp).unwrap().collect();
-    assert!(left.is_empty(), "temporary files left: {left:?}");
+    assert!(!tmp.exists(), "nothing may create the temporary folder");
+    let left: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .flatten()
+        .map(|e| e.file_name())
+        .collect();
+    assert!(
+        left.iter()
+            .all(|n| n.to_string_lossy().starts_with("up.sqlite")),
+        "files left: {left:?}"
+    );
     let store = nrgdb::store::Store::open(&db).unwrap();
     assert_eq!(store.revisions("floor").unwrap().len(), 1);
 }
