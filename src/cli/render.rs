@@ -8,6 +8,7 @@ use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr};
 use nrgdb::diff::{DiffOptions, compare};
+use nrgdb::format::PictureFormat;
 use nrgdb::grid::{LoadOptions, OccupancyGrid, load_map};
 use nrgdb::model::{Nrg, SpaceId};
 use nrgdb::query::LoadedRevision;
@@ -56,9 +57,12 @@ pub struct Args {
 
 /// Runs `nrgdb render`.
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
-    let format = PictureFormat::of(&args.out)?;
+    let format = PictureFormat::of(&args.out).into_diagnostic()?;
     let base = resolve(&args.model, None, &args.db)?;
-    let background = args.map.clone().or_else(|| base.map_yaml.clone());
+    let background = match &args.map {
+        Some(path) => Some(load_grid(path)?),
+        None => base.map_grid.clone(),
+    };
     let (nrg, title, diff) = match &args.diff {
         Some(pair) => {
             let (Some(a), Some(b)) = (pair.first(), pair.get(1)) else {
@@ -78,7 +82,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         }
         None => (base.rev.nrg, base.rev.label, None),
     };
-    let map = background.as_deref().map(load_grid).transpose()?;
+    let map = background;
     let route = match &args.route {
         Some(pair) => {
             let (Some(from), Some(to)) = (pair.first(), pair.get(1)) else {
@@ -132,34 +136,6 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// The picture formats.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum PictureFormat {
-    /// PNG (tiny-skia).
-    Png,
-    /// SVG.
-    Svg,
-}
-
-impl PictureFormat {
-    /// The format a file's extension names.
-    pub fn of(path: &Path) -> miette::Result<PictureFormat> {
-        let ext = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .unwrap_or("")
-            .to_ascii_lowercase();
-        match ext.as_str() {
-            "png" => Ok(PictureFormat::Png),
-            "svg" => Ok(PictureFormat::Svg),
-            _ => miette::bail!(
-                "{}: unknown picture format '.{ext}' (use a .png or .svg file name)",
-                path.display()
-            ),
-        }
-    }
-}
-
 /// Renders `scene` and writes it atomically to `path` as `format`.
 pub fn write_picture(path: &Path, format: PictureFormat, scene: &Scene<'_>) -> miette::Result<()> {
     let bytes = match format {
@@ -185,8 +161,8 @@ struct Resolved {
     rev: LoadedRevision,
     /// The map's name in the database (for `--diff 1 3`).
     map_name: Option<String>,
-    /// A .yaml occupancy map the model was extracted from.
-    map_yaml: Option<PathBuf>,
+    /// The grid of the .yaml occupancy map the model was extracted from.
+    map_grid: Option<OccupancyGrid>,
 }
 
 /// `spec` is a model file, NAME[@REV], or (with `base` a stored map) a bare
@@ -194,14 +170,11 @@ struct Resolved {
 fn resolve(spec: &str, base: Option<&Resolved>, db: &DbArg) -> miette::Result<Resolved> {
     let path = Path::new(spec);
     if path.is_file() {
-        let is_yaml = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .is_some_and(|e| e.eq_ignore_ascii_case("yaml") || e.eq_ignore_ascii_case("yml"));
+        let rev = load_file(path)?;
         return Ok(Resolved {
-            rev: load_file(path)?,
+            map_grid: rev.grid.clone(),
+            rev,
             map_name: None,
-            map_yaml: is_yaml.then(|| path.to_path_buf()),
         });
     }
     let (name, rev) = match (spec.parse::<u32>(), base.and_then(|b| b.map_name.clone())) {
@@ -235,7 +208,7 @@ fn resolve(spec: &str, base: Option<&Resolved>, db: &DbArg) -> miette::Result<Re
     Ok(Resolved {
         rev,
         map_name: Some(name),
-        map_yaml: None,
+        map_grid: None,
     })
 }
 

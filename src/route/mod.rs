@@ -33,6 +33,7 @@ mod graph;
 mod nav;
 mod no_route;
 mod reachable;
+mod route_avoiding;
 mod shortest_route;
 mod steps;
 

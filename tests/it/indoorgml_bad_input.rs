@@ -127,11 +127,29 @@ fn cli_refuses_files_over_the_size_limit() {
 }
 
 #[test]
-fn cli_refuses_unknown_extensions() {
+fn cli_refuses_unknown_formats() {
     let dir = tempfile::tempdir().unwrap();
-    let out = nrgdb(dir.path(), &["convert", "a.txt", "b.json"]);
+    // Output formats go by extension.
+    std::fs::write(dir.path().join("a.gml"), doc_with("")).unwrap();
+    let out = nrgdb(dir.path(), &["convert", "a.gml", "b.txt"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("unknown format"));
+    // An input goes by extension and content: neither tells here.
+    std::fs::write(dir.path().join("a.txt"), "hello").unwrap();
+    let out = nrgdb(dir.path(), &["convert", "a.txt", "b.json"]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("a.txt: cannot tell the format"), "{stderr}");
+    // Content that contradicts the extension is refused, naming both.
+    std::fs::write(dir.path().join("c.json"), doc_with("")).unwrap();
+    let out = nrgdb(dir.path(), &["convert", "c.json", "d.geojson"]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("its name says model JSON but its content is IndoorGML"),
+        "{stderr}"
+    );
+    assert!(!dir.path().join("d.geojson").exists());
 }
 
 #[test]

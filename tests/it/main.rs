@@ -14,6 +14,7 @@ mod support;
 mod demo;
 mod extract;
 mod extract_tiling;
+mod ingest;
 mod query;
 mod query_cli;
 mod query_golden;

@@ -9,10 +9,10 @@ use axum::extract::{Path, State};
 use axum::http::Uri;
 use serde_json::{Value, json};
 
-use super::{ParamDoc, q};
-use crate::diff::{AlignMode, DiffError, DiffOptions};
-use crate::query::{QueryError, SourceError, compare_revisions};
-use crate::server::error::ApiError;
+use crate::diff::{AlignMode, DiffOptions};
+use crate::query::compare_revisions;
+use crate::server::endpoint::{ParamDoc, q};
+use crate::server::error::{ApiError, comparing_error};
 use crate::server::params::{Params, parse_rev};
 use crate::server::state::AppState;
 use crate::store::StoreError;
@@ -56,22 +56,6 @@ fn named(name: &str, e: StoreError) -> ApiError {
     match e {
         StoreError::NoSuchRevision { .. } => ApiError::not_found(name, e.to_string()),
         other => other.into(),
-    }
-}
-
-/// A failed comparison as an API error: no reliable alignment is the
-/// caller's to fix (a 400 naming `parameter`, with `hint`), a busy store a
-/// 503, anything else ours.
-pub fn comparing_error(e: QueryError, parameter: &'static str, hint: &str) -> ApiError {
-    match e {
-        QueryError::Diff(e @ (DiffError::Unreliable { .. } | DiffError::TooFewWalls { .. })) => {
-            ApiError::bad(parameter, format!("{e} ({hint})"))
-        }
-        QueryError::Source(SourceError::Backend(e)) => match e.downcast::<StoreError>() {
-            Ok(e) => (*e).into(),
-            Err(e) => ApiError::Internal(format!("loading a revision: {e}")),
-        },
-        other => ApiError::Internal(other.to_string()),
     }
 }
 

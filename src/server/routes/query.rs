@@ -10,7 +10,6 @@ use serde::Deserialize;
 use serde_json::{Value, json};
 
 use super::spaces::rows_as_objects;
-use super::{ParamDoc, REV, q};
 use crate::grid::OccupancyGrid;
 use crate::model::{Nrg, SpaceId};
 use crate::query::{
@@ -18,6 +17,7 @@ use crate::query::{
 };
 use crate::server::auth::{has_token, require_write};
 use crate::server::body::read_limited;
+use crate::server::endpoint::{ParamDoc, REV, q};
 use crate::server::error::ApiError;
 use crate::server::params::{Params, parse_rev};
 use crate::server::state::AppState;

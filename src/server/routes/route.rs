@@ -6,10 +6,10 @@ use axum::http::{Uri, header};
 use axum::response::{IntoResponse, Response};
 
 use super::route_json::route_response;
-use super::{ParamDoc, REV, q};
 use crate::model::SpaceId;
 use crate::query::{IndexedRevision, QueryError, SpaceRef};
 use crate::route::{Budget, Endpoint, Profile, RouteRequest, no_route_reason, shortest_route};
+use crate::server::endpoint::{ParamDoc, REV, q};
 use crate::server::error::ApiError;
 use crate::server::params::{Params, parse_value};
 use crate::server::state::{AppState, Ctx};

@@ -17,10 +17,9 @@ use crate::query::compare_revisions;
 use crate::query::{IndexedRevision, QueryError, SpaceRef};
 use crate::render::{RenderOptions, RouteOverlay, Scene, diff_overlay, render_svg};
 use crate::route::{Budget, RouteRequest, shortest_route};
-use crate::server::error::ApiError;
+use crate::server::endpoint::{ParamDoc, q};
+use crate::server::error::{ApiError, comparing_error};
 use crate::server::params::{Params, parse_rev};
-use crate::server::routes::diff::comparing_error;
-use crate::server::routes::{ParamDoc, q};
 use crate::server::state::AppState;
 use crate::store::StoreError;
 
