@@ -202,10 +202,13 @@ impl Layer {
             }
         }
         let openings = &mesh.openings.list;
-        let open: Vec<bool> = openings.iter().map(|o| o.open(mesh, clearance_m)).collect();
+        let open: Vec<bool> = openings
+            .iter()
+            .map(|o| o.open(&mesh.gate_view(), clearance_m))
+            .collect();
         let samples: Vec<[(u32, Point); SAMPLES]> = openings
             .iter()
-            .map(|o| o.crossings(mesh, SAMPLE_AT, clearance_m))
+            .map(|o| o.crossings(&mesh.gate_view(), SAMPLE_AT, clearance_m))
             .collect();
         let anchors = (0..mesh.space_ids.len() as u32)
             .map(|s| anchor(mesh, nrg, s))

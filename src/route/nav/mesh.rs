@@ -11,11 +11,11 @@ use rstar::primitives::{GeomWithData, Rectangle};
 use spade::handles::FixedVertexHandle;
 use spade::{ConstrainedDelaunayTriangulation, Point2, PositionInTriangulation, Triangulation};
 
+use super::gate::GateView;
 use super::openings::Openings;
 use crate::model::{Nrg, Point, Space, SpaceId, point_in_ring};
 
-/// "No triangle" / "no space" in the dense index arrays.
-pub(crate) const NONE: u32 = u32::MAX;
+pub(crate) use super::gate::{Gate, NONE};
 
 /// What lies across one edge of a triangle.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -36,15 +36,6 @@ pub(crate) struct Tri {
     pub across: [Across; 3],
     /// Dense index of its space.
     pub space: u32,
-}
-
-/// A passable triangle edge between two spaces.
-#[derive(Debug, Clone)]
-pub(crate) struct Gate {
-    /// The edge's end points (vertex indices).
-    pub ends: [u32; 2],
-    /// The triangle on each side and its space: `(tri, space)`.
-    pub sides: [(u32, u32); 2],
 }
 
 /// The triangulated floor.
@@ -304,7 +295,7 @@ impl Mesh {
             face_tri,
             cdt,
         };
-        mesh.openings = Openings::new(&mesh);
+        mesh.openings = Openings::new(&mesh.gate_view());
         mesh
     }
 
@@ -343,6 +334,16 @@ impl Mesh {
             .copied()
             .find(|t| Some(self.tris[*t as usize].space) == prefer)
             .or_else(|| found.first().copied())
+    }
+
+    /// The gate edges with the vertices they need, for [`Openings`].
+    pub fn gate_view(&self) -> GateView<'_> {
+        GateView {
+            points: &self.points,
+            obstacle: &self.obstacle,
+            gates: &self.gates,
+            spaces: self.space_ids.len(),
+        }
     }
 
     /// The position of vertex `v`.

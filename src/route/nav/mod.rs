@@ -17,6 +17,7 @@
 mod clearance;
 mod dead_ends;
 mod funnel;
+mod gate;
 pub(crate) mod layer;
 pub(crate) mod mesh;
 mod openings;
@@ -149,7 +150,8 @@ fn door_widths(nrg: &Nrg, mesh: &Mesh) -> Vec<f64> {
             let openings = &mesh.openings;
             for o in &openings.of_space[s] {
                 let other = openings.other_side(*o, s as u32);
-                *by_side.entry(other).or_default() += openings.list[*o as usize].length(mesh);
+                *by_side.entry(other).or_default() +=
+                    openings.list[*o as usize].length(&mesh.gate_view());
             }
             by_side.values().copied().fold(0.0, f64::max)
         })

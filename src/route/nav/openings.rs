@@ -6,7 +6,7 @@
 //! broken where a wall touches the chain.
 
 use super::funnel::dist;
-use super::mesh::{Mesh, NONE};
+use super::gate::{GateView, NONE};
 use crate::model::Point;
 
 /// One opening between two spaces.
@@ -33,7 +33,7 @@ pub(crate) struct Openings {
 
 impl Openings {
     /// Joins the gates of `mesh` into openings.
-    pub fn new(mesh: &Mesh) -> Openings {
+    pub fn new(mesh: &GateView<'_>) -> Openings {
         let pair = |g: u32| {
             let [(_, a), (_, b)] = mesh.gates[g as usize].sides;
             (a.min(b), a.max(b))
@@ -52,7 +52,7 @@ impl Openings {
                 });
             }
         }
-        let mut of_space = vec![Vec::new(); mesh.space_ids.len()];
+        let mut of_space = vec![Vec::new(); mesh.spaces];
         for (o, opening) in list.iter_mut().enumerate() {
             for side in 0..2 {
                 let s = opening.sides[side] as usize;
@@ -81,7 +81,7 @@ impl Openings {
 
 impl Opening {
     /// Its length along the chain.
-    pub fn length(&self, mesh: &Mesh) -> f64 {
+    pub fn length(&self, mesh: &GateView<'_>) -> f64 {
         self.vertices
             .windows(2)
             .map(|w| dist(mesh.point(w[0]), mesh.point(w[1])))
@@ -90,14 +90,14 @@ impl Opening {
 
     /// Whether a disc of radius `r` passes: the chain is at least `r` long
     /// for each end that touches a wall.
-    pub fn open(&self, mesh: &Mesh, r: f64) -> bool {
+    pub fn open(&self, mesh: &GateView<'_>, r: f64) -> bool {
         if r <= 0.0 {
             return true;
         }
         self.length(mesh) >= self.walled_ends(mesh) * r
     }
 
-    fn walled_ends(&self, mesh: &Mesh) -> f64 {
+    fn walled_ends(&self, mesh: &GateView<'_>) -> f64 {
         let end = |v: Option<&u32>| v.is_some_and(|v| mesh.obstacle[*v as usize]);
         f64::from(u8::from(end(self.vertices.first())) + u8::from(end(self.vertices.last())))
     }
@@ -106,7 +106,7 @@ impl Opening {
     /// from a walled end, each with the gate edge it lies on.
     pub fn crossings<const N: usize>(
         &self,
-        mesh: &Mesh,
+        mesh: &GateView<'_>,
         at: [f64; N],
         r: f64,
     ) -> [(u32, Point); N] {
@@ -157,7 +157,7 @@ impl Opening {
 /// The chains of `gates` (all between the same two spaces, sorted): edges joined
 /// at vertices that no wall touches and that no third edge of the set
 /// meets. Each chain as its gates and its vertices in order.
-fn chains(mesh: &Mesh, gates: &[u32]) -> Vec<(Vec<u32>, Vec<u32>)> {
+fn chains(mesh: &GateView<'_>, gates: &[u32]) -> Vec<(Vec<u32>, Vec<u32>)> {
     // (vertex, gate) for both ends of every gate, sorted by vertex: the
     // gates meeting at a vertex are one run.
     let mut ends: Vec<(u32, u32)> = gates
