@@ -92,6 +92,11 @@ pub fn parse(text: &str) -> Result<Vec<Statement>, QueryError> {
         if p.peek().kind == TokenKind::Eof {
             return Ok(out);
         }
+        if out.len() == MAX_STATEMENTS {
+            return Err(p.refused(format!(
+                "at most {MAX_STATEMENTS} statements a request or file"
+            )));
+        }
         out.push(p.statement()?);
         if p.peek().kind != TokenKind::Eof && !p.eat_punct(";") {
             return Err(p.expected(&["';'", "end of input"]));
@@ -127,6 +132,10 @@ pub fn parse_statement(text: &str) -> Result<Statement, QueryError> {
 /// unbounded depth would overflow a thread's stack (a 4 KB query of
 /// brackets crashed the server).
 pub const MAX_NESTING: usize = 64;
+
+/// Most statements one text may hold (issue 21, defect 7: a 1 MB request
+/// of statements ran long past its time bound).
+pub const MAX_STATEMENTS: usize = 1_000;
 
 /// Most comparisons one condition may hold (an OR of 50 000 terms is a
 /// tree that deep).
@@ -703,6 +712,21 @@ mod tests {
         assert!(parse(&terms(MAX_TERMS)).is_ok());
         let e = parse(&terms(50_000)).unwrap_err().to_string();
         assert!(e.contains("at most 256 comparisons"), "{e}");
+    }
+
+    /// Issue 21, defect 7: a megabyte of statements is refused at once;
+    /// empty statements (`;;;`) cost nothing and are not counted.
+    #[test]
+    fn too_many_statements_are_refused() {
+        assert_eq!(parse(&";".repeat(1_000_000)).unwrap().len(), 0);
+        assert_eq!(
+            parse(&"SHOW MAPS;".repeat(MAX_STATEMENTS)).unwrap().len(),
+            MAX_STATEMENTS
+        );
+        let e = parse(&"SHOW MAPS;".repeat(100_000))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("at most 1000 statements"), "{e}");
     }
 
     #[test]
