@@ -7,6 +7,7 @@ use super::error::QueryError;
 use super::lexer::{Token, TokenKind, lex};
 use super::suggest::suggest;
 use crate::model::{SpaceId, SpaceKind};
+use crate::route::MAX_ALTERNATIVES;
 
 /// Words that start a statement.
 pub const STATEMENT_KEYWORDS: [&str; 11] = [
@@ -317,10 +318,15 @@ impl Parser {
             "NAME" => {
                 let space = self.space_ref()?;
                 self.expect_word("AS")?;
-                Ok(Statement::Name {
-                    space,
-                    name: self.string()?,
-                })
+                let span = self.peek().span;
+                let name = self.string()?;
+                if name.trim().is_empty() {
+                    return Err(QueryError::Syntax {
+                        span,
+                        message: "a space's name cannot be empty".into(),
+                    });
+                }
+                Ok(Statement::Name { space, name })
             }
             "DIFF" => Ok(Statement::Diff {
                 from: self.integer()?,
@@ -351,7 +357,15 @@ impl Parser {
             Vec::new()
         };
         let alternatives = if self.eat_word("ALTERNATIVES") {
-            Some(self.integer()?)
+            let span = self.peek().span;
+            let k = self.integer()?;
+            if !(1..=MAX_ALTERNATIVES as u32).contains(&k) {
+                return Err(QueryError::Syntax {
+                    span,
+                    message: format!("ALTERNATIVES takes 1 to {MAX_ALTERNATIVES} routes, not {k}"),
+                });
+            }
+            Some(k)
         } else {
             None
         };
@@ -712,6 +726,22 @@ mod tests {
         assert!(parse(&terms(MAX_TERMS)).is_ok());
         let e = parse(&terms(50_000)).unwrap_err().to_string();
         assert!(e.contains("at most 256 comparisons"), "{e}");
+    }
+
+    /// Issue 21 paper cuts: `ALTERNATIVES 0` answered "no route" and
+    /// `NAME 3 AS ""` was accepted; both are errors at the value.
+    #[test]
+    fn empty_names_and_zero_alternatives_are_refused() {
+        let e = parse("ROUTE FROM 1 TO 2 ALTERNATIVES 0")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("ALTERNATIVES takes 1 to 10 routes, not 0"),
+            "{e}"
+        );
+        assert!(parse("ROUTE FROM 1 TO 2 ALTERNATIVES 3").is_ok());
+        let e = parse("NAME 3 AS \"  \"").unwrap_err().to_string();
+        assert!(e.contains("name cannot be empty"), "{e}");
     }
 
     /// Issue 21, defect 7: a megabyte of statements is refused at once;

@@ -14,8 +14,7 @@ use crate::server::error::ApiError;
 use crate::server::params::{Params, parse_value};
 use crate::server::state::{AppState, Ctx};
 
-/// Most routes `alternatives` may ask for.
-pub const MAX_ALTERNATIVES: usize = 10;
+use crate::route::MAX_ALTERNATIVES;
 
 /// Query parameters of the route endpoint.
 pub const PARAMS: [ParamDoc; 9] = [
