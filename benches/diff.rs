@@ -10,8 +10,8 @@ use std::path::PathBuf;
 
 use criterion::Criterion;
 use nrgdb::diff::{
-    AlignMode, AlignParams, DiffParams, MatchParams, Revision, RigidTransform, align_grids,
-    compare, diff, match_spaces,
+    AlignMode, AlignParams, DiffOptions, DiffParams, MatchParams, Revision, RigidTransform,
+    align_grids, compare, diff, match_spaces,
 };
 use nrgdb::extract::{ExtractParams, extract};
 use nrgdb::grid::{Cell, LoadOptions, OccupancyGrid, load_map};
@@ -108,18 +108,14 @@ fn bench(c: &mut Criterion) {
             align_grids(black_box(&grid), black_box(&moved), &AlignParams::default()).unwrap()
         })
     });
+    let always = DiffOptions {
+        align: AlignMode::Always,
+        ..DiffOptions::default()
+    };
     let check = compare(
-        Revision {
-            nrg: &a,
-            grid: Some(&grid),
-        },
-        Revision {
-            nrg: &b_moved,
-            grid: Some(&moved),
-        },
-        AlignMode::Always,
-        &DiffParams::default(),
-        &AlignParams::default(),
+        Revision::new(&a).with_grid(Some(&grid)),
+        Revision::new(&b_moved).with_grid(Some(&moved)),
+        &always,
     )
     .unwrap();
     eprintln!(
@@ -131,17 +127,9 @@ fn bench(c: &mut Criterion) {
     c.bench_function("diff/willow-full/door-shut-aligned", |bn| {
         bn.iter(|| {
             compare(
-                Revision {
-                    nrg: &a,
-                    grid: Some(&grid),
-                },
-                Revision {
-                    nrg: &b_moved,
-                    grid: Some(&moved),
-                },
-                AlignMode::Always,
-                &DiffParams::default(),
-                &AlignParams::default(),
+                Revision::new(&a).with_grid(Some(&grid)),
+                Revision::new(&b_moved).with_grid(Some(&moved)),
+                &always,
             )
             .unwrap()
         })

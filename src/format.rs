@@ -1,6 +1,9 @@
-//! Model files by extension: IndoorGML (`.gml`, `.xml`), the model's JSON
-//! form (`.json`) and GeoJSON (`.geojson`). One place decides which reader
-//! or writer a path gets, for the CLI, the store and the server.
+//! File formats: the one place that decides what a file is ([`detect`]:
+//! by its name or declared media type and by its first bytes; see
+//! `format/detect.rs` for the rules), and the model formats, IndoorGML
+//! (`.gml`, `.xml`), the model's JSON form (`.json`) and GeoJSON
+//! (`.geojson`), read from bytes or files and written by extension, for
+//! the CLI, the ingest of files and uploads, and the server.
 //!
 //! Every model written goes through [`render`]: connection lengths are the
 //! walked lengths and IndoorGML Transitions and GeoJSON connection lines
@@ -8,7 +11,12 @@
 //! IndoorGML fixes Transitions with a missing or 0 weight ([`from_document`]).
 //! Uses indoorgml, geojson and route; sits above them.
 
+mod detect;
+
+use std::io::Read;
 use std::path::{Path, PathBuf};
+
+pub use detect::{Declared, FileKind, ImageFormat, detect};
 
 use crate::indoorgml::{self, Document, IndoorGmlError, WeightFixes};
 use crate::model::Nrg;
@@ -34,6 +42,59 @@ pub enum FormatError {
         "{0}: unknown format; use .gml or .xml (IndoorGML), .json (model JSON) or .geojson (GeoJSON)"
     )]
     UnknownExtension(PathBuf),
+    /// Neither the name, the media type nor the bytes tell the format.
+    #[error(
+        "{path}: cannot tell the format: give a .yaml map (with its .pgm or .png image), .gml or .xml (IndoorGML), .json (model JSON) or .geojson (GeoJSON)"
+    )]
+    Unrecognised {
+        /// The file.
+        path: PathBuf,
+    },
+    /// What was said about the file and its bytes disagree.
+    #[error("{path}: {said} but its content is {found} (rename the file or send the right one)")]
+    Conflict {
+        /// The file.
+        path: PathBuf,
+        /// What its name or media type says ("its name says model JSON").
+        said: String,
+        /// What its bytes are.
+        found: String,
+    },
+    /// A model was expected and the file is something else.
+    #[error(
+        "{path}: this is {kind}, not a model file (.gml, .xml, .json or .geojson); a map is extracted, not read as a model"
+    )]
+    NotAModel {
+        /// The file.
+        path: PathBuf,
+        /// What it is.
+        kind: FileKind,
+    },
+    /// The file is larger than the limit.
+    #[error(
+        "{path}: {size} bytes, above the limit of {limit} bytes (raise the limit if the file is genuine)"
+    )]
+    TooLarge {
+        /// The file.
+        path: PathBuf,
+        /// Its size.
+        size: u64,
+        /// The limit.
+        limit: u64,
+    },
+    /// A text format's bytes are not UTF-8.
+    #[error("{path}: line {line}: not UTF-8 text ({kind} is UTF-8 text)")]
+    NotUtf8 {
+        /// The file.
+        path: PathBuf,
+        /// The line of the first invalid byte.
+        line: usize,
+        /// The format expected.
+        kind: FileKind,
+    },
+    /// The extension names no picture format.
+    #[error("{0}: unknown picture format (use a .png or .svg file name)")]
+    UnknownPicture(PathBuf),
     /// Reading or writing IndoorGML failed.
     #[error("{path}: {source}")]
     IndoorGml {
@@ -61,46 +122,134 @@ pub enum FormatError {
 }
 
 impl ModelFormat {
-    /// The format of a path, by its extension.
+    /// The format a path's extension names: how a model is written (an
+    /// output has no bytes to look at yet). Reading uses [`detect`].
     pub fn of(path: &Path) -> Result<ModelFormat, FormatError> {
-        let ext = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .map(str::to_ascii_lowercase);
-        match ext.as_deref() {
-            Some("gml" | "xml") => Ok(ModelFormat::IndoorGml),
-            Some("json") => Ok(ModelFormat::Json),
-            Some("geojson") => Ok(ModelFormat::GeoJson),
+        match FileKind::by_extension(&path.to_string_lossy()) {
+            Some(FileKind::Model(format)) => Ok(format),
             _ => Err(FormatError::UnknownExtension(path.to_path_buf())),
         }
     }
 }
 
-/// Reads a model file in the format its extension names.
+/// A picture format nrgdb draws in.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum PictureFormat {
+    /// PNG (tiny-skia, feature `render`).
+    Png,
+    /// SVG.
+    Svg,
+}
+
+impl PictureFormat {
+    /// The format a file's extension names.
+    ///
+    /// ```
+    /// use nrgdb::format::PictureFormat;
+    /// assert_eq!(PictureFormat::of("out/A.SVG".as_ref()).ok(), Some(PictureFormat::Svg));
+    /// assert!(PictureFormat::of("a.jpg".as_ref()).is_err());
+    /// ```
+    pub fn of(path: &Path) -> Result<PictureFormat, FormatError> {
+        let ext = path.extension().and_then(|e| e.to_str());
+        match ext.map(str::to_ascii_lowercase).as_deref() {
+            Some("png") => Ok(PictureFormat::Png),
+            Some("svg") => Ok(PictureFormat::Svg),
+            _ => Err(FormatError::UnknownPicture(path.to_path_buf())),
+        }
+    }
+}
+
+/// The bytes of a file of at most `max_bytes` bytes (a larger file is
+/// refused before it is read).
+pub fn read_bytes(path: &Path, max_bytes: u64) -> Result<Vec<u8>, FormatError> {
+    let io = |source| FormatError::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    let file = std::fs::File::open(path).map_err(io)?;
+    let size = file.metadata().map_err(io)?.len();
+    let too_large = |size| FormatError::TooLarge {
+        path: path.to_path_buf(),
+        size,
+        limit: max_bytes,
+    };
+    if size > max_bytes {
+        return Err(too_large(size));
+    }
+    let mut bytes = Vec::with_capacity(usize::try_from(size).unwrap_or(0));
+    // A file growing while read is cut at the limit and refused.
+    file.take(max_bytes.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(io)?;
+    if bytes.len() as u64 > max_bytes {
+        return Err(too_large(bytes.len() as u64));
+    }
+    Ok(bytes)
+}
+
+/// The bytes as UTF-8 text of `kind`; the error names the file and the
+/// line of the first invalid byte.
+pub fn utf8_text<'a>(bytes: &'a [u8], path: &Path, kind: FileKind) -> Result<&'a str, FormatError> {
+    std::str::from_utf8(bytes).map_err(|e| {
+        let valid = bytes.get(..e.valid_up_to()).unwrap_or_default();
+        FormatError::NotUtf8 {
+            path: path.to_path_buf(),
+            line: 1 + valid.iter().filter(|&&c| c == b'\n').count(),
+            kind,
+        }
+    })
+}
+
+/// Reads a model file, its format told by [`detect`] (name and bytes).
 pub fn read_model(path: &Path, max_bytes: u64) -> Result<Nrg, FormatError> {
     read_model_fixing(path, max_bytes).map(|(nrg, _)| nrg)
 }
 
-/// Reads a model file in the format its extension names, with the
-/// IndoorGML Transition weights it had to fix (none for other formats).
+/// Reads a model file, its format told by [`detect`], with the IndoorGML
+/// Transition weights it had to fix (none for other formats).
 pub fn read_model_fixing(path: &Path, max_bytes: u64) -> Result<(Nrg, WeightFixes), FormatError> {
-    let format = ModelFormat::of(path)?;
+    let bytes = read_bytes(path, max_bytes)?;
+    let format = detect_model(&Declared::name(&path.to_string_lossy()), &bytes)?;
+    model_from_bytes(&bytes, format, path)
+}
+
+/// [`detect`] for a place that takes a model only: anything else (a map
+/// YAML, an image) is an error naming the file.
+pub fn detect_model(declared: &Declared<'_>, bytes: &[u8]) -> Result<ModelFormat, FormatError> {
+    match detect(declared, bytes)? {
+        FileKind::Model(format) => Ok(format),
+        kind => Err(FormatError::NotAModel {
+            path: PathBuf::from(declared.label()),
+            kind,
+        }),
+    }
+}
+
+/// A model from the bytes of a file in `format` (`path` names it in
+/// errors), with the IndoorGML Transition weights that had to be fixed.
+pub fn model_from_bytes(
+    bytes: &[u8],
+    format: ModelFormat,
+    path: &Path,
+) -> Result<(Nrg, WeightFixes), FormatError> {
+    let text = utf8_text(bytes, path, FileKind::Model(format))?;
     let gml = |source| FormatError::IndoorGml {
         path: path.to_path_buf(),
         source,
     };
-    if format == ModelFormat::IndoorGml {
-        let doc = indoorgml::read_file(path, max_bytes).map_err(gml)?;
-        return from_document(&doc).map_err(gml);
-    }
-    let text = indoorgml::read_text(path, max_bytes).map_err(gml)?;
     let json = |message: String| FormatError::Json {
         path: path.to_path_buf(),
         message,
     };
     let nrg = match format {
-        ModelFormat::Json => Nrg::from_json(&text).map_err(|e| json(e.to_string()))?,
-        _ => crate::geojson::from_geojson(&text).map_err(|e| json(e.to_string()))?,
+        ModelFormat::IndoorGml => {
+            let doc = indoorgml::read_str(text).map_err(gml)?;
+            return from_document(&doc).map_err(gml);
+        }
+        ModelFormat::Json => Nrg::from_json(text).map_err(|e| json(e.to_string()))?,
+        ModelFormat::GeoJson => {
+            crate::geojson::from_geojson(text).map_err(|e| json(e.to_string()))?
+        }
     };
     Ok((nrg, WeightFixes::default()))
 }

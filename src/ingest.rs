@@ -1,11 +1,22 @@
-//! Models entering the database: the one path from a model (extracted from
-//! a map, read from a file, uploaded, or made by applying a change set)
-//! into the store. Every navigable connection's length becomes its walked
-//! length ([`crate::route::walked_model`]) before the model is stored as
-//! the next revision, so stored lengths are the lengths exports carry.
+//! Models entering the database, in two steps used by both the CLI and
+//! the server:
 //!
-//! Uses route and store; sits above both (the store knows nothing of
-//! routing). Must not use HTTP or the terminal.
+//! 1. [`read`]: bytes in (a ROS map YAML and its PGM/PNG image, an
+//!    IndoorGML document, model JSON or GeoJSON; each file's format told
+//!    by [`crate::format::detect`]), a [`Prepared`] model out, with the
+//!    occupancy grid a map was extracted from, in memory: an upload is
+//!    never written to disk to be read back. [`read_path`] reads the files
+//!    (a map YAML and the image it names) and does the same. Sizes from
+//!    the input are bounded (file bytes, image pixels, resolution) and
+//!    errors name the file or part. Nothing is stored by this step.
+//! 2. [`ingest`]: the one path from a model (read as above, or made by
+//!    applying a change set) into the store. Every navigable connection's
+//!    length becomes its walked length ([`crate::route::walked_model`])
+//!    before the model is stored as the next revision in one transaction,
+//!    so stored lengths are the lengths exports carry.
+//!
+//! Uses format, grid, extract, route and store; sits above them (the store
+//! knows nothing of routing). Must not use HTTP or the terminal.
 //!
 //! ```
 //! use nrgdb::ingest::ingest;
@@ -18,6 +29,12 @@
 //! assert_eq!(stored, nrgdb::route::walked_model(&nrg).nrg);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
+
+mod error;
+mod read;
+
+pub use error::IngestError;
+pub use read::{IngestOptions, InputFile, Prepared, read, read_path};
 
 use crate::grid::OccupancyGrid;
 use crate::model::Nrg;

@@ -5,14 +5,14 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr};
-use nrgdb::format::{self, ModelFormat};
+use nrgdb::format::{self, Declared, FileKind, ModelFormat};
 use nrgdb::indoorgml;
 
 /// Arguments of `nrgdb convert`.
 #[derive(Debug, clap::Args)]
 #[command(
-    after_help = "Formats by extension: .gml/.xml IndoorGML 1.0.3, .json the model's JSON form, \
-.geojson a GeoJSON FeatureCollection (metres in the map frame).\n\
+    after_help = "Formats by extension (the input's also by its content): .gml/.xml IndoorGML 1.0.3, \
+.json the model's JSON form, .geojson a GeoJSON FeatureCollection (metres in the map frame).\n\
 IndoorGML to IndoorGML keeps the whole document (3D geometry, every layer, inter-layer connections); \
 any other conversion goes through the 2D model, written with walked connection lengths \
 (IndoorGML Transitions and GeoJSON connection lines are the walked paths through the doorways)."
@@ -29,11 +29,15 @@ pub struct Args {
 
 /// Runs `nrgdb convert`.
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
-    let from = ModelFormat::of(&args.input).into_diagnostic()?;
     let to = ModelFormat::of(&args.output).into_diagnostic()?;
+    let bytes = format::read_bytes(&args.input, args.max_bytes).into_diagnostic()?;
+    let name = args.input.to_string_lossy();
+    let from = format::detect_model(&Declared::name(&name), &bytes).into_diagnostic()?;
     if from == ModelFormat::IndoorGml && to == ModelFormat::IndoorGml {
-        let doc = indoorgml::read_file(&args.input, args.max_bytes)
+        let kind = FileKind::Model(from);
+        let doc = format::utf8_text(&bytes, &args.input, kind)
             .into_diagnostic()
+            .and_then(|text| indoorgml::read_str(text).into_diagnostic())
             .wrap_err_with(|| format!("cannot read {}", args.input.display()))?;
         indoorgml::write_file(&doc, &args.output).into_diagnostic()?;
         writeln!(
@@ -47,7 +51,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         .into_diagnostic()?;
         return Ok(ExitCode::SUCCESS);
     }
-    let (nrg, fixes) = format::read_model_fixing(&args.input, args.max_bytes).into_diagnostic()?;
+    let (nrg, fixes) = format::model_from_bytes(&bytes, from, &args.input).into_diagnostic()?;
     format::write_model(&nrg, &args.output).into_diagnostic()?;
     super::report_fixes(&fixes, out)?;
     writeln!(

@@ -6,11 +6,8 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr, miette};
-use nrgdb::diff::{
-    AlignMode, AlignParams, Comparison, DiffParams, Revision, compare, with_base_ids,
-};
-use nrgdb::grid::OccupancyGrid;
-use nrgdb::model::Nrg;
+use nrgdb::diff::{AlignMode, Comparison, DiffOptions, DiffParams, compare, with_base_ids};
+use nrgdb::query::LoadedRevision;
 
 use super::db::DbArg;
 use super::load_model;
@@ -54,72 +51,47 @@ pub struct Args {
     pub db: DbArg,
 }
 
-/// One side of the comparison, loaded.
-struct Loaded {
-    label: String,
-    nrg: Nrg,
-    grid: Option<OccupancyGrid>,
-}
-
 /// Runs `nrgdb diff`.
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     let (a, b) = match args.targets.as_slice() {
         [name, ra, rb] => {
             let store = args.db.open()?;
-            let load = |rev: &str| -> miette::Result<Loaded> {
-                let seq: u32 = rev.trim_start_matches('@').parse().map_err(|_| {
+            let load = |rev: &str| -> miette::Result<LoadedRevision> {
+                let seq: u64 = rev.trim_start_matches('@').parse().map_err(|_| {
                     miette!("bad revision '{rev}': expected a revision number (see `nrgdb revisions {name}`)")
                 })?;
-                let nrg = store
-                    .load(name, Some(seq))
+                LoadedRevision::load(&store, name, seq)
                     .into_diagnostic()
-                    .wrap_err_with(|| format!("loading {name}@{seq}"))?;
-                let grid = store.grid(name, Some(seq)).into_diagnostic()?;
-                Ok(Loaded {
-                    label: format!("{name}@{seq}"),
-                    nrg,
-                    grid,
-                })
+                    .wrap_err_with(|| format!("loading {name}@{seq}"))
             };
             (load(ra)?, load(rb)?)
         }
         [fa, fb] => (load_file(Path::new(fa))?, load_file(Path::new(fb))?),
         _ => return Err(miette!("expected `NAME A B` or `OLD NEW`")),
     };
-    let params = DiffParams {
-        min_iou: args.min_iou,
-        resize_ratio: args.resize_ratio,
-        ..DiffParams::default()
-    };
-    let mode = if args.align {
-        AlignMode::Always
-    } else if args.no_align {
-        AlignMode::Never
-    } else {
-        AlignMode::Auto
+    let options = DiffOptions {
+        align: if args.align {
+            AlignMode::Always
+        } else if args.no_align {
+            AlignMode::Never
+        } else {
+            AlignMode::Auto
+        },
+        params: DiffParams {
+            min_iou: args.min_iou,
+            resize_ratio: args.resize_ratio,
+            ..DiffParams::default()
+        },
+        ..DiffOptions::default()
     };
     let Comparison {
-        mut changes,
+        changes,
         moved,
         alignment,
         ..
-    } = compare(
-        Revision {
-            nrg: &a.nrg,
-            grid: a.grid.as_ref(),
-        },
-        Revision {
-            nrg: &b.nrg,
-            grid: b.grid.as_ref(),
-        },
-        mode,
-        &params,
-        &AlignParams::default(),
-    )
-    .into_diagnostic()
-    .wrap_err_with(|| format!("comparing {} with {}", a.label, b.label))?;
-    changes.from = Some(a.label.clone());
-    changes.to = Some(b.label.clone());
+    } = compare(a.side(), b.side(), &options)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("comparing {} with {}", a.label, b.label))?;
     if let Some(path) = &args.output {
         nrgdb::atomic::write(path, changes.to_json().as_bytes())
             .into_diagnostic()
@@ -155,9 +127,11 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     })
 }
 
-fn load_file(path: &Path) -> miette::Result<Loaded> {
+/// A model file as a side of the comparison, labelled by its file name
+/// (a `.yaml` map extracted, keeping its grid).
+pub fn load_file(path: &Path) -> miette::Result<LoadedRevision> {
     let model = load_model(path)?;
-    Ok(Loaded {
+    Ok(LoadedRevision {
         label: path.file_name().map_or_else(
             || path.display().to_string(),
             |n| n.to_string_lossy().into_owned(),

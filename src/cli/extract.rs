@@ -6,13 +6,13 @@ use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr};
 use nrgdb::extract::{ExtractParams, Extraction, Method, extract};
-use nrgdb::format::ModelFormat;
+use nrgdb::format::{FileKind, ModelFormat, PictureFormat};
 use nrgdb::grid::{LoadOptions, OccupancyGrid, load_image, load_map};
 use nrgdb::render::{RenderOptions, Scene};
 use nrgdb::route::{WalkedModel, walked_model};
 
 use super::progress;
-use super::render::{PictureFormat, write_picture};
+use super::render::write_picture;
 
 /// Map input options shared by `extract` and `eval`.
 #[derive(Debug, clap::Args)]
@@ -132,11 +132,10 @@ impl MapArgs {
     }
 }
 
-/// Whether a path names a ROS map YAML.
+/// Whether a path names a ROS map YAML (by its extension: a folder's
+/// maps are listed without reading every file; `nrgdb::format` decides).
 pub fn is_yaml(path: &Path) -> bool {
-    path.extension()
-        .and_then(|e| e.to_str())
-        .is_some_and(|e| e.eq_ignore_ascii_case("yaml") || e.eq_ignore_ascii_case("yml"))
+    FileKind::by_extension(&path.to_string_lossy()) == Some(FileKind::MapYaml)
 }
 
 /// Applies `--set KEY=VALUE` overrides to `params` through its TOML form, so
@@ -249,7 +248,12 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         ),
         None => None,
     };
-    let picture_format = args.png.as_deref().map(PictureFormat::of).transpose()?;
+    let picture_format = args
+        .png
+        .as_deref()
+        .map(PictureFormat::of)
+        .transpose()
+        .into_diagnostic()?;
     if let (Some(path), Some(gml)) = (&args.out, gml) {
         write_out(path, gml.as_bytes())?;
     }

@@ -5,7 +5,6 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr};
-use nrgdb::store::ImportMeta;
 
 use super::db::{DbArg, author};
 use super::{load_model, report_fixes};
@@ -45,13 +44,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     };
     let model = load_model(&args.file)?;
     spinner.set_message(format!("storing {} spaces", model.nrg.spaces().len()));
-    let name = args.file.file_name().map_or_else(
-        || args.file.display().to_string(),
-        |n| n.to_string_lossy().into_owned(),
-    );
-    let mut meta =
-        ImportMeta::new(args.message, author(args.author)).with_source(name, &model.bytes);
-    meta.params = model.params;
+    let meta = model.meta(args.message, author(args.author));
     let mut store = args.db.open()?;
     let done = nrgdb::ingest::ingest(&mut store, &args.map, &model.nrg, meta, model.grid.as_ref())
         .into_diagnostic()

@@ -1,66 +1,23 @@
-//! Reading and writing model files for the CLI: IndoorGML, model JSON and
-//! GeoJSON by extension (`nrgdb::format`), and occupancy maps (`.yaml`),
-//! which are extracted first.
+//! Reading and writing model files for the CLI. Reading is the library's
+//! `nrgdb::ingest::read_path` (the same code the server runs on uploads):
+//! IndoorGML, model JSON and GeoJSON, told by name and content, and
+//! occupancy maps (`.yaml` with their image), which are extracted first.
+//! Writing goes by extension (`nrgdb::format`).
 
 use std::path::Path;
 
-use miette::{IntoDiagnostic, WrapErr};
-use nrgdb::extract::{ExtractParams, extract};
+use miette::IntoDiagnostic;
 use nrgdb::format::ModelFormat;
-use nrgdb::grid::{LoadOptions, load_map};
-use nrgdb::indoorgml::{DEFAULT_MAX_BYTES, WeightFixes};
+use nrgdb::indoorgml::WeightFixes;
+use nrgdb::ingest::{IngestOptions, Prepared, read_path};
 use nrgdb::model::Nrg;
 
-/// A model read from a file, with the bytes it came from.
-pub struct ModelFile {
-    /// The model.
-    pub nrg: Nrg,
-    /// The file's bytes (hashed into the revision record).
-    pub bytes: Vec<u8>,
-    /// Extraction parameters, when the model was extracted from a map.
-    pub params: Option<serde_json::Value>,
-    /// The occupancy grid, when the model was extracted from a map.
-    pub grid: Option<nrgdb::grid::OccupancyGrid>,
-    /// IndoorGML Transitions whose missing or 0 weight was fixed.
-    pub weights_fixed: WeightFixes,
-}
-
 /// Reads a model: `.gml`/`.xml` (IndoorGML), `.json` (model JSON),
-/// `.geojson`, or `.yaml` (a ROS occupancy map, extracted with default
-/// parameters).
-pub fn load_model(path: &Path) -> miette::Result<ModelFile> {
-    let bytes = std::fs::read(path)
-        .into_diagnostic()
-        .wrap_err_with(|| format!("reading {}", path.display()))?;
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or("")
-        .to_ascii_lowercase();
-    if ext == "yaml" || ext == "yml" {
-        let grid = load_map(path, &LoadOptions::default()).into_diagnostic()?;
-        let params = ExtractParams::default();
-        let extraction = extract(&grid, &params)
-            .into_diagnostic()
-            .wrap_err_with(|| format!("extracting the NRG of {}", path.display()))?;
-        let params = serde_json::to_value(&params).ok();
-        return Ok(ModelFile {
-            nrg: extraction.nrg,
-            bytes,
-            params,
-            grid: Some(grid),
-            weights_fixed: WeightFixes::default(),
-        });
-    }
-    let (nrg, weights_fixed) =
-        nrgdb::format::read_model_fixing(path, DEFAULT_MAX_BYTES).into_diagnostic()?;
-    Ok(ModelFile {
-        nrg,
-        bytes,
-        params: None,
-        grid: None,
-        weights_fixed,
-    })
+/// `.geojson`, or `.yaml` (a ROS occupancy map with its image, extracted
+/// with default parameters), with the grid of a map and where it came from.
+pub fn load_model(path: &Path) -> miette::Result<Prepared> {
+    // The errors name the file (and the part: its image, a line).
+    read_path(path, &IngestOptions::default()).into_diagnostic()
 }
 
 /// Says how many IndoorGML Transition weights were fixed on reading, if any.

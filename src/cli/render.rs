@@ -7,13 +7,16 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr};
+use nrgdb::diff::{DiffOptions, compare};
+use nrgdb::format::PictureFormat;
 use nrgdb::grid::{LoadOptions, OccupancyGrid, load_map};
 use nrgdb::model::{Nrg, SpaceId};
+use nrgdb::query::LoadedRevision;
 use nrgdb::render::{LabelMode, RenderOptions, RouteOverlay, Scene, diff_overlay, render_svg};
 use nrgdb::route::{Budget, NavMesh, RouteRequest, shortest_route};
 
 use super::db::{DbArg, parse_map_rev};
-use super::load_model;
+use super::diff::load_file;
 
 /// Draw a model as a picture: each space filled by its kind over the
 /// occupancy map, the graph with labels, optionally a route or the changes
@@ -33,7 +36,7 @@ pub struct Args {
     #[arg(long, num_args = 2, value_names = ["FROM", "TO"])]
     pub route: Option<Vec<String>>,
     /// Draw what changed from A to B (revision numbers of the map, NAME@REV,
-    /// or model files); the picture shows B.
+    /// or model files); the picture shows B with the change set of `nrgdb diff A B`.
     #[arg(long, num_args = 2, value_names = ["A", "B"])]
     pub diff: Option<Vec<String>>,
     /// Pixels per metre [default: the longer side about 1200 px].
@@ -54,9 +57,12 @@ pub struct Args {
 
 /// Runs `nrgdb render`.
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
-    let format = PictureFormat::of(&args.out)?;
+    let format = PictureFormat::of(&args.out).into_diagnostic()?;
     let base = resolve(&args.model, None, &args.db)?;
-    let background = args.map.clone().or_else(|| base.map_yaml.clone());
+    let background = match &args.map {
+        Some(path) => Some(load_grid(path)?),
+        None => base.map_grid.clone(),
+    };
     let (nrg, title, diff) = match &args.diff {
         Some(pair) => {
             let (Some(a), Some(b)) = (pair.first(), pair.get(1)) else {
@@ -64,13 +70,19 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
             };
             let old = resolve(a, Some(&base), &args.db)?;
             let new = resolve(b, Some(&base), &args.db)?;
-            let overlay = diff_overlay(&old.nrg, &new.nrg);
-            let title = format!("{} -> {}", old.title, new.title);
-            (new.nrg, title, Some(overlay))
+            // The change set of `nrgdb diff A B`, drawn over B.
+            let done = compare(old.rev.side(), new.rev.side(), &DiffOptions::default())
+                .into_diagnostic()
+                .wrap_err_with(|| {
+                    format!("--diff: comparing {} with {}", old.rev.label, new.rev.label)
+                })?;
+            let overlay = diff_overlay(&done.changes, &old.rev.nrg, &new.rev.nrg);
+            let title = format!("{} -> {}", old.rev.label, new.rev.label);
+            (new.rev.nrg, title, Some(overlay))
         }
-        None => (base.nrg, base.title, None),
+        None => (base.rev.nrg, base.rev.label, None),
     };
-    let map = background.as_deref().map(load_grid).transpose()?;
+    let map = background;
     let route = match &args.route {
         Some(pair) => {
             let (Some(from), Some(to)) = (pair.first(), pair.get(1)) else {
@@ -124,34 +136,6 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// The picture formats.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum PictureFormat {
-    /// PNG (tiny-skia).
-    Png,
-    /// SVG.
-    Svg,
-}
-
-impl PictureFormat {
-    /// The format a file's extension names.
-    pub fn of(path: &Path) -> miette::Result<PictureFormat> {
-        let ext = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .unwrap_or("")
-            .to_ascii_lowercase();
-        match ext.as_str() {
-            "png" => Ok(PictureFormat::Png),
-            "svg" => Ok(PictureFormat::Svg),
-            _ => miette::bail!(
-                "{}: unknown picture format '.{ext}' (use a .png or .svg file name)",
-                path.display()
-            ),
-        }
-    }
-}
-
 /// Renders `scene` and writes it atomically to `path` as `format`.
 pub fn write_picture(path: &Path, format: PictureFormat, scene: &Scene<'_>) -> miette::Result<()> {
     let bytes = match format {
@@ -171,14 +155,14 @@ pub fn write_picture(path: &Path, format: PictureFormat, scene: &Scene<'_>) -> m
         .wrap_err_with(|| format!("{}: cannot write", path.display()))
 }
 
-/// A model to draw, where it came from, and its map when it is one.
+/// A model to draw (labelled with where it came from, with the grid it
+/// was extracted from when known), and its map when it is one.
 struct Resolved {
-    nrg: Nrg,
-    title: String,
+    rev: LoadedRevision,
     /// The map's name in the database (for `--diff 1 3`).
     map_name: Option<String>,
-    /// A .yaml occupancy map the model was extracted from.
-    map_yaml: Option<PathBuf>,
+    /// The grid of the .yaml occupancy map the model was extracted from.
+    map_grid: Option<OccupancyGrid>,
 }
 
 /// `spec` is a model file, NAME[@REV], or (with `base` a stored map) a bare
@@ -186,17 +170,11 @@ struct Resolved {
 fn resolve(spec: &str, base: Option<&Resolved>, db: &DbArg) -> miette::Result<Resolved> {
     let path = Path::new(spec);
     if path.is_file() {
-        let is_yaml = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .is_some_and(|e| e.eq_ignore_ascii_case("yaml") || e.eq_ignore_ascii_case("yml"));
+        let rev = load_file(path)?;
         return Ok(Resolved {
-            nrg: load_model(path)?.nrg,
-            title: path
-                .file_name()
-                .map_or_else(|| spec.to_string(), |n| n.to_string_lossy().into_owned()),
+            map_grid: rev.grid.clone(),
+            rev,
             map_name: None,
-            map_yaml: is_yaml.then(|| path.to_path_buf()),
         });
     }
     let (name, rev) = match (spec.parse::<u32>(), base.and_then(|b| b.map_name.clone())) {
@@ -224,15 +202,13 @@ fn resolve(spec: &str, base: Option<&Resolved>, db: &DbArg) -> miette::Result<Re
                 db.db.display()
             )
         })?;
-    let nrg = store
-        .load(&name, Some(info.seq))
+    let rev = LoadedRevision::load(&store, &name, u64::from(info.seq))
         .into_diagnostic()
         .wrap_err_with(|| format!("loading {name}@{}", info.seq))?;
     Ok(Resolved {
-        nrg,
-        title: format!("{name}@{}", info.seq),
+        rev,
         map_name: Some(name),
-        map_yaml: None,
+        map_grid: None,
     })
 }
 

@@ -2,7 +2,15 @@
 //! runs: the rigid transform taking the second map's frame into the
 //! first's, with a quality score, refused when unreliable.
 //!
-//! 1. Wall points: occupied cells next to a free cell, in metres.
+//! 1. Wall points: the boundary of the free space, as extraction sees it
+//!    (free is the only class extraction trusts; everything else is
+//!    obstacle): every cell that is not free and has a free 4-neighbour, in
+//!    metres. Not "occupied cells next to free ones": on a clean drawn map
+//!    the walls are anti-aliased, so a band of intermediate greys (classed
+//!    unknown by the loader's ROS thresholds) always lies between the black
+//!    core and the white floor and no occupied cell touches a free one
+//!    (office_g: 159 159 occupied cells, none next to a free cell); some
+//!    drawn maps have grey walls with no occupied cell at all.
 //! 2. Rotation candidates: histograms of local wall directions (PCA of the
 //!    wall points within 4 cells, 1° bins, mod 180°) are cross-correlated
 //!    circularly; the best shift δ and its multiples of 90° (buildings are
@@ -25,40 +33,11 @@ use image::{GrayImage, Luma};
 use rstar::RTree;
 
 use super::error::DiffError;
+use super::params::AlignParams;
 use super::transform::RigidTransform;
 use crate::grid::{Cell, OccupancyGrid};
 use crate::imaging::squared_distance_to_foreground;
 use crate::model::Point;
-
-/// Tuning of [`align_grids`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct AlignParams {
-    /// Half-width of the translation search around the centroid fit, m
-    /// (default 4).
-    pub search_m: f64,
-    /// Wall points used (evenly subsampled; default 2000).
-    pub max_points: usize,
-    /// A wall point is an inlier within this distance of a reference wall;
-    /// `None`: twice the coarser map resolution.
-    pub inlier_tol_m: Option<f64>,
-    /// Smallest inlier share accepted (default 0.5).
-    pub min_inliers: f64,
-    /// A second, different fit this close to the best makes the alignment
-    /// ambiguous (default 0.05).
-    pub ambiguity_margin: f64,
-}
-
-impl Default for AlignParams {
-    fn default() -> Self {
-        AlignParams {
-            search_m: 4.0,
-            max_points: 2000,
-            inlier_tol_m: None,
-            min_inliers: 0.5,
-            ambiguity_margin: 0.05,
-        }
-    }
-}
 
 /// A rigid alignment and how well it fits.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -205,13 +184,22 @@ pub fn alignment_quality(
     quality(&tree, &pts, transform, tol)
 }
 
-/// Occupied cells with a free 4-neighbour, as cell centres in metres.
+/// The boundary of the free space: cells that are not free (occupied or
+/// unknown) with a free 4-neighbour, as cell centres in metres (see the
+/// module doc for why not only occupied cells).
+///
+/// ```
+/// use nrgdb::grid::OccupancyGrid;
+/// // A drawn wall: black core `#`, anti-aliased edge `?` (unknown), floor `.`.
+/// let g = OccupancyGrid::from_ascii("...?#?...", 1.0);
+/// assert_eq!(nrgdb::diff::wall_points(&g), vec![[3.5, 0.5], [5.5, 0.5]]);
+/// ```
 pub fn wall_points(grid: &OccupancyGrid) -> Vec<Point> {
     let (w, h) = (grid.width, grid.height);
     let mut out = Vec::new();
     for row in 0..h {
         for col in 0..w {
-            if grid.cell(col, row) != Some(Cell::Occupied) {
+            if grid.cell(col, row) == Some(Cell::Free) {
                 continue;
             }
             let free = |c: i64, r: i64| {
@@ -540,6 +528,89 @@ mod tests {
             close(&found.transform, &want, 0.3, 0.1),
             "{found:?} vs {want:?}"
         );
+    }
+
+    /// [`floor`] as a clean drawing: black walls whose edges are
+    /// anti-aliased (greys between the loader's occupied and free
+    /// thresholds), written as a PNG map and loaded as any map is.
+    fn drawn_floor() -> OccupancyGrid {
+        let f = floor();
+        let grey: Vec<u8> = (0..f.height)
+            .flat_map(|r| (0..f.width).map(move |c| (c, r)))
+            .map(|(c, r)| match f.cell(c, r) {
+                Some(Cell::Occupied) => 0,
+                Some(Cell::Free) => {
+                    let near_wall =
+                        [(0i64, 1i64), (0, -1), (1, 0), (-1, 0)]
+                            .iter()
+                            .any(|(dc, dr)| {
+                                let (cc, rr) = (i64::from(c) + dc, i64::from(r) + dr);
+                                u32::try_from(cc)
+                                    .ok()
+                                    .zip(u32::try_from(rr).ok())
+                                    .and_then(|(cc, rr)| f.cell(cc, rr))
+                                    == Some(Cell::Occupied)
+                            });
+                    if near_wall { 150 } else { 255 }
+                }
+                _ => 178,
+            })
+            .collect();
+        let dir = tempfile::tempdir().unwrap();
+        GrayImage::from_raw(f.width, f.height, grey)
+            .unwrap()
+            .save(dir.path().join("drawn.png"))
+            .unwrap();
+        let yaml = dir.path().join("drawn.yaml");
+        std::fs::write(
+            &yaml,
+            "image: drawn.png\nresolution: 0.1\norigin: [0.0, 0.0, 0.0]\nnegate: 0\n\
+             occupied_thresh: 0.65\nfree_thresh: 0.196\n",
+        )
+        .unwrap();
+        crate::grid::load_map(&yaml, &crate::grid::LoadOptions::default()).unwrap()
+    }
+
+    #[test]
+    fn issue_19_clean_drawn_maps_have_walls() {
+        let a = drawn_floor();
+        // As office_g: walls are drawn black, yet no occupied cell touches
+        // a free one (the anti-aliased edge lies between), which is what
+        // the wall points once required ("0 wall pixels").
+        let occupied = a.cells.iter().filter(|c| **c == Cell::Occupied).count();
+        assert!(occupied > 300, "{occupied}");
+        let touching = (0..a.height)
+            .flat_map(|r| (0..a.width).map(move |c| (c, r)))
+            .filter(|&(c, r)| a.cell(c, r) == Some(Cell::Occupied))
+            .filter(|&(c, r)| {
+                [
+                    (c.wrapping_sub(1), r),
+                    (c + 1, r),
+                    (c, r.wrapping_sub(1)),
+                    (c, r + 1),
+                ]
+                .iter()
+                .any(|&(c, r)| a.cell(c, r) == Some(Cell::Free))
+            })
+            .count();
+        assert_eq!(touching, 0);
+        assert!(wall_points(&a).len() > 300);
+        // Itself: the same frame, and aligned (when forced) to the identity.
+        let params = AlignParams::default();
+        let same = alignment_quality(&a, &a, RigidTransform::IDENTITY, &params);
+        assert_eq!(same.inliers, 1.0);
+        let fit = align_grids(&a, &a, &params).unwrap();
+        assert!(
+            close(&fit.transform, &RigidTransform::IDENTITY, 0.3, 0.05),
+            "{fit:?}"
+        );
+        // And in another frame.
+        let mut b = a.clone();
+        b.origin = [-3.0, 1.0, (-70f64).to_radians()];
+        let found = align_grids(&a, &b, &params).unwrap();
+        let want = RigidTransform::from_degrees(-70.0, -3.0, 1.0).inverse();
+        assert!(found.inliers > 0.95, "{found:?}");
+        assert!(close(&found.transform, &want, 0.3, 0.1), "{found:?}");
     }
 
     #[test]

@@ -1,89 +1,124 @@
-//! Comparing two revisions end to end: decide whether their frames differ,
-//! align when needed, then [`diff`]. The CLI, the query language and the
-//! server all call [`compare`].
+//! The change-set service: what changed between two revisions, end to
+//! end. [`compare`] is the one function that computes a change set for
+//! callers: `nrgdb diff`, the query language's `DIFF`, the server's
+//! `GET /diff`, and the pictures (`render --diff`, the viewer's `?diff=`),
+//! which draw the change set it returns and never diff by themselves. It
+//! takes both revisions (model, source grid when known, a label) and
+//! [`DiffOptions`] (alignment mode, thresholds), decides whether the
+//! frames differ, aligns when needed, then [`diff`]s.
 //!
 //! Frames differ when, at the identity transform, fewer than
 //! `AlignParams::min_inliers` of B's wall points lie within the inlier
 //! tolerance of A's walls, and fewer than that share of A's walls near
 //! B's ([`alignment_quality`] both ways: a building extended or cut down
 //! in the same frame still agrees one way). Walls come from the
-//! occupancy grids the revisions were extracted from, or, for models
-//! without one, from the boundary of the union of their space polygons
-//! rasterised at 0.1 m ([`model_grid`]).
+//! occupancy grids the revisions were extracted from when both have one,
+//! else, for both alike, from the boundary of the union of their space
+//! polygons rasterised at 0.1 m ([`model_grid`]).
+//!
+//! Uses the aligner, the detector and the grid; must not use store, query
+//! or anything above them (the query layer loads revisions with their
+//! grids through its `Source` and calls this).
 
-use serde::Serialize;
-
-use super::align::{AlignParams, Alignment, align_grids, alignment_quality};
+use super::align::{Alignment, align_grids, alignment_quality};
 use super::change_set::ChangeSet;
-use super::detect::{DiffParams, diff};
+use super::detect::diff;
 use super::error::DiffError;
+use super::params::{AlignMode, DiffOptions};
 use super::transform::RigidTransform;
 use crate::grid::{Cell, OccupancyGrid};
 use crate::model::{Nrg, point_in_ring};
 
-/// When to align B to A before comparing.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum AlignMode {
-    /// Never: the two share a frame.
-    Never,
-    /// When their frames differ (see the module doc).
-    #[default]
-    Auto,
-    /// Always.
-    Always,
-}
-
-/// One side of a comparison: a model and, when known, the occupancy grid
-/// it was extracted from.
+/// One side of a comparison: a model, the occupancy grid it was extracted
+/// from when known, and a label for the change set (`from` / `to`).
+///
+/// ```
+/// use nrgdb::diff::Revision;
+/// let nrg = nrgdb::fixtures::corridor_building(2);
+/// let side = Revision::new(&nrg).with_label("building@1");
+/// assert!(side.grid.is_none());
+/// ```
 #[derive(Debug, Clone, Copy)]
 pub struct Revision<'a> {
     /// The model.
     pub nrg: &'a Nrg,
     /// Its source grid, if any.
     pub grid: Option<&'a OccupancyGrid>,
+    /// What to call it in the change set (`map@rev`, a file name), if
+    /// anything.
+    pub label: Option<&'a str>,
+}
+
+impl<'a> Revision<'a> {
+    /// A model without a grid or a label.
+    pub fn new(nrg: &'a Nrg) -> Revision<'a> {
+        Revision {
+            nrg,
+            grid: None,
+            label: None,
+        }
+    }
+
+    /// The same side with its source grid (or none).
+    pub fn with_grid(self, grid: Option<&'a OccupancyGrid>) -> Revision<'a> {
+        Revision { grid, ..self }
+    }
+
+    /// The same side with a label.
+    pub fn with_label(self, label: &'a str) -> Revision<'a> {
+        Revision {
+            label: Some(label),
+            ..self
+        }
+    }
 }
 
 /// The result of [`compare`].
 #[derive(Debug, Clone)]
 pub struct Comparison {
-    /// The changes from A to B (B moved into A's frame when aligned).
+    /// The changes from A to B (B moved into A's frame when aligned), with
+    /// the two labels as `from` and `to` and the transform as `alignment`.
     pub changes: ChangeSet,
     /// B in A's frame (B itself when not aligned): `apply(A, changes)`.
     pub moved: Nrg,
-    /// The alignment used, if any.
+    /// The alignment used, if any, with its quality.
     pub alignment: Option<Alignment>,
     /// How well the frames agreed before aligning (at the identity, the
-    /// larger of the shares of B's walls on A's and of A's on B's).
+    /// larger of the shares of B's walls on A's and of A's on B's); `None`
+    /// when that was not measured (`AlignMode::Never` or `Always`).
     pub identity_inliers: Option<f64>,
 }
 
-/// Compares B with the base A: aligns B to A as `mode` says (refusing with
-/// [`DiffError::Unreliable`] when no reliable alignment exists), then
-/// diffs. The change set records the transform in `alignment`.
+/// What changed from A to B: aligns B to A as `options.align` says
+/// (refusing with [`DiffError::Unreliable`] or [`DiffError::TooFewWalls`]
+/// when no reliable alignment exists), then diffs with `options.params`.
+/// The change set records the transform in `alignment` and the sides'
+/// labels in `from` and `to`. See the module doc.
 ///
 /// ```
-/// use nrgdb::diff::{compare, AlignMode, AlignParams, DiffParams, Revision, RigidTransform};
+/// use nrgdb::diff::{compare, DiffOptions, Revision, RigidTransform};
 /// let a = nrgdb::fixtures::corridor_building(5);
 /// // The same building from another run: turned 30° and moved.
 /// let b = RigidTransform::from_degrees(30.0, 2.0, 1.0).apply_to_nrg(&a)?;
-/// let side = |nrg| Revision { nrg, grid: None }; // walls from the outlines
-/// let done = compare(side(&a), side(&b), AlignMode::Auto, &DiffParams::default(),
-///     &AlignParams::default())?;
+/// // No grids: walls from the outlines.
+/// let done = compare(Revision::new(&a), Revision::new(&b), &DiffOptions::default())?;
 /// assert!(done.alignment.is_some() && done.changes.is_empty());
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn compare(
     a: Revision<'_>,
     b: Revision<'_>,
-    mode: AlignMode,
-    params: &DiffParams,
-    align: &AlignParams,
+    options: &DiffOptions,
 ) -> Result<Comparison, DiffError> {
+    let DiffOptions {
+        align: mode,
+        params,
+        align_params: align,
+    } = options;
     params.validate()?;
     let mut identity_inliers = None;
     let mut alignment = None;
-    if mode != AlignMode::Never {
+    if *mode != AlignMode::Never {
         let own;
         let (ga, gb) = match (a.grid, b.grid) {
             (Some(ga), Some(gb)) => (ga, gb),
@@ -95,7 +130,7 @@ pub fn compare(
                 (&own.0, &own.1)
             }
         };
-        let needed = mode == AlignMode::Always || {
+        let needed = *mode == AlignMode::Always || {
             // Both ways: a building extended (B ⊃ A) or cut down (B ⊂ A)
             // in the same frame still agrees in one direction.
             let ba = alignment_quality(ga, gb, RigidTransform::IDENTITY, align).inliers;
@@ -113,6 +148,8 @@ pub fn compare(
     };
     let mut changes = diff(a.nrg, &moved, params);
     changes.alignment = alignment.map(|al| al.transform);
+    changes.from = a.label.map(str::to_string);
+    changes.to = b.label.map(str::to_string);
     Ok(Comparison {
         changes,
         moved,
@@ -217,15 +254,8 @@ mod tests {
     #[test]
     fn an_extension_in_the_same_frame_is_not_aligned() {
         let (a, b) = (corridor_building(2), corridor_building(9));
-        let rev = |nrg| Revision { nrg, grid: None };
-        let done = compare(
-            rev(&a),
-            rev(&b),
-            AlignMode::Auto,
-            &DiffParams::default(),
-            &AlignParams::default(),
-        )
-        .unwrap();
+        let rev = Revision::new;
+        let done = compare(rev(&a), rev(&b), &DiffOptions::default()).unwrap();
         assert!(done.alignment.is_none());
         assert!(done.changes.summary.added >= 14, "{}", done.changes.table());
     }
@@ -233,26 +263,21 @@ mod tests {
     #[test]
     fn auto_aligns_moved_models_and_not_others() {
         let a = corridor_building(6);
-        let rev = |nrg| Revision { nrg, grid: None };
-        let same = compare(
-            rev(&a),
-            rev(&a),
-            AlignMode::Auto,
-            &DiffParams::default(),
-            &AlignParams::default(),
-        )
-        .unwrap();
+        let rev = Revision::new;
+        let same = compare(rev(&a), rev(&a), &DiffOptions::default()).unwrap();
         assert!(same.alignment.is_none() && same.changes.is_empty());
         let t = RigidTransform::from_degrees(20.0, 3.0, -2.0);
         let b = t.apply_to_nrg(&a).unwrap();
         let moved = compare(
-            rev(&a),
-            rev(&b),
-            AlignMode::Auto,
-            &DiffParams::default(),
-            &AlignParams::default(),
+            rev(&a).with_label("a"),
+            rev(&b).with_label("b"),
+            &DiffOptions::default(),
         )
         .unwrap();
+        assert_eq!(
+            (moved.changes.from.as_deref(), moved.changes.to.as_deref()),
+            (Some("a"), Some("b"))
+        );
         let al = moved.alignment.unwrap();
         assert!(moved.identity_inliers.unwrap() < 0.5);
         assert!(moved.changes.is_empty(), "{}", moved.changes.table());

@@ -18,113 +18,15 @@
 
 use std::collections::{BTreeSet, HashMap};
 
-use serde::{Deserialize, Serialize};
-
 use super::change_set::{
     CHANGESET_FORMAT, ChangeSet, ConnectionChange, ConnectionChangeKind, Merge, SpaceChange,
     SpaceChangeKind, Split, Summary,
 };
-use super::error::DiffError;
-use super::matching::{MatchParams, Overlaps, match_overlaps, overlaps};
+use super::matching::{match_overlaps, overlaps};
+use super::overlaps::Overlaps;
+use super::params::{DiffParams, MatchParams};
 use super::split_merge::splits_and_merges;
 use crate::model::{Connection, Nrg, Space, SpaceId, SpaceKind, doorway};
-
-/// Thresholds of [`diff`].
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct DiffParams {
-    /// Smallest IoU for two spaces to be the same space (default 0.2, as
-    /// the store's matcher).
-    pub min_iou: f64,
-    /// A matched space is resized when its area changes by more than this
-    /// share of its old area (default 0.15) ...
-    pub resize_ratio: f64,
-    /// ... and by at least this many m² (default 1.0).
-    pub resize_min_m2: f64,
-    /// A split or merge part lies at least this share of its own area
-    /// inside the whole (default 0.5).
-    pub part_cover: f64,
-    /// ... and overlaps it by at least this many m² (default 0.1: a door
-    /// strip 0.9 m × 0.2 m still counts, pixel slivers do not).
-    pub min_part_m2: f64,
-    /// A door's width changed when it differs by more than this (default
-    /// 0.15 m: three pixels at 0.05 m/px, one and a half at 0.1 m/px).
-    pub door_width_tol_m: f64,
-    /// Two doors joining the same spaces are the same door when their
-    /// doorway centres lie at most this far apart (default 0.5 m, as the
-    /// store's matcher; see [`super::door_match`]).
-    pub door_shift_m: f64,
-}
-
-impl Default for DiffParams {
-    fn default() -> Self {
-        DiffParams {
-            min_iou: MatchParams::default().min_iou,
-            resize_ratio: 0.15,
-            resize_min_m2: 1.0,
-            part_cover: 0.5,
-            min_part_m2: 0.1,
-            door_width_tol_m: 0.15,
-            door_shift_m: MatchParams::default().door_shift_m,
-        }
-    }
-}
-
-impl DiffParams {
-    /// Checks every threshold's range.
-    pub fn validate(&self) -> Result<(), DiffError> {
-        let checks: [(&'static str, f64, bool, &'static str); 7] = [
-            (
-                "min_iou",
-                self.min_iou,
-                self.min_iou > 0.0 && self.min_iou <= 1.0,
-                "must be in (0, 1]",
-            ),
-            (
-                "resize_ratio",
-                self.resize_ratio,
-                self.resize_ratio >= 0.0,
-                "must be ≥ 0",
-            ),
-            (
-                "resize_min_m2",
-                self.resize_min_m2,
-                self.resize_min_m2 >= 0.0,
-                "must be ≥ 0",
-            ),
-            (
-                "part_cover",
-                self.part_cover,
-                self.part_cover > 0.0 && self.part_cover <= 1.0,
-                "must be in (0, 1]",
-            ),
-            (
-                "min_part_m2",
-                self.min_part_m2,
-                self.min_part_m2 >= 0.0,
-                "must be ≥ 0",
-            ),
-            (
-                "door_width_tol_m",
-                self.door_width_tol_m,
-                self.door_width_tol_m >= 0.0,
-                "must be ≥ 0",
-            ),
-            (
-                "door_shift_m",
-                self.door_shift_m,
-                self.door_shift_m >= 0.0,
-                "must be ≥ 0",
-            ),
-        ];
-        for (name, value, ok, hint) in checks {
-            if !ok || !value.is_finite() {
-                return Err(DiffError::BadParam { name, value, hint });
-            }
-        }
-        Ok(())
-    }
-}
 
 /// Compares `b` with the base `a` (both in the same frame: align first
 /// when they are not). `apply(a, &diff(a, b))`

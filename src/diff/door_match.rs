@@ -36,24 +36,9 @@
 
 use std::collections::HashMap;
 
-use super::matching::{MatchParams, Overlaps};
+use super::overlaps::{DoorSide, Overlaps};
+use super::params::MatchParams;
 use crate::model::{Nrg, Point, Ring, SpaceKind, doorway, point_in_ring};
-
-/// A door's doorway line and the non-door spaces it opens onto.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct DoorSide {
-    /// The doorway line (see the module doc); None for an empty polygon.
-    pub(crate) line: Option<[Point; 2]>,
-    /// Indices (into the model's spaces) of the non-door spaces it joins.
-    pub(crate) neighbours: Vec<usize>,
-}
-
-impl DoorSide {
-    fn centre(&self) -> Option<Point> {
-        self.line
-            .map(|[a, b]| [(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0])
-    }
-}
 
 /// One entry per space of `nrg` (in its order): the door's side for
 /// doors, None for every other kind.

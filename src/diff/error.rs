@@ -50,7 +50,7 @@ pub enum DiffError {
     /// A grid without enough walls to align.
     #[error(
         "cannot align: the {which} map has {walls} wall pixels, at least {needed} are needed \
-         (is it an empty or unknown-only map?)"
+         (wall pixels are the cells bordering its free space: does it have any?)"
     )]
     TooFewWalls {
         /// "first" or "second".

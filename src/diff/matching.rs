@@ -29,34 +29,11 @@ use std::collections::{BTreeMap, BTreeSet, HashMap};
 
 use pathfinding::prelude::{Matrix, kuhn_munkres};
 
-use super::door_match::{DoorSide, door_candidates, door_sides, line_share};
+use super::door_match::{door_candidates, door_sides, line_share};
 use super::overlap_area::{Edges, intersection_area_of};
+use super::overlaps::Overlaps;
+use super::params::MatchParams;
 use crate::model::{Nrg, Point, Ring, Space, SpaceId, convex_hull, polygon_area};
-
-/// Tuning of [`match_spaces`].
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct MatchParams {
-    /// Smallest intersection-over-union for two spaces to be the same
-    /// space (0..1). The default 0.2 tolerates a room split in up to
-    /// five parts while refusing a room and the door beside it.
-    pub min_iou: f64,
-    /// Largest distance in metres between the centres of two doors'
-    /// doorway lines for them to be the same door (they must also join
-    /// the same spaces; see [`super::door_match`]). The default 0.5 m
-    /// absorbs re-cutting and alignment error and a door widened by up to
-    /// a metre on one side; a door moved farther along its wall, or to
-    /// another wall, is removed and added.
-    pub door_shift_m: f64,
-}
-
-impl Default for MatchParams {
-    fn default() -> Self {
-        MatchParams {
-            min_iou: 0.2,
-            door_shift_m: 0.5,
-        }
-    }
-}
 
 /// One space of the new revision continuing one space of the old.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -90,54 +67,6 @@ pub struct SpaceMatch {
 /// ```
 pub fn match_spaces(old: &Nrg, new: &Nrg, params: &MatchParams) -> Vec<SpaceMatch> {
     match_overlaps(&overlaps(old, new), params)
-}
-
-/// The positive-area overlaps between the spaces of two models: every pair
-/// whose polygons share area, with both areas (holes excluded); and, for
-/// the doors, their doorway lines and how much of each lies inside the
-/// other model's non-door spaces.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Overlaps {
-    /// Ids of the old model's spaces (in its order).
-    pub old_ids: Vec<SpaceId>,
-    /// Ids of the new model's spaces (in its order).
-    pub new_ids: Vec<SpaceId>,
-    /// Area in m² of each old space.
-    pub old_area: Vec<f64>,
-    /// Area in m² of each new space.
-    pub new_area: Vec<f64>,
-    /// `(old index, new index, intersection area m²)`, intersection > 0.
-    pub pairs: Vec<(usize, usize, f64)>,
-    /// `(old index, new index, share)` for a door of one model and a
-    /// non-door space of the other: the share (0..1] of the door's doorway
-    /// line inside the space, share > 0.
-    pub door_shares: Vec<(usize, usize, f64)>,
-    /// Per old space: its doorway and neighbours when it is a door.
-    pub(crate) old_sides: Vec<Option<DoorSide>>,
-    /// Per new space: its doorway and neighbours when it is a door.
-    pub(crate) new_sides: Vec<Option<DoorSide>>,
-}
-
-impl Overlaps {
-    /// Whether old space `i` is a door.
-    pub fn old_is_door(&self, i: usize) -> bool {
-        self.old_sides.get(i).is_some_and(Option::is_some)
-    }
-
-    /// Whether new space `j` is a door.
-    pub fn new_is_door(&self, j: usize) -> bool {
-        self.new_sides.get(j).is_some_and(Option::is_some)
-    }
-
-    /// Intersection over union of pair `(i, j, inter)`.
-    pub fn iou(&self, i: usize, j: usize, inter: f64) -> f64 {
-        let union = self.old_area[i] + self.new_area[j] - inter;
-        if union > 0.0 && inter.is_finite() {
-            (inter / union).clamp(0.0, 1.0)
-        } else {
-            0.0
-        }
-    }
 }
 
 /// Every overlapping pair of spaces of `old` and `new`, found through a
@@ -403,9 +332,14 @@ impl BoxGrid {
         let to_cell = |v: f64| (v / self.cell).floor() as i64;
         let (x0, y0) = (to_cell(s.min[0]), to_cell(s.min[1]));
         let (x1, y1) = (to_cell(s.max[0]), to_cell(s.max[1]));
-        let count = (x1 - x0 + 1).saturating_mul(y1 - y0 + 1);
-        (s.min.iter().chain(&s.max).all(|v| v.is_finite()) && count <= MAX_CELLS_PER_SHAPE)
-            .then_some((x0, y0, x1, y1))
+        // Checked: a box near ±1e308 saturates the casts to i64::MIN/MAX,
+        // and `x1 - x0 + 1` wrapped to a negative count that passed the
+        // bound (an import looped for ever holding the write lock).
+        let span = |lo: i64, hi: i64| hi.checked_sub(lo)?.checked_add(1);
+        let count = span(x0, x1)?.checked_mul(span(y0, y1)?)?;
+        (s.min.iter().chain(&s.max).all(|v| v.is_finite())
+            && (1..=MAX_CELLS_PER_SHAPE).contains(&count))
+        .then_some((x0, y0, x1, y1))
     }
 
     /// Indices of the shapes whose cells meet `s`'s cells (sorted, unique).
@@ -555,6 +489,22 @@ mod tests {
 
     fn nrg(spaces: Vec<Space>) -> Nrg {
         Nrg::new(spaces, vec![]).unwrap()
+    }
+
+    /// Issue 21, defect 3: far-flung coordinates made the cell count wrap
+    /// and matching loop for ever. Spaces at the model's coordinate limit
+    /// match like any others.
+    #[test]
+    fn far_coordinates_match_without_wrapping() {
+        let far = crate::model::MAX_COORD_M;
+        let a = nrg(vec![
+            rect(1, -far, -far, -far + 4.0, -far + 3.0),
+            rect(2, far - 4.0, far - 3.0, far, far),
+            rect(3, -far, -far, far, far),
+        ]);
+        let m = match_spaces(&a, &a, &MatchParams::default());
+        assert_eq!(m.len(), 3);
+        assert!(m.iter().all(|m| m.old == m.new));
     }
 
     #[test]

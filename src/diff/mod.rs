@@ -11,9 +11,11 @@
 //! `apply(a, &diff(a, b)) == b`), the IndoorGML update ([`with_base_ids`]:
 //! B under A's identifiers) and the alignment of two maps from different
 //! mapping runs ([`align_grids`] → [`Alignment`], a rigid transform with a
-//! quality score, refused when unreliable). [`compare`] ties these together
-//! for callers (CLI, query `DIFF`, server): it decides whether two
-//! revisions' frames differ, aligns, and diffs.
+//! quality score, refused when unreliable). [`compare`] is the change-set
+//! service every caller uses (CLI, query `DIFF`, server, the pictures):
+//! given both revisions with their grids and [`DiffOptions`], it decides
+//! whether their frames differ, aligns, and diffs. Tuning lives in
+//! `params.rs`, the overlaps the matchers share in `overlaps.rs`.
 //!
 //! Uses `model`, `grid` and `imaging` (alignment); `geo` only in tests, as
 //! the reference for the exact overlap areas. Must not use store, query,
@@ -40,21 +42,23 @@ mod door_match;
 mod error;
 mod matching;
 mod overlap_area;
+mod overlaps;
+mod params;
 mod report;
 mod split_merge;
 mod transform;
 
-pub use align::{AlignParams, Alignment, align_grids, alignment_quality, wall_points};
+pub use align::{Alignment, align_grids, alignment_quality, wall_points};
 pub use apply::{apply, with_base_ids};
 pub use change_set::{
     CHANGESET_FORMAT, ChangeSet, ConnectionChange, ConnectionChangeKind, Merge, Part, SpaceChange,
     SpaceChangeKind, Split, Summary,
 };
-pub use compare::{AlignMode, Comparison, MODEL_GRID_M, Revision, compare, model_grid};
-pub use detect::{DiffParams, diff};
+pub use compare::{Comparison, MODEL_GRID_M, Revision, compare, model_grid};
+pub use detect::diff;
 pub use error::DiffError;
-pub use matching::{
-    MatchParams, Overlaps, SpaceMatch, match_overlaps, match_spaces, overlap_iou, overlaps,
-};
+pub use matching::{SpaceMatch, match_overlaps, match_spaces, overlap_iou, overlaps};
+pub use overlaps::Overlaps;
+pub use params::{AlignMode, AlignParams, DiffOptions, DiffParams, MatchParams};
 pub use report::ChangeRow;
 pub use transform::RigidTransform;

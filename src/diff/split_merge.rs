@@ -15,8 +15,8 @@
 use std::collections::{BTreeMap, HashMap};
 
 use super::change_set::{Merge, Part, Split};
-use super::detect::DiffParams;
-use super::matching::Overlaps;
+use super::overlaps::Overlaps;
+use super::params::DiffParams;
 use crate::model::SpaceId;
 
 /// The splits (by old id) and merges (by new id) that the overlaps show.

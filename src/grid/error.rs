@@ -68,6 +68,33 @@ pub enum GridError {
         /// The configured limit.
         limit: u64,
     },
+    /// The map YAML is larger than a map YAML can sensibly be.
+    #[error(
+        "{path}: the map yaml is {size} bytes, above the limit of {limit} (is it a map_server yaml?)"
+    )]
+    YamlTooLarge {
+        /// The YAML file.
+        path: PathBuf,
+        /// Its size.
+        size: u64,
+        /// The limit.
+        limit: u64,
+    },
+    /// The resolution is so fine that one square metre exceeds the pixel
+    /// limit.
+    #[error(
+        "{path}: field `resolution` = {resolution} m/px is too fine: one square metre would be {per_m2:.3e} px, above the limit of {limit} px (is the resolution in metres per pixel?)"
+    )]
+    ResolutionTooFine {
+        /// The YAML file (or the bare image).
+        path: PathBuf,
+        /// The resolution, metres per pixel.
+        resolution: f64,
+        /// Pixels in one square metre at that resolution.
+        per_m2: f64,
+        /// The configured pixel limit.
+        limit: u64,
+    },
     /// The image size disagrees with what was expected.
     #[error(
         "{path}: image is {width}x{height} px but {expected_width}x{expected_height} px were expected ({what})"

@@ -1,10 +1,20 @@
-//! Image decoding and cell classification.
+//! Image decoding and cell classification, from files or from bytes in
+//! memory (an upload). Sizes that come from the input are bounded before
+//! anything is allocated for them: the image's header dimensions against
+//! [`LoadOptions::max_pixels`] (and the decoder's own limits set to what
+//! was checked), the map YAML's size, and the resolution (one square
+//! metre must fit the pixel limit, so that metre-sized structures of the
+//! extraction stay bounded grids).
 
+use std::io::{BufRead, Cursor, Seek};
 use std::path::Path;
 
-use image::{DynamicImage, ImageReader};
+use image::{DynamicImage, ImageReader, Limits};
 
 use super::{Cell, GridError, MapMode, MapYaml, OccupancyGrid};
+
+/// Largest map YAML accepted, in bytes (a ROS map YAML is a few lines).
+pub const MAX_YAML_BYTES: u64 = 1 << 20;
 
 /// How to read and classify a map image.
 #[derive(Debug, Clone, PartialEq)]
@@ -12,7 +22,8 @@ pub struct LoadOptions {
     /// A pixel is free iff its grey (after negate) is at least this (default 250:
     /// the IPA benchmark's rule; ROS's `free_thresh` misreads many maps).
     pub free_min_grey: u8,
-    /// Largest accepted image, in pixels (default 64 Mpx).
+    /// Largest accepted image, in pixels (default 64 Mpx). Also bounds the
+    /// resolution: one square metre may take at most this many pixels.
     pub max_pixels: u64,
 }
 
@@ -29,7 +40,50 @@ impl Default for LoadOptions {
 pub fn load_map(yaml_path: &Path, options: &LoadOptions) -> Result<OccupancyGrid, GridError> {
     let yaml = MapYaml::read(yaml_path)?;
     let img = decode_image(&yaml.image, options)?;
+    check_resolution(yaml_path, yaml.resolution, options)?;
     classify(img, &yaml, options)
+}
+
+/// Loads a map from its YAML and image in memory: what [`load_map`] does
+/// with files, for an upload. `yaml_name` and `image_name` name the two in
+/// errors (the YAML's own `image:` field is not followed: the image is
+/// `image`). The image's format is read from its first bytes (PGM or PNG).
+///
+/// ```
+/// use std::path::Path;
+/// use nrgdb::grid::{LoadOptions, load_map_bytes};
+/// let yaml = b"image: m.pgm\nresolution: 0.5\norigin: [0, 0, 0]\n";
+/// let pgm = b"P5\n2 1\n255\n\xff\x00";
+/// let grid = load_map_bytes(Path::new("m.yaml"), yaml, Path::new("m.pgm"), pgm, &LoadOptions::default())?;
+/// assert_eq!((grid.width, grid.height, grid.free_count()), (2, 1, 1));
+/// # Ok::<(), nrgdb::grid::GridError>(())
+/// ```
+pub fn load_map_bytes(
+    yaml_name: &Path,
+    yaml: &[u8],
+    image_name: &Path,
+    image: &[u8],
+    options: &LoadOptions,
+) -> Result<OccupancyGrid, GridError> {
+    if yaml.len() as u64 > MAX_YAML_BYTES {
+        return Err(GridError::YamlTooLarge {
+            path: yaml_name.to_path_buf(),
+            size: yaml.len() as u64,
+            limit: MAX_YAML_BYTES,
+        });
+    }
+    let text = std::str::from_utf8(yaml).map_err(|e| GridError::Yaml {
+        path: yaml_name.to_path_buf(),
+        message: format!(
+            "not UTF-8 text (invalid byte at offset {})",
+            e.valid_up_to()
+        ),
+    })?;
+    let mut map = MapYaml::parse(text, yaml_name)?;
+    map.image = image_name.to_path_buf();
+    let img = decode_image_bytes(image, image_name, options)?;
+    check_resolution(yaml_name, map.resolution, options)?;
+    classify(img, &map, options)
 }
 
 /// Loads a bare image (PGM or PNG) with the given resolution, origin `[0, 0, 0]`
@@ -57,7 +111,25 @@ pub fn load_image(
         mode: MapMode::Trinary,
     };
     let img = decode_image(image_path, options)?;
+    check_resolution(image_path, resolution, options)?;
     classify(img, &yaml, options)
+}
+
+/// Refuses a resolution so fine that one square metre would exceed the
+/// pixel limit: every length of the extraction is in metres, so at such a
+/// resolution a door or a noise disk alone would be a grid above the limit
+/// (and a typo like `resolution: 5e-9` would run for hours).
+fn check_resolution(path: &Path, resolution: f64, options: &LoadOptions) -> Result<(), GridError> {
+    let per_m2 = 1.0 / (resolution * resolution);
+    if per_m2 > options.max_pixels as f64 {
+        return Err(GridError::ResolutionTooFine {
+            path: path.to_path_buf(),
+            resolution,
+            per_m2,
+            limit: options.max_pixels,
+        });
+    }
+    Ok(())
 }
 
 /// Opens an image file, guessing its format from its first bytes.
@@ -72,13 +144,43 @@ fn open_reader(path: &Path) -> Result<ImageReader<std::io::BufReader<std::fs::Fi
         .map_err(io)
 }
 
-/// Decodes an image, checking the pixel limit before decoding the pixels.
+/// Decodes an image file, checking the pixel limit before decoding the pixels.
 pub fn decode_image(path: &Path, options: &LoadOptions) -> Result<DynamicImage, GridError> {
-    let reader = open_reader(path)?;
-    let (w, h) = reader.into_dimensions().map_err(|e| GridError::Image {
+    decode_bounded(|| open_reader(path), path, options)
+}
+
+/// Decodes an image held in memory (PGM or PNG, told by its first bytes),
+/// checking the pixel limit before decoding the pixels; `name` names it
+/// in errors.
+pub fn decode_image_bytes(
+    bytes: &[u8],
+    name: &Path,
+    options: &LoadOptions,
+) -> Result<DynamicImage, GridError> {
+    let open = || {
+        ImageReader::new(Cursor::new(bytes))
+            .with_guessed_format()
+            .map_err(|source| GridError::Io {
+                path: name.to_path_buf(),
+                source,
+            })
+    };
+    decode_bounded(open, name, options)
+}
+
+/// Reads the header's dimensions, refuses an empty image or one above the
+/// pixel limit, then decodes with the decoder's limits set to the checked
+/// size (so a header that lies cannot make it allocate more).
+fn decode_bounded<R: BufRead + Seek>(
+    open: impl Fn() -> Result<ImageReader<R>, GridError>,
+    path: &Path,
+    options: &LoadOptions,
+) -> Result<DynamicImage, GridError> {
+    let image_error = |e: image::ImageError| GridError::Image {
         path: path.to_path_buf(),
         message: e.to_string(),
-    })?;
+    };
+    let (w, h) = open()?.into_dimensions().map_err(image_error)?;
     let pixels = u64::from(w) * u64::from(h);
     if pixels > options.max_pixels {
         return Err(GridError::TooLarge {
@@ -95,11 +197,14 @@ pub fn decode_image(path: &Path, options: &LoadOptions) -> Result<DynamicImage, 
             message: "image is empty".into(),
         });
     }
-    let reader = open_reader(path)?;
-    reader.decode().map_err(|e| GridError::Image {
-        path: path.to_path_buf(),
-        message: e.to_string(),
-    })
+    let mut limits = Limits::default();
+    limits.max_image_width = Some(w);
+    limits.max_image_height = Some(h);
+    // 16-bit RGBA is 8 bytes a pixel; room for the decoder's own buffers.
+    limits.max_alloc = Some(pixels.saturating_mul(8).saturating_add(64 << 20));
+    let mut reader = open()?;
+    reader.limits(limits);
+    reader.decode().map_err(image_error)
 }
 
 /// Grey (0..255) and alpha per pixel, whatever the colour type and depth.
@@ -281,5 +386,65 @@ mod tests {
 
         let e = load_image(&d.path().join("o.pgm"), -1.0, &LoadOptions::default()).unwrap_err();
         assert!(e.to_string().contains("resolution"), "{e}");
+    }
+
+    #[test]
+    fn bytes_load_like_files() {
+        let d = dir();
+        let g = GrayImage::from_fn(6, 4, |x, y| Luma([if x > 0 && y > 0 { 254 } else { 0 }]));
+        g.save(d.path().join("m.pgm")).unwrap();
+        let yaml_path = yaml(d.path(), "m.pgm", "negate: 0\n");
+        let from_file = load_map(&yaml_path, &LoadOptions::default()).unwrap();
+        let yaml_bytes = std::fs::read(&yaml_path).unwrap();
+        let image = std::fs::read(d.path().join("m.pgm")).unwrap();
+        let from_bytes = load_map_bytes(
+            Path::new("up.yaml"),
+            &yaml_bytes,
+            Path::new("up.pgm"),
+            &image,
+            &LoadOptions::default(),
+        )
+        .unwrap();
+        assert_eq!(from_bytes, from_file);
+    }
+
+    #[test]
+    fn bytes_errors_name_the_part_and_bound_sizes() {
+        let opts = LoadOptions::default();
+        let yaml = b"image: x.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n";
+        let (y, i) = (Path::new("floor.yaml"), Path::new("floor.pgm"));
+        let e = load_map_bytes(y, yaml, i, b"P5\n999", &opts).unwrap_err();
+        assert!(matches!(e, GridError::Image { .. }), "{e}");
+        assert!(e.to_string().starts_with("floor.pgm: "), "{e}");
+        // A header announcing 20000 x 20000 px is refused before decoding.
+        let e = load_map_bytes(y, yaml, i, b"P5\n20000 20000\n255\n\0", &opts).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                GridError::TooLarge {
+                    pixels: 400_000_000,
+                    ..
+                }
+            ),
+            "{e}"
+        );
+        let e = load_map_bytes(y, b"image: [", i, b"P5\n1 1\n255\n\xff", &opts).unwrap_err();
+        assert!(
+            e.to_string().starts_with("floor.yaml: invalid map yaml"),
+            "{e}"
+        );
+        let e = load_map_bytes(y, b"\xff\xfe", i, b"", &opts).unwrap_err();
+        assert!(e.to_string().contains("not UTF-8"), "{e}");
+        let big = vec![b'#'; MAX_YAML_BYTES as usize + 1];
+        let e = load_map_bytes(y, &big, i, b"", &opts).unwrap_err();
+        assert!(matches!(e, GridError::YamlTooLarge { .. }), "{e}");
+        // One square metre at 1e-9 m/px would be 1e18 px.
+        let fine = b"image: x.pgm\nresolution: 1e-9\norigin: [0, 0, 0]\n";
+        let e = load_map_bytes(y, fine, i, b"P5\n2 1\n255\n\xff\0", &opts).unwrap_err();
+        assert!(matches!(e, GridError::ResolutionTooFine { .. }), "{e}");
+        assert!(
+            e.to_string().contains("floor.yaml: field `resolution`"),
+            "{e}"
+        );
     }
 }

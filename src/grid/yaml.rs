@@ -49,12 +49,22 @@ struct RawYaml {
 }
 
 impl MapYaml {
-    /// Reads and validates a map YAML file.
+    /// Reads and validates a map YAML file (at most
+    /// [`MAX_YAML_BYTES`](super::MAX_YAML_BYTES)).
     pub fn read(path: &Path) -> Result<MapYaml, GridError> {
-        let text = std::fs::read_to_string(path).map_err(|source| GridError::Io {
+        let io = |source| GridError::Io {
             path: path.to_path_buf(),
             source,
-        })?;
+        };
+        let size = std::fs::metadata(path).map_err(io)?.len();
+        if size > super::MAX_YAML_BYTES {
+            return Err(GridError::YamlTooLarge {
+                path: path.to_path_buf(),
+                size,
+                limit: super::MAX_YAML_BYTES,
+            });
+        }
+        let text = std::fs::read_to_string(path).map_err(io)?;
         MapYaml::parse(&text, path)
     }
 

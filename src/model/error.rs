@@ -38,6 +38,28 @@ pub enum ModelError {
         /// Which value is broken.
         what: &'static str,
     },
+    /// A coordinate lies too far from the origin to be a building.
+    #[error(
+        "{what} of space {id} lies more than {limit_m} m from the origin; coordinates are metres in the map frame"
+    )]
+    TooFar {
+        /// The space concerned.
+        id: SpaceId,
+        /// Which value is out of range.
+        what: &'static str,
+        /// The limit, metres.
+        limit_m: f64,
+    },
+    /// A space name longer than a name can sensibly be.
+    #[error("the name of space {id} has {chars} characters; at most {limit} are allowed")]
+    NameTooLong {
+        /// The space concerned.
+        id: SpaceId,
+        /// Its name's length in characters.
+        chars: usize,
+        /// The limit.
+        limit: usize,
+    },
     /// A connection length is negative or not finite.
     #[error("connection {a}-{b} has length {length_m} m; it must be finite and >= 0")]
     BadLength {

@@ -25,5 +25,5 @@ pub use geometry::{
 };
 pub use graph::ConnectivityGraph;
 pub use interior_point::pole_of_inaccessibility;
-pub use nrg::Nrg;
+pub use nrg::{MAX_COORD_M, MAX_NAME_CHARS, Nrg};
 pub use space::{Space, SpaceId, SpaceKind};

@@ -33,6 +33,16 @@ impl<'de> Deserialize<'de> for Nrg {
     }
 }
 
+/// How far from the origin of the map frame a coordinate may lie, metres
+/// (100 000 km: room for projected frames such as UTM or web Mercator, far
+/// from where areas and grid cell counts overflow). Issue 21: a coordinate
+/// at 1e308 made later imports into the map loop or exhaust memory.
+pub const MAX_COORD_M: f64 = 1.0e8;
+
+/// The longest space name a model holds, in characters (issue 21: a
+/// 70 000-character name was stored and broke every listing).
+pub const MAX_NAME_CHARS: usize = 1_000;
+
 impl Nrg {
     /// Builds a model, checking its invariants and normalising order,
     /// connection direction and areas.
@@ -158,6 +168,12 @@ impl Nrg {
 
 fn check_space(space: &Space) -> Result<(), ModelError> {
     let finite = |p: &[f64; 2]| p[0].is_finite() && p[1].is_finite();
+    let near = |p: &[f64; 2]| p[0].abs() <= MAX_COORD_M && p[1].abs() <= MAX_COORD_M;
+    let far = |what: &'static str| ModelError::TooFar {
+        id: space.id,
+        what,
+        limit_m: MAX_COORD_M,
+    };
     if !finite(&space.anchor) {
         return Err(ModelError::NotFinite {
             id: space.id,
@@ -171,9 +187,24 @@ fn check_space(space: &Space) -> Result<(), ModelError> {
                 what: "polygon",
             });
         }
+        if !ring.iter().all(near) {
+            return Err(far("polygon"));
+        }
+    }
+    if !near(&space.anchor) {
+        return Err(far("anchor"));
     }
     if space.polygon.len() < 3 {
         return Err(ModelError::DegeneratePolygon(space.id));
+    }
+    if let Some(name) = &space.name
+        && name.chars().count() > MAX_NAME_CHARS
+    {
+        return Err(ModelError::NameTooLong {
+            id: space.id,
+            chars: name.chars().count(),
+            limit: MAX_NAME_CHARS,
+        });
     }
     Ok(())
 }
@@ -229,6 +260,42 @@ mod tests {
             ),
             Err(ModelError::DuplicateConnection { .. })
         ));
+    }
+
+    /// Issue 21, defects 3–5: a coordinate at 1e308 was accepted and later
+    /// made matching loop, memory grow and geo's hull panic. It is refused
+    /// where every model is built, with the space and the limit named.
+    #[test]
+    fn far_flung_coordinates_are_refused_at_the_door() {
+        let mut s = square(7, 0.0);
+        s.polygon[2] = [1e308, 1.0];
+        let e = Nrg::new(vec![s], vec![]).unwrap_err();
+        assert!(matches!(
+            e,
+            ModelError::TooFar {
+                id: SpaceId(7),
+                what: "polygon",
+                ..
+            }
+        ));
+        assert!(e.to_string().contains("space 7"), "{e}");
+        let mut s = square(8, 0.0);
+        s.anchor = [0.5, -2e8];
+        assert!(matches!(
+            Nrg::new(vec![s], vec![]),
+            Err(ModelError::TooFar { what: "anchor", .. })
+        ));
+        let mut named = square(10, 0.0);
+        named.name = Some("x".repeat(70_000));
+        assert!(matches!(
+            Nrg::new(vec![named], vec![]),
+            Err(ModelError::NameTooLong { chars: 70_000, .. })
+        ));
+        let at_limit = square(9, MAX_COORD_M - 1.0);
+        assert!(Nrg::new(vec![at_limit], vec![]).is_ok());
+        let text = r#"{"spaces":[{"id":1,"kind":"room","anchor":[0,0],"polygon":[[0,0],[1e308,0],[0,1]]}],"connections":[]}"#;
+        let err = Nrg::from_json(text).unwrap_err().to_string();
+        assert!(err.contains("from the origin"), "{err}");
     }
 
     #[test]

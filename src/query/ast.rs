@@ -89,6 +89,14 @@ pub enum Statement {
     Explain(Box<Statement>),
 }
 
+impl Statement {
+    /// Whether running it writes a revision (`NAME`); `EXPLAIN` only
+    /// plans.
+    pub fn writes(&self) -> bool {
+        matches!(self, Statement::Name { .. })
+    }
+}
+
 /// A reference to a space.
 #[derive(Debug, Clone, PartialEq)]
 pub enum SpaceRef {

@@ -49,6 +49,43 @@ fn span_of(start: &Input<'_>, len: usize) -> Span {
     }
 }
 
+/// Columns of tokens met in order, counted incrementally: nom_locate's
+/// `get_utf8_column` scans back to the line start on every call, which made
+/// lexing a long one-line query quadratic.
+struct Columns<'a> {
+    text: &'a str,
+    /// Byte offset and 1-based column of the last token.
+    offset: usize,
+    column: usize,
+}
+
+impl<'a> Columns<'a> {
+    fn new(text: &'a str) -> Columns<'a> {
+        Columns {
+            text,
+            offset: 0,
+            column: 1,
+        }
+    }
+
+    /// The span of `len` bytes at `start` (at or after the last one).
+    fn span(&mut self, start: &Input<'_>, len: usize) -> Span {
+        let offset = start.location_offset();
+        let between = self.text.get(self.offset..offset).unwrap_or("");
+        self.column = match between.rfind('\n') {
+            Some(nl) => between[nl + 1..].chars().count() + 1,
+            None => self.column + between.chars().count(),
+        };
+        self.offset = offset;
+        Span {
+            offset,
+            len,
+            line: start.location_line(),
+            column: self.column,
+        }
+    }
+}
+
 fn skip(i: Input<'_>) -> IResult<Input<'_>, ()> {
     let (mut i, _) = opt(multispace1).parse(i)?;
     loop {
@@ -99,7 +136,9 @@ fn string(i: Input<'_>) -> IResult<Input<'_>, Option<(String, usize)>> {
     while let Some((at, c)) = chars.next() {
         if c == quote {
             let len = 1 + at + 1;
-            let (rest, _) = nom::bytes::complete::take(at + 1).parse(rest)?;
+            // `at` is a byte offset: nom's `take` counts characters, and
+            // cut strings holding "ü" one character too far.
+            let (rest, _) = nom::Input::take_split(&rest, at + 1);
             return Ok((rest, Some((value, len))));
         }
         if c == '\\' {
@@ -124,6 +163,7 @@ fn string(i: Input<'_>) -> IResult<Input<'_>, Option<(String, usize)>> {
 pub fn lex(text: &str) -> Result<Vec<Token>, QueryError> {
     let mut tokens = Vec::new();
     let mut input = Input::new(text);
+    let mut columns = Columns::new(text);
     loop {
         let Ok((rest, ())) = skip(input) else {
             return Err(bad_char(&input));
@@ -133,7 +173,7 @@ pub fn lex(text: &str) -> Result<Vec<Token>, QueryError> {
             tokens.push(Token {
                 kind: TokenKind::Eof,
                 text: String::new(),
-                span: span_of(&input, 0),
+                span: columns.span(&input, 0),
             });
             return Ok(tokens);
         }
@@ -161,7 +201,7 @@ pub fn lex(text: &str) -> Result<Vec<Token>, QueryError> {
         };
         tokens.push(Token {
             kind,
-            span: span_of(&start, text.len()),
+            span: columns.span(&start, text.len()),
             text,
         });
         input = rest;
@@ -189,6 +229,24 @@ mod tests {
         assert_eq!(t[2].span.line, 2);
         assert_eq!(t[2].span.column, 3);
         assert_eq!(t[5].text, "-2e3");
+    }
+
+    /// Columns counted incrementally are the characters since the line
+    /// start, plus one, for every token (multi-byte text, several lines).
+    #[test]
+    fn columns_count_characters_from_the_line_start() {
+        let text =
+            "FIND rooms WHERE name = 'Küche' AND x = 1\n  AND area > 1; -- é\n\nNAME 3 AS \"Büro\"";
+        for t in lex(text).unwrap() {
+            let before = &text[..t.span.offset];
+            let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+            assert_eq!(
+                t.span.column,
+                text[line_start..t.span.offset].chars().count() + 1,
+                "{t:?}"
+            );
+            assert_eq!(t.span.line as usize, before.matches('\n').count() + 1);
+        }
     }
 
     #[test]

@@ -4,8 +4,10 @@
 //! [`Session`] ties these together (line in, text out).
 //!
 //! Owns the AST, the parser, the planner, the executor, the [`Source`]
-//! trait and [`MemorySource`]. Uses `model` and `route`. Must not use
-//! `store` (it implements [`Source`]), the server or the terminal.
+//! trait and [`MemorySource`]. Uses `model`, `route` and `diff` (`DIFF`
+//! compares revisions loaded with their grids: [`compare_revisions`]).
+//! Must not use `store` (it implements [`Source`]), the server or the
+//! terminal.
 //!
 //! Statements: `ROUTE FROM a TO b [VIA c, …] [AVOID d, …] [ALTERNATIVES k]`,
 //! `NEIGHBOURS OF a [DEPTH n]`, `FIND rooms|corridors|doors|others|spaces
@@ -25,6 +27,7 @@
 pub mod demo;
 
 mod ast;
+mod compare_revisions;
 mod error;
 mod exec;
 mod filter;
@@ -41,6 +44,7 @@ pub use ast::{
     CompareOp, Condition, Field, OrderKey, SpaceRef, Statement, Value, WalkOptions, is_identifier,
     quote,
 };
+pub use compare_revisions::{LoadedRevision, RevisionComparison, compare_revisions};
 pub use error::{QueryError, SourceError, Span};
 pub use exec::{Limits, execute};
 pub use filter::like;

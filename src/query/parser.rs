@@ -7,6 +7,7 @@ use super::error::QueryError;
 use super::lexer::{Token, TokenKind, lex};
 use super::suggest::suggest;
 use crate::model::{SpaceId, SpaceKind};
+use crate::route::MAX_ALTERNATIVES;
 
 /// Words that start a statement.
 pub const STATEMENT_KEYWORDS: [&str; 11] = [
@@ -81,6 +82,8 @@ pub fn parse(text: &str) -> Result<Vec<Statement>, QueryError> {
     let mut p = Parser {
         tokens: lex(text)?,
         pos: 0,
+        depth: 0,
+        terms: 0,
         tried: Vec::new(),
         tried_at: 0,
     };
@@ -89,6 +92,11 @@ pub fn parse(text: &str) -> Result<Vec<Statement>, QueryError> {
         while p.eat_punct(";") {}
         if p.peek().kind == TokenKind::Eof {
             return Ok(out);
+        }
+        if out.len() == MAX_STATEMENTS {
+            return Err(p.refused(format!(
+                "at most {MAX_STATEMENTS} statements a request or file"
+            )));
         }
         out.push(p.statement()?);
         if p.peek().kind != TokenKind::Eof && !p.eat_punct(";") {
@@ -106,6 +114,8 @@ pub fn parse_statement(text: &str) -> Result<Statement, QueryError> {
             let p = Parser {
                 tokens: lex(text)?,
                 pos: 0,
+                depth: 0,
+                terms: 0,
                 tried: Vec::new(),
                 tried_at: 0,
             };
@@ -118,9 +128,27 @@ pub fn parse_statement(text: &str) -> Result<Statement, QueryError> {
     }
 }
 
+/// Deepest nesting of brackets, NOT and EXPLAIN the parser accepts: the
+/// parser, the planner and the evaluator all recurse on it, so an
+/// unbounded depth would overflow a thread's stack (a 4 KB query of
+/// brackets crashed the server).
+pub const MAX_NESTING: usize = 64;
+
+/// Most statements one text may hold (issue 21, defect 7: a 1 MB request
+/// of statements ran long past its time bound).
+pub const MAX_STATEMENTS: usize = 1_000;
+
+/// Most comparisons one condition may hold (an OR of 50 000 terms is a
+/// tree that deep).
+pub const MAX_TERMS: usize = 256;
+
 struct Parser {
     tokens: Vec<Token>,
     pos: usize,
+    /// Current nesting of brackets, NOT and EXPLAIN.
+    depth: usize,
+    /// Comparisons in the condition being parsed.
+    terms: usize,
     /// Optional keywords tried (and absent) at `tried_at`, for messages.
     tried: Vec<&'static str>,
     tried_at: usize,
@@ -224,6 +252,7 @@ impl Parser {
     }
 
     fn statement(&mut self) -> Result<Statement, QueryError> {
+        self.terms = 0;
         let t = self.peek().clone();
         let kw = if t.kind == TokenKind::Word {
             t.text.to_ascii_uppercase()
@@ -289,16 +318,26 @@ impl Parser {
             "NAME" => {
                 let space = self.space_ref()?;
                 self.expect_word("AS")?;
-                Ok(Statement::Name {
-                    space,
-                    name: self.string()?,
-                })
+                let span = self.peek().span;
+                let name = self.string()?;
+                if name.trim().is_empty() {
+                    return Err(QueryError::Syntax {
+                        span,
+                        message: "a space's name cannot be empty".into(),
+                    });
+                }
+                Ok(Statement::Name { space, name })
             }
             "DIFF" => Ok(Statement::Diff {
                 from: self.integer()?,
                 to: self.integer()?,
             }),
-            _ => Ok(Statement::Explain(Box::new(self.statement()?))),
+            _ => {
+                self.enter()?;
+                let inner = self.statement();
+                self.depth -= 1;
+                Ok(Statement::Explain(Box::new(inner?)))
+            }
         }
     }
 
@@ -318,7 +357,15 @@ impl Parser {
             Vec::new()
         };
         let alternatives = if self.eat_word("ALTERNATIVES") {
-            Some(self.integer()?)
+            let span = self.peek().span;
+            let k = self.integer()?;
+            if !(1..=MAX_ALTERNATIVES as u32).contains(&k) {
+                return Err(QueryError::Syntax {
+                    span,
+                    message: format!("ALTERNATIVES takes 1 to {MAX_ALTERNATIVES} routes, not {k}"),
+                });
+            }
+            Some(k)
         } else {
             None
         };
@@ -414,6 +461,26 @@ impl Parser {
         })
     }
 
+    /// One level deeper, or an error past [`MAX_NESTING`].
+    fn enter(&mut self) -> Result<(), QueryError> {
+        self.depth += 1;
+        if self.depth > MAX_NESTING {
+            self.depth -= 1;
+            return Err(self.refused(format!(
+                "brackets, NOT and EXPLAIN nest at most {MAX_NESTING} deep"
+            )));
+        }
+        Ok(())
+    }
+
+    /// A syntax error with `message` at the next token.
+    fn refused(&self, message: String) -> QueryError {
+        QueryError::Syntax {
+            span: self.peek().span,
+            message,
+        }
+    }
+
     fn or(&mut self) -> Result<Condition, QueryError> {
         let mut left = self.and()?;
         while self.eat_word("OR") {
@@ -432,12 +499,24 @@ impl Parser {
 
     fn not(&mut self) -> Result<Condition, QueryError> {
         if self.eat_word("NOT") {
-            return Ok(Condition::Not(Box::new(self.not()?)));
+            self.enter()?;
+            let inner = self.not();
+            self.depth -= 1;
+            return Ok(Condition::Not(Box::new(inner?)));
         }
         if self.eat_punct("(") {
-            let c = self.or()?;
+            self.enter()?;
+            let c = self.or();
+            self.depth -= 1;
+            let c = c?;
             self.expect_punct(")")?;
             return Ok(c);
+        }
+        self.terms += 1;
+        if self.terms > MAX_TERMS {
+            return Err(self.refused(format!(
+                "a condition may hold at most {MAX_TERMS} comparisons"
+            )));
         }
         let field = self.field()?;
         let t = self.bump();
@@ -617,6 +696,68 @@ impl Parser {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Issue 21, defect 1: nested brackets, NOTs and EXPLAINs and long OR
+    /// chains crashed the server by overflowing a worker's stack. Now
+    /// each is a syntax error naming the limit, at any size.
+    #[test]
+    fn deeply_nested_query_is_refused_not_a_crash() {
+        let brackets = |n: usize| {
+            format!(
+                "FIND rooms WHERE {}area > 1{}",
+                "(".repeat(n),
+                ")".repeat(n)
+            )
+        };
+        assert!(parse(&brackets(MAX_NESTING)).is_ok());
+        for text in [
+            brackets(MAX_NESTING + 1),
+            brackets(20_000),
+            format!("FIND rooms WHERE {}area > 1", "NOT ".repeat(5_000)),
+            format!("{}FIND rooms", "EXPLAIN ".repeat(100_000)),
+        ] {
+            let e = parse(&text).unwrap_err().to_string();
+            assert!(e.contains("nest at most 64 deep"), "{e}");
+        }
+        let terms = |n: usize| {
+            let ors = vec!["area > 1"; n].join(" OR ");
+            format!("FIND rooms WHERE {ors}; FIND rooms WHERE {ors}")
+        };
+        assert!(parse(&terms(MAX_TERMS)).is_ok());
+        let e = parse(&terms(50_000)).unwrap_err().to_string();
+        assert!(e.contains("at most 256 comparisons"), "{e}");
+    }
+
+    /// Issue 21 paper cuts: `ALTERNATIVES 0` answered "no route" and
+    /// `NAME 3 AS ""` was accepted; both are errors at the value.
+    #[test]
+    fn empty_names_and_zero_alternatives_are_refused() {
+        let e = parse("ROUTE FROM 1 TO 2 ALTERNATIVES 0")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("ALTERNATIVES takes 1 to 10 routes, not 0"),
+            "{e}"
+        );
+        assert!(parse("ROUTE FROM 1 TO 2 ALTERNATIVES 3").is_ok());
+        let e = parse("NAME 3 AS \"  \"").unwrap_err().to_string();
+        assert!(e.contains("name cannot be empty"), "{e}");
+    }
+
+    /// Issue 21, defect 7: a megabyte of statements is refused at once;
+    /// empty statements (`;;;`) cost nothing and are not counted.
+    #[test]
+    fn too_many_statements_are_refused() {
+        assert_eq!(parse(&";".repeat(1_000_000)).unwrap().len(), 0);
+        assert_eq!(
+            parse(&"SHOW MAPS;".repeat(MAX_STATEMENTS)).unwrap().len(),
+            MAX_STATEMENTS
+        );
+        let e = parse(&"SHOW MAPS;".repeat(100_000))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("at most 1000 statements"), "{e}");
+    }
 
     #[test]
     fn typo_gets_a_suggestion_and_a_span() {

@@ -265,7 +265,7 @@ impl fmt::Display for Plan {
             Plan::Name(id, name) => write!(f, "RenameSpace {id} to '{name}' (new revision)"),
             Plan::Diff(a, b) => write!(
                 f,
-                "Diff revision {a} -> {b}\n  AlignIfFramesDiffer (walls of the space polygons)\n  \
+                "Diff revision {a} -> {b}\n  AlignIfFramesDiffer (walls of the stored grids, else of the space polygons)\n  \
                  MatchSpaces IoU, Kuhn-Munkres; split/merge by overlap shares"
             ),
             Plan::Explain(inner) => write!(f, "Explain\n  {inner}"),

@@ -192,11 +192,10 @@ fn aligned(t: &Table) -> String {
             .into_iter()
             .zip(&widths)
             .map(|((c, right), w)| {
-                if right {
-                    format!("{c:>w$}")
-                } else {
-                    format!("{c:<w$}")
-                }
+                // Padded by hand: `format!("{c:<w$}")` panics past a width
+                // of 65 535 (a 70 000-character name broke every listing).
+                let pad = " ".repeat(w.saturating_sub(c.chars().count()));
+                if right { pad + &c } else { c + &pad }
             })
             .collect();
         let _ = writeln!(out, "{}", parts.join("  ").trim_end());

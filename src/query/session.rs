@@ -3,6 +3,7 @@
 //! golden tests all drive this.
 
 use super::ast::Statement;
+use super::compare_revisions::compare_revisions;
 use super::error::QueryError;
 use super::exec::{Limits, execute};
 use super::index::IndexedRevision;
@@ -10,6 +11,7 @@ use super::parser::parse;
 use super::plan::{Plan, plan};
 use super::result::{Cell, Format, QueryResult, Table};
 use super::source::Source;
+use crate::diff::{ChangeSet, DiffOptions};
 
 /// A session over a source.
 ///
@@ -145,8 +147,9 @@ impl<S: Source> Session<S> {
             Plan::Diff(from, to) => {
                 let current = self.current.as_ref().ok_or(QueryError::NoMapSelected)?;
                 let map = current.map.clone();
-                let (a, b) = (self.source.load(&map, *from)?, self.source.load(&map, *to)?);
-                diff_result(&a, &b)
+                let done =
+                    compare_revisions(&self.source, &map, *from, *to, &DiffOptions::default())?;
+                Ok(diff_result(&done.comparison.changes))
             }
             data => {
                 let current = self.current.as_ref().ok_or(QueryError::NoMapSelected)?;
@@ -184,20 +187,12 @@ impl<S: Source> Session<S> {
     }
 }
 
-/// `DIFF A B`: one row per reported change (see `ChangeSet::rows`), and a
-/// first row giving the alignment when the frames differed.
-fn diff_result(a: &crate::model::Nrg, b: &crate::model::Nrg) -> Result<QueryResult, QueryError> {
-    use crate::diff::{AlignMode, AlignParams, DiffParams, Revision, compare};
-    let side = |nrg| Revision { nrg, grid: None };
-    let done = compare(
-        side(a),
-        side(b),
-        AlignMode::Auto,
-        &DiffParams::default(),
-        &AlignParams::default(),
-    )?;
+/// `DIFF A B`: one row per reported change of `changes` (see
+/// `ChangeSet::rows`), and a first row giving the alignment when the
+/// frames differed.
+fn diff_result(changes: &ChangeSet) -> QueryResult {
     let mut rows = Vec::new();
-    if let Some(t) = done.changes.alignment {
+    if let Some(t) = changes.alignment {
         rows.push(vec![
             Cell::Text("aligned".into()),
             Cell::Null,
@@ -211,7 +206,7 @@ fn diff_result(a: &crate::model::Nrg, b: &crate::model::Nrg) -> Result<QueryResu
             )),
         ]);
     }
-    for r in done.changes.rows() {
+    for r in changes.rows() {
         rows.push(vec![
             Cell::Text(r.change),
             Cell::Text(r.old),
@@ -220,7 +215,7 @@ fn diff_result(a: &crate::model::Nrg, b: &crate::model::Nrg) -> Result<QueryResu
             Cell::Text(r.detail),
         ]);
     }
-    Ok(table(&["change", "old", "new", "space", "detail"], rows))
+    table(&["change", "old", "new", "space", "detail"], rows)
 }
 
 fn table(names: &[&str], rows: Vec<Vec<Cell>>) -> QueryResult {

@@ -5,6 +5,7 @@ use std::collections::BTreeMap;
 
 use super::error::SourceError;
 use super::suggest::suggest;
+use crate::grid::OccupancyGrid;
 use crate::model::{Nrg, SpaceId};
 
 /// A map and how many revisions it has.
@@ -45,6 +46,11 @@ pub trait Source {
     fn revisions(&self, map: &str) -> Result<Vec<RevisionInfo>, SourceError>;
     /// The model of one revision.
     fn load(&self, map: &str, revision: u64) -> Result<Nrg, SourceError>;
+    /// The occupancy grid one revision was extracted from, or `None` when
+    /// it came from a model file (or the source keeps no grids). `DIFF`
+    /// aligns revisions on their grids; without them it falls back to the
+    /// outlines of the spaces.
+    fn grid(&self, map: &str, revision: u64) -> Result<Option<OccupancyGrid>, SourceError>;
     /// Gives space `id` of `map` at `revision` the name `name`, writing a new
     /// revision (whose model is the old one with that change) and returning
     /// its number. The caller has checked that the space exists.
@@ -67,7 +73,15 @@ pub trait Source {
 /// ```
 #[derive(Debug, Clone, Default)]
 pub struct MemorySource {
-    maps: BTreeMap<String, Vec<(Nrg, String)>>,
+    maps: BTreeMap<String, Vec<Stored>>,
+}
+
+/// One revision held by a [`MemorySource`].
+#[derive(Debug, Clone)]
+struct Stored {
+    nrg: Nrg,
+    grid: Option<OccupancyGrid>,
+    note: String,
 }
 
 impl MemorySource {
@@ -84,24 +98,43 @@ impl MemorySource {
 
     /// Like [`MemorySource::insert`] with a note.
     pub fn insert_with_note(&mut self, map: &str, nrg: Nrg, note: &str) -> u64 {
+        self.insert_revision(map, nrg, None, note)
+    }
+
+    /// Like [`MemorySource::insert`], keeping the occupancy grid the model
+    /// was extracted from (what [`Source::grid`] returns).
+    pub fn insert_with_grid(&mut self, map: &str, nrg: Nrg, grid: OccupancyGrid) -> u64 {
+        self.insert_revision(map, nrg, Some(grid), "inserted")
+    }
+
+    fn insert_revision(
+        &mut self,
+        map: &str,
+        nrg: Nrg,
+        grid: Option<OccupancyGrid>,
+        note: &str,
+    ) -> u64 {
         let revisions = self.maps.entry(map.to_string()).or_default();
-        revisions.push((nrg, note.to_string()));
+        revisions.push(Stored {
+            nrg,
+            grid,
+            note: note.to_string(),
+        });
         revisions.len() as u64
     }
 
-    fn map(&self, map: &str) -> Result<&Vec<(Nrg, String)>, SourceError> {
+    fn map(&self, map: &str) -> Result<&Vec<Stored>, SourceError> {
         self.maps.get(map).ok_or_else(|| SourceError::NoMap {
             name: map.to_string(),
             suggestion: suggest(map, self.maps.keys().map(String::as_str)).map(str::to_string),
         })
     }
 
-    fn revision(&self, map: &str, revision: u64) -> Result<&Nrg, SourceError> {
+    fn revision(&self, map: &str, revision: u64) -> Result<&Stored, SourceError> {
         let revisions = self.map(map)?;
         revision
             .checked_sub(1)
             .and_then(|i| revisions.get(usize::try_from(i).ok()?))
-            .map(|(nrg, _)| nrg)
             .ok_or_else(|| SourceError::NoRevision {
                 map: map.to_string(),
                 revision,
@@ -127,17 +160,21 @@ impl Source for MemorySource {
             .map(map)?
             .iter()
             .enumerate()
-            .map(|(i, (nrg, note))| RevisionInfo {
+            .map(|(i, stored)| RevisionInfo {
                 revision: i as u64 + 1,
-                spaces: nrg.spaces().len(),
-                connections: nrg.connections().len(),
-                note: note.clone(),
+                spaces: stored.nrg.spaces().len(),
+                connections: stored.nrg.connections().len(),
+                note: stored.note.clone(),
             })
             .collect())
     }
 
     fn load(&self, map: &str, revision: u64) -> Result<Nrg, SourceError> {
-        self.revision(map, revision).cloned()
+        Ok(self.revision(map, revision)?.nrg.clone())
+    }
+
+    fn grid(&self, map: &str, revision: u64) -> Result<Option<OccupancyGrid>, SourceError> {
+        Ok(self.revision(map, revision)?.grid.clone())
     }
 
     fn rename_space(
@@ -147,7 +184,7 @@ impl Source for MemorySource {
         id: SpaceId,
         name: &str,
     ) -> Result<u64, SourceError> {
-        let (mut spaces, connections) = self.revision(map, revision)?.clone().into_parts();
+        let (mut spaces, connections) = self.revision(map, revision)?.nrg.clone().into_parts();
         for s in spaces.iter_mut().filter(|s| s.id == id) {
             s.name = Some(name.to_string());
         }
@@ -166,6 +203,9 @@ impl<S: Source + ?Sized> Source for Box<S> {
     }
     fn load(&self, map: &str, revision: u64) -> Result<Nrg, SourceError> {
         (**self).load(map, revision)
+    }
+    fn grid(&self, map: &str, revision: u64) -> Result<Option<OccupancyGrid>, SourceError> {
+        (**self).grid(map, revision)
     }
     fn rename_space(
         &mut self,

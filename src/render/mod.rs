@@ -8,7 +8,8 @@
 //! only draws that display list, so SVG and PNG show the same picture.
 //! [`kind_picture`] is the older label-image picture used by the demo.
 //!
-//! Uses grid, model, diff's change sets ([`diff_overlay`]) and (for the
+//! Uses grid, model, diff's change sets ([`diff_overlay`]: the change set
+//! comes from `diff::compare`, the renderer never diffs) and (for the
 //! demo picture) imaging labels; takes routes as a plain overlay. Knows
 //! nothing of SQL, HTTP or the terminal.
 

@@ -1,25 +1,45 @@
-//! The diff overlay of two revisions: their [`ChangeSet`] (see
-//! [`crate::diff::diff`]) mapped onto the outlines to draw.
+//! The diff overlay: a [`ChangeSet`] mapped onto the outlines to draw. The
+//! renderer never diffs: the change set comes from
+//! [`crate::diff::compare`] (through `query::compare_revisions` for stored
+//! revisions), the same one `nrgdb diff` and `GET /diff` report.
 
 use super::scene::{DiffOverlay, OverlaySpace};
 
-use crate::diff::{ChangeSet, DiffParams, SpaceChangeKind, diff};
+use crate::diff::{ChangeSet, SpaceChangeKind};
 use crate::model::{Nrg, SpaceId};
 
-/// What changed from `old` to `new` (see [`overlay_of`]), by
-/// [`crate::diff::diff`] with default parameters.
-pub fn diff_overlay(old: &Nrg, new: &Nrg) -> DiffOverlay {
-    overlay_of(&diff(old, new, &DiffParams::default()), old, new)
-}
-
-/// Maps a change set of `old` → `new` onto outlines: parts of a split
-/// space and the result of a merge with their new outlines; other added
-/// spaces with theirs; removed spaces with their old outlines; spaces
+/// Maps the change set of `old` → `new` onto outlines to draw over `new`
+/// (in `new`'s own frame): parts of a split space and the result of a
+/// merge with their new outlines; other added spaces with theirs; removed
+/// spaces with their old outlines, moved into `new`'s frame when the
+/// change set was aligned (the inverse of its `alignment`); spaces
 /// resized, re-kinded, renamed or with a new door width with their new
 /// outlines. Each space appears once.
-pub fn overlay_of(changes: &ChangeSet, old: &Nrg, new: &Nrg) -> DiffOverlay {
+///
+/// ```
+/// use nrgdb::diff::{compare, DiffOptions, Revision};
+/// use nrgdb::fixtures::corridor_building;
+/// let (old, new) = (corridor_building(2), corridor_building(3));
+/// let done = compare(Revision::new(&old), Revision::new(&new), &DiffOptions::default())?;
+/// let overlay = nrgdb::render::diff_overlay(&done.changes, &old, &new);
+/// assert_eq!(overlay.added.len(), 2); // a room and its door
+/// # Ok::<(), nrgdb::diff::DiffError>(())
+/// ```
+pub fn diff_overlay(changes: &ChangeSet, old: &Nrg, new: &Nrg) -> DiffOverlay {
     let mut overlay = DiffOverlay::default();
+    let back = changes.alignment.map(|t| t.inverse());
     let of = |nrg: &Nrg, id: Option<SpaceId>| id.and_then(|id| nrg.space(id)).map(OverlaySpace::of);
+    let old_of = |id: Option<SpaceId>| {
+        let mut o = of(old, id)?;
+        if let Some(t) = back {
+            for ring in std::iter::once(&mut o.polygon).chain(o.holes.iter_mut()) {
+                for p in ring.iter_mut() {
+                    *p = t.apply(*p);
+                }
+            }
+        }
+        Some(o)
+    };
     for c in &changes.spaces {
         let has = |k: SpaceChangeKind| c.changes.contains(&k);
         let (list, space) = if has(SpaceChangeKind::Split) {
@@ -27,7 +47,7 @@ pub fn overlay_of(changes: &ChangeSet, old: &Nrg, new: &Nrg) -> DiffOverlay {
         } else if has(SpaceChangeKind::Merged) {
             (&mut overlay.merged, of(new, c.new))
         } else if has(SpaceChangeKind::Removed) {
-            (&mut overlay.removed, of(old, c.old))
+            (&mut overlay.removed, old_of(c.old))
         } else if has(SpaceChangeKind::Added) {
             (&mut overlay.added, of(new, c.new))
         } else if c.changes.is_empty() {
@@ -55,7 +75,13 @@ pub fn overlay_of(changes: &ChangeSet, old: &Nrg, new: &Nrg) -> DiffOverlay {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::diff::{DiffParams, RigidTransform, diff};
     use crate::model::{Space, SpaceKind};
+
+    /// The overlay of the plain diff of two models in one frame.
+    fn overlay(old: &Nrg, new: &Nrg) -> DiffOverlay {
+        diff_overlay(&diff(old, new, &DiffParams::default()), old, new)
+    }
 
     fn ids(v: &[OverlaySpace]) -> Vec<u32> {
         v.iter().map(|o| o.id.0).collect()
@@ -65,12 +91,12 @@ mod tests {
     fn a_new_room_is_added_and_the_longer_corridor_changed() {
         let old = crate::fixtures::corridor_building(2);
         let new = crate::fixtures::corridor_building(3);
-        let d = diff_overlay(&old, &new);
+        let d = overlay(&old, &new);
         assert_eq!(ids(&d.added), vec![12, 10_002]);
         assert_eq!(ids(&d.changed), vec![1]);
         assert!(d.removed.is_empty() && d.split.is_empty() && d.merged.is_empty());
-        assert!(diff_overlay(&new, &new).is_empty());
-        assert_eq!(ids(&diff_overlay(&new, &old).removed), vec![12, 10_002]);
+        assert!(overlay(&new, &new).is_empty());
+        assert_eq!(ids(&overlay(&new, &old).removed), vec![12, 10_002]);
     }
 
     #[test]
@@ -81,11 +107,34 @@ mod tests {
         };
         let whole = Nrg::new(vec![rect(1, 0.0, 6.0)], vec![]).unwrap();
         let halves = Nrg::new(vec![rect(1, 0.0, 3.0), rect(2, 3.1, 6.0)], vec![]).unwrap();
-        let d = diff_overlay(&whole, &halves);
+        let d = overlay(&whole, &halves);
         assert_eq!(ids(&d.split), vec![1, 2]);
         assert!(d.added.is_empty() && d.removed.is_empty() && d.changed.is_empty());
-        let d = diff_overlay(&halves, &whole);
+        let d = overlay(&halves, &whole);
         assert_eq!(ids(&d.merged), vec![1]);
         assert!(d.added.is_empty() && d.removed.is_empty() && d.changed.is_empty());
+    }
+
+    #[test]
+    fn removed_outlines_follow_the_new_frame() {
+        // B: A without its last room, turned 25° and moved; the change set
+        // as `compare` makes it once aligned (B → A is t⁻¹). The removed
+        // room is drawn over B where it was, not where A had it.
+        let a = crate::fixtures::corridor_building(4);
+        let cut = crate::fixtures::corridor_building(3);
+        let t = RigidTransform::from_degrees(25.0, 4.0, -3.0);
+        let b = t.apply_to_nrg(&cut).unwrap();
+        let mut changes = diff(&a, &cut, &DiffParams::default());
+        changes.alignment = Some(t.inverse());
+        let d = diff_overlay(&changes, &a, &b);
+        assert_eq!(ids(&d.removed), vec![13, 10_003]);
+        let room = a.space(SpaceId(13)).unwrap();
+        for (got, was) in d.removed[0].polygon.iter().zip(&room.polygon) {
+            let want = t.apply(*was);
+            assert!(
+                (got[0] - want[0]).hypot(got[1] - want[1]) < 0.2,
+                "{got:?} vs {want:?}"
+            );
+        }
     }
 }

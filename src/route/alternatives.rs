@@ -4,7 +4,7 @@
 
 use std::collections::HashSet;
 
-use super::shortest_route::{check_request, route_avoiding};
+use super::route_avoiding::{check_request, route_avoiding};
 use super::{Budget, Endpoint, NavMesh, Route, RouteError, RouteRequest};
 use crate::model::SpaceId;
 

@@ -33,10 +33,11 @@ mod graph;
 mod nav;
 mod no_route;
 mod reachable;
+mod route_avoiding;
 mod shortest_route;
 mod steps;
 
-pub use alternatives::alternatives;
+pub use alternatives::{MAX_ALTERNATIVES, alternatives};
 pub use budget::Budget;
 pub use connection_walks::{
     ConnectionWalk, WalkedModel, connection_walks, walked_model, with_walked_lengths,

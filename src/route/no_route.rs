@@ -1,7 +1,7 @@
 //! Why there is no route: the request is retried with its constraints
 //! relaxed one at a time, and the first that makes a route names the cause.
 
-use super::shortest_route::route_avoiding;
+use super::route_avoiding::route_avoiding;
 use super::{Budget, Endpoint, NavMesh, Profile, RouteRequest};
 
 /// A sentence saying why `request` has no route ("every doorway into

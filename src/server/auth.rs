@@ -2,6 +2,7 @@
 //! read-only: writes get 403; with one, a missing or wrong token gets 401.
 
 use axum::http::{HeaderMap, header};
+use sha2::{Digest, Sha256};
 
 use super::config::ServerConfig;
 use super::error::ApiError;
@@ -19,12 +20,18 @@ pub fn has_token(config: &ServerConfig, headers: &HeaderMap) -> bool {
                 .or_else(|| v.strip_prefix("bearer "))
         })
         .map(str::trim);
+    // Compare fixed-length digests in constant time: comparing the tokens
+    // themselves returned early on a length mismatch, which told an
+    // attacker the token's length.
     given.is_some_and(|g| {
-        g.len() == expected.len()
-            && g.bytes()
-                .zip(expected.bytes())
-                .fold(0u8, |acc, (a, b)| acc | (a ^ b))
-                == 0
+        let (a, b) = (
+            Sha256::digest(g.as_bytes()),
+            Sha256::digest(expected.as_bytes()),
+        );
+        a.iter()
+            .zip(b.iter())
+            .fold(0u8, |acc, (x, y)| acc | (x ^ y))
+            == 0
     })
 }
 

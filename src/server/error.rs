@@ -8,7 +8,8 @@ use axum::http::{HeaderValue, StatusCode, header};
 use axum::response::{IntoResponse, Response};
 use serde_json::json;
 
-use crate::query::QueryError;
+use crate::diff::DiffError;
+use crate::query::{QueryError, SourceError};
 use crate::route::RouteError;
 use crate::store::StoreError;
 
@@ -186,6 +187,7 @@ impl From<StoreError> for ApiError {
             StoreError::NoSuchRevision { .. } => ApiError::not_found("rev", e.to_string()),
             StoreError::NoSuchSpace { .. } => ApiError::not_found("id", e.to_string()),
             StoreError::BadMapName { .. } => ApiError::bad("map", e.to_string()),
+            StoreError::TooLong { field, .. } => ApiError::bad(field, e.to_string()),
             StoreError::Model(m) => ApiError::BadUpload(m.to_string()),
             StoreError::Busy => ApiError::Busy,
             other => ApiError::Internal(other.to_string()),
@@ -220,6 +222,23 @@ impl From<QueryError> for ApiError {
             }
             other => ApiError::bad("query", other.to_string()),
         }
+    }
+}
+
+/// A failed comparison as an API error: no reliable alignment is the
+/// caller's to fix (a 400 naming `parameter`, with `hint`), a busy store a
+/// 503, anything else ours. Shared by `GET /diff` and the viewer's
+/// `?diff=` (here, so that neither imports the other).
+pub fn comparing_error(e: QueryError, parameter: &'static str, hint: &str) -> ApiError {
+    match e {
+        QueryError::Diff(e @ (DiffError::Unreliable { .. } | DiffError::TooFewWalls { .. })) => {
+            ApiError::bad(parameter, format!("{e} ({hint})"))
+        }
+        QueryError::Source(SourceError::Backend(e)) => match e.downcast::<StoreError>() {
+            Ok(e) => (*e).into(),
+            Err(e) => ApiError::Internal(format!("loading a revision: {e}")),
+        },
+        other => ApiError::Internal(other.to_string()),
     }
 }
 

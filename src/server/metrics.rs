@@ -1,18 +1,15 @@
 //! Request metrics in the Prometheus text format (written by hand):
 //! requests by route, method and status, a latency histogram per route,
-//! revision cache hits and misses.
+//! revision cache hits and misses. The counters only: the middleware that
+//! feeds them is in `track.rs`, so this file knows nothing of the
+//! request state that owns them.
 
 use std::collections::{BTreeMap, HashMap};
 use std::fmt::Write as _;
 use std::sync::Mutex;
 use std::time::Instant;
 
-use axum::extract::{MatchedPath, Request, State};
-use axum::middleware::Next;
-use axum::response::Response;
-
 use super::cache::RevisionCache;
-use super::state::AppState;
 
 /// Upper bounds of the latency buckets, in seconds.
 pub const BUCKETS_S: [f64; 12] = [
@@ -155,24 +152,6 @@ impl Metrics {
 
 fn escape(label: &str) -> String {
     label.replace('\\', "\\\\").replace('"', "\\\"")
-}
-
-/// Middleware: times the request and records it under its route pattern.
-pub async fn track(State(state): State<AppState>, request: Request, next: Next) -> Response {
-    let started = Instant::now();
-    let route = request
-        .extensions()
-        .get::<MatchedPath>()
-        .map(|p| p.as_str().to_string());
-    let method = request.method().clone();
-    let response = next.run(request).await;
-    state.shared().metrics.record(
-        route.as_deref().unwrap_or("unmatched"),
-        method.as_str(),
-        response.status().as_u16(),
-        started.elapsed().as_secs_f64(),
-    );
-    response
 }
 
 #[cfg(test)]

@@ -24,6 +24,7 @@ mod auth;
 mod body;
 mod cache;
 mod config;
+mod endpoint;
 mod error;
 mod metrics;
 pub mod multipart;
@@ -33,14 +34,16 @@ pub mod routes;
 mod shutdown;
 mod state;
 mod timeout;
+mod track;
 pub mod viewer;
 
 use std::future::Future;
 use std::net::SocketAddr;
+use std::sync::{Arc, OnceLock};
 
-use axum::Router;
 use axum::http::{HeaderValue, Method, header};
 use axum::middleware::from_fn_with_state;
+use axum::{Extension, Router};
 use tokio::net::TcpListener;
 use tower_http::cors::{AllowOrigin, CorsLayer};
 use tower_http::trace::{DefaultMakeSpan, DefaultOnResponse, TraceLayer};
@@ -50,7 +53,6 @@ pub use cache::RevisionCache;
 pub use config::{DEFAULT_ADDR, ServerConfig};
 pub use error::{ApiError, ServerError};
 pub use metrics::Metrics;
-pub use openapi::document as openapi_document;
 pub use params::Params;
 pub use shutdown::signal as shutdown_signal;
 pub use state::{AppState, Ctx, Slot, StorePool};
@@ -69,8 +71,10 @@ pub fn router(state: AppState) -> Router {
         };
         app = app.route(e.path, handler);
     }
+    let doc = routes::OpenApiDocument(Arc::new(openapi_document()));
     let mut app = app
-        .route_layer(from_fn_with_state(state.clone(), metrics::track))
+        .layer(Extension(doc))
+        .route_layer(from_fn_with_state(state.clone(), track::track))
         .fallback(routes::fallback)
         .method_not_allowed_fallback(routes::method_not_allowed)
         .layer(
@@ -84,6 +88,13 @@ pub fn router(state: AppState) -> Router {
         app = app.layer(cors);
     }
     app.with_state(state)
+}
+
+/// The OpenAPI 3.1 document of [`routes::endpoints`] (built once).
+pub fn openapi_document() -> serde_json::Value {
+    static DOC: OnceLock<serde_json::Value> = OnceLock::new();
+    DOC.get_or_init(|| openapi::document(&routes::endpoints()))
+        .clone()
 }
 
 fn cors(origins: &[String]) -> Option<CorsLayer> {

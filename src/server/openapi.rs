@@ -1,7 +1,9 @@
 //! The OpenAPI 3.1 document, built with utoipa from the same route table
-//! as the router ([`super::routes::endpoints`]), so the two cannot drift.
-
-use std::sync::OnceLock;
+//! as the router, so the two cannot drift. The table is passed in
+//! ([`super::openapi_document`] passes [`super::routes::endpoints`]): this
+//! file knows the table's types (`endpoint.rs`), not the handlers, and the
+//! `/openapi.json` handler gets the document from the router, so routes and
+//! OpenAPI do not import each other.
 
 use serde_json::Value;
 use utoipa::openapi::path::{HttpMethod, OperationBuilder, ParameterBuilder, ParameterIn};
@@ -11,7 +13,7 @@ use utoipa::openapi::{
     ComponentsBuilder, InfoBuilder, OpenApiBuilder, PathItem, Paths, Required, ResponseBuilder,
 };
 
-use super::routes::{Endpoint, ParamDoc, endpoints, path_param_doc, path_params};
+use super::endpoint::{Endpoint, ParamDoc, path_param_doc, path_params};
 
 fn schema(kind: &str) -> ObjectBuilder {
     let t = match kind {
@@ -95,15 +97,16 @@ fn operation(e: &Endpoint) -> utoipa::openapi::path::Operation {
     op.build()
 }
 
-fn build() -> Value {
+/// The OpenAPI document of `endpoints`, as JSON.
+pub fn document(endpoints: &[Endpoint]) -> Value {
     let mut paths = Paths::new();
-    for e in endpoints() {
+    for e in endpoints {
         let method = if e.method == axum::http::Method::POST {
             HttpMethod::Post
         } else {
             HttpMethod::Get
         };
-        let item = PathItem::new(method, operation(&e));
+        let item = PathItem::new(method, operation(e));
         match paths.paths.get_mut(e.path) {
             Some(existing) => existing.merge_operations(item),
             None => {
@@ -134,24 +137,49 @@ fn build() -> Value {
     serde_json::to_value(&doc).unwrap_or(Value::Null)
 }
 
-/// The document as JSON (built once).
-pub fn document() -> Value {
-    static DOC: OnceLock<Value> = OnceLock::new();
-    DOC.get_or_init(build).clone()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    use axum::http::Method;
+    use axum::routing::{get, post};
+
+    use crate::server::endpoint::{REV, ep, q};
+
     #[test]
     fn every_endpoint_documented() {
-        let doc = document();
+        const UP: [ParamDoc; 1] = [q("message", "string", false, "commit message")];
+        let table = [
+            ep(
+                Method::GET,
+                "/maps/{map}/spaces/{id}",
+                "a space",
+                &[REV],
+                get(|| async {}),
+            ),
+            ep(
+                Method::GET,
+                "/maps/{map}/revisions",
+                "history",
+                &[],
+                get(|| async {}),
+            ),
+            ep(
+                Method::POST,
+                "/maps/{map}/revisions",
+                "upload",
+                &UP,
+                post(|| async {}),
+            ),
+        ];
+        let doc = document(&table);
         let paths = doc["paths"].as_object().unwrap();
-        for e in endpoints() {
+        for e in &table {
             let m = e.method.as_str().to_lowercase();
             assert!(paths[e.path].get(&m).is_some(), "{e:?} missing");
         }
+        let space = &paths["/maps/{map}/spaces/{id}"]["get"]["parameters"];
+        assert_eq!(space.as_array().unwrap().len(), 3, "map, id and rev");
         assert!(paths["/maps/{map}/revisions"]["post"]["security"].is_array());
     }
 }

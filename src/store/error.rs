@@ -78,6 +78,16 @@ pub enum StoreError {
         /// Why it is refused.
         reason: &'static str,
     },
+    /// A revision's message, author or source name is too long to keep.
+    #[error("revision {field} has {chars} characters; at most {limit} are allowed")]
+    TooLong {
+        /// Which field.
+        field: &'static str,
+        /// Its length in characters.
+        chars: usize,
+        /// The limit.
+        limit: usize,
+    },
     /// The model to store breaks an invariant.
     #[error("model refused: {0}")]
     Model(#[from] ModelError),

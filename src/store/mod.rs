@@ -114,10 +114,22 @@ impl ImportMeta {
 /// assert!(nrgdb::store::sha256_hex(b"").starts_with("e3b0c442"));
 /// ```
 pub fn sha256_hex(bytes: &[u8]) -> String {
-    Sha256::digest(bytes)
-        .iter()
-        .map(|b| format!("{b:02x}"))
-        .collect()
+    sha256_hex_of(&[bytes])
+}
+
+/// Lower-case hex SHA-256 of `parts` one after the other (a map's YAML,
+/// then its image), without joining them.
+///
+/// ```
+/// use nrgdb::store::{sha256_hex, sha256_hex_of};
+/// assert_eq!(sha256_hex_of(&[b"ab", b"c"]), sha256_hex(b"abc"));
+/// ```
+pub fn sha256_hex_of(parts: &[&[u8]]) -> String {
+    let mut hash = Sha256::new();
+    for part in parts {
+        hash.update(part);
+    }
+    hash.finalize().iter().map(|b| format!("{b:02x}")).collect()
 }
 
 /// One revision of a map as recorded in its history.

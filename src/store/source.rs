@@ -2,6 +2,7 @@
 //! AS …` run against SQLite revisions.
 
 use super::{ImportMeta, Store, StoreError};
+use crate::grid::OccupancyGrid;
 use crate::model::{Nrg, SpaceId};
 use crate::query::{MapInfo, RevisionInfo, Source, SourceError};
 
@@ -61,6 +62,10 @@ impl Source for Store {
 
     fn load(&self, map: &str, revision: u64) -> Result<Nrg, SourceError> {
         Store::load(self, map, Some(revision_u32(map, revision)?)).map_err(to_source)
+    }
+
+    fn grid(&self, map: &str, revision: u64) -> Result<Option<OccupancyGrid>, SourceError> {
+        Store::grid(self, map, Some(revision_u32(map, revision)?)).map_err(to_source)
     }
 
     fn rename_space(

@@ -42,6 +42,7 @@ impl Store {
         grid: Option<&crate::grid::OccupancyGrid>,
     ) -> Result<Imported, StoreError> {
         check_map_name(map)?;
+        check_meta(&meta)?;
         let params = self.match_params;
         let tx = self
             .conn
@@ -115,6 +116,32 @@ impl Store {
         tx.commit()?;
         Ok(info)
     }
+}
+
+/// Longest revision message kept, in characters (issue 21: a 20 MB
+/// upload message was stored and sent back in every revisions listing).
+pub const MAX_MESSAGE_CHARS: usize = 4_096;
+
+/// Longest author or source file name kept, in characters.
+const MAX_LABEL_CHARS: usize = 256;
+
+fn check_meta(meta: &ImportMeta) -> Result<(), StoreError> {
+    let fields = [
+        ("message", Some(meta.message.as_str()), MAX_MESSAGE_CHARS),
+        ("author", Some(meta.author.as_str()), MAX_LABEL_CHARS),
+        ("source", meta.source_name.as_deref(), MAX_LABEL_CHARS),
+    ];
+    for (field, text, limit) in fields {
+        let chars = text.map_or(0, |t| t.chars().count());
+        if chars > limit {
+            return Err(StoreError::TooLong {
+                field,
+                chars,
+                limit,
+            });
+        }
+    }
+    Ok(())
 }
 
 fn check_map_name(name: &str) -> Result<(), StoreError> {
@@ -205,6 +232,7 @@ fn commit_revision(
     nrg: &Nrg,
     meta: &ImportMeta,
 ) -> Result<RevisionInfo, StoreError> {
+    check_meta(meta)?;
     let parent_seq = parent.map(|p| p.0);
     let seq = parent_seq.unwrap_or(0) + 1;
     let empty = Nrg::default();
@@ -344,6 +372,25 @@ fn same_link(a: &Link, b: &Link) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Issue 21, defect 6: a 20 MB message was stored and returned in
+    /// every revisions listing; now it is refused, naming the field.
+    #[test]
+    fn long_messages_are_refused() {
+        let mut meta = ImportMeta::new("x".repeat(MAX_MESSAGE_CHARS), "me");
+        assert!(check_meta(&meta).is_ok());
+        meta.message.push('y');
+        let e = check_meta(&meta).unwrap_err().to_string();
+        assert!(e.contains("message has 4097 characters"), "{e}");
+        let meta = ImportMeta::new("ok", "a".repeat(300));
+        assert!(matches!(
+            check_meta(&meta),
+            Err(StoreError::TooLong {
+                field: "author",
+                ..
+            })
+        ));
+    }
 
     #[test]
     fn map_names_are_checked() {

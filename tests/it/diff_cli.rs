@@ -4,27 +4,10 @@
 use std::path::Path;
 
 use nrgdb::diff::ChangeSet;
-use nrgdb::grid::{Cell, OccupancyGrid};
+use nrgdb::grid::Cell;
 
-use super::diff_support::{extracted, floor, paint, turned};
+use super::diff_support::{extracted, floor, paint, turned, write_map};
 use super::support::nrgdb;
-
-/// Writes `grid` as `<stem>.pgm` + `<stem>.yaml` in `dir`.
-fn write_map(dir: &Path, stem: &str, grid: &OccupancyGrid) {
-    let mut pgm = format!("P5\n{} {}\n255\n", grid.width, grid.height).into_bytes();
-    pgm.extend(grid.cells.iter().map(|c| match c {
-        Cell::Free => 255u8,
-        Cell::Occupied => 0,
-        Cell::Unknown => 205,
-    }));
-    std::fs::write(dir.join(format!("{stem}.pgm")), pgm).unwrap();
-    let [x, y, yaw] = grid.origin;
-    let yaml = format!(
-        "image: {stem}.pgm\nresolution: {}\norigin: [{x}, {y}, {yaw}]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n",
-        grid.resolution
-    );
-    std::fs::write(dir.join(format!("{stem}.yaml")), yaml).unwrap();
-}
 
 fn run(dir: &Path, args: &[&str]) -> (i32, String, String) {
     let out = nrgdb(dir, args);

@@ -4,7 +4,7 @@
 //! turned and moved) and extracted again; the diff must report exactly
 //! the edit.
 
-use nrgdb::diff::{AlignMode, AlignParams, DiffParams, Revision, compare};
+use nrgdb::diff::{DiffOptions, Revision, compare};
 use nrgdb::grid::Cell;
 use nrgdb::model::SpaceKind;
 
@@ -144,18 +144,8 @@ fn turned_and_moved_map_aligns_and_reports_nothing() {
     // origin: the building seen from another run.
     let g = turned(&f.grid, 15, [3.0, -4.0, 20f64.to_radians()]);
     let b = extracted(&g);
-    let side = |nrg, grid| Revision {
-        nrg,
-        grid: Some(grid),
-    };
-    let done = compare(
-        side(&a, &f.grid),
-        side(&b, &g),
-        AlignMode::Auto,
-        &DiffParams::default(),
-        &AlignParams::default(),
-    )
-    .unwrap();
+    let side = |nrg, grid| Revision::new(nrg).with_grid(Some(grid));
+    let done = compare(side(&a, &f.grid), side(&b, &g), &DiffOptions::default()).unwrap();
     let al = done
         .alignment
         .expect("frames differ, so the maps are aligned");

@@ -3,7 +3,7 @@
 //! extracted again and diffed against the original. The edited places
 //! are chosen by rule from the original extraction, not by hand.
 
-use nrgdb::diff::{AlignMode, AlignParams, DiffParams, Revision, compare};
+use nrgdb::diff::{AlignParams, DiffOptions, Revision, compare};
 use nrgdb::grid::{Cell, LoadOptions, OccupancyGrid, load_map};
 use nrgdb::model::{Nrg, Space, SpaceId, SpaceKind, point_in_ring};
 
@@ -349,18 +349,8 @@ fn turned_and_moved_map_reports_nothing() {
     let Some((grid, a)) = load() else { return };
     let g = turned(&grid, 20, [-7.0, 12.0, (-35f64).to_radians()]);
     let b = extracted(&g);
-    let side = |nrg, grid| Revision {
-        nrg,
-        grid: Some(grid),
-    };
-    let done = compare(
-        side(&a, &grid),
-        side(&b, &g),
-        AlignMode::Auto,
-        &DiffParams::default(),
-        &AlignParams::default(),
-    )
-    .unwrap();
+    let side = |nrg, grid| Revision::new(nrg).with_grid(Some(grid));
+    let done = compare(side(&a, &grid), side(&b, &g), &DiffOptions::default()).unwrap();
     let al = done.alignment.expect("aligned");
     assert!(al.inliers > 0.9, "{al:?}");
     assert!((al.transform.rotation_deg() + 55.0).abs() < 0.5, "{al:?}");

@@ -1,6 +1,8 @@
 //! Test support for the diff tests: a generated floor as an occupancy
 //! grid, painting edits on grids, and extraction.
 
+use std::path::Path;
+
 use nrgdb::diff::{ChangeSet, DiffParams, apply, diff};
 use nrgdb::extract::{ExtractParams, extract};
 use nrgdb::grid::{Cell, OccupancyGrid};
@@ -85,6 +87,23 @@ pub fn turned(grid: &OccupancyGrid, pad: u32, origin: [f64; 3]) -> OccupancyGrid
         }
     }
     OccupancyGrid::from_cells(w, h, grid.resolution, origin, cells)
+}
+
+/// Writes `grid` as `<stem>.pgm` + `<stem>.yaml` in `dir`.
+pub fn write_map(dir: &Path, stem: &str, grid: &OccupancyGrid) {
+    let mut pgm = format!("P5\n{} {}\n255\n", grid.width, grid.height).into_bytes();
+    pgm.extend(grid.cells.iter().map(|c| match c {
+        Cell::Free => 255u8,
+        Cell::Occupied => 0,
+        Cell::Unknown => 205,
+    }));
+    std::fs::write(dir.join(format!("{stem}.pgm")), pgm).unwrap();
+    let [x, y, yaw] = grid.origin;
+    let yaml = format!(
+        "image: {stem}.pgm\nresolution: {}\norigin: [{x}, {y}, {yaw}]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n",
+        grid.resolution
+    );
+    std::fs::write(dir.join(format!("{stem}.yaml")), yaml).unwrap();
 }
 
 /// The default extraction of a grid.

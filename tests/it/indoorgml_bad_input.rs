@@ -127,11 +127,29 @@ fn cli_refuses_files_over_the_size_limit() {
 }
 
 #[test]
-fn cli_refuses_unknown_extensions() {
+fn cli_refuses_unknown_formats() {
     let dir = tempfile::tempdir().unwrap();
-    let out = nrgdb(dir.path(), &["convert", "a.txt", "b.json"]);
+    // Output formats go by extension.
+    std::fs::write(dir.path().join("a.gml"), doc_with("")).unwrap();
+    let out = nrgdb(dir.path(), &["convert", "a.gml", "b.txt"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("unknown format"));
+    // An input goes by extension and content: neither tells here.
+    std::fs::write(dir.path().join("a.txt"), "hello").unwrap();
+    let out = nrgdb(dir.path(), &["convert", "a.txt", "b.json"]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("a.txt: cannot tell the format"), "{stderr}");
+    // Content that contradicts the extension is refused, naming both.
+    std::fs::write(dir.path().join("c.json"), doc_with("")).unwrap();
+    let out = nrgdb(dir.path(), &["convert", "c.json", "d.geojson"]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("its name says model JSON but its content is IndoorGML"),
+        "{stderr}"
+    );
+    assert!(!dir.path().join("d.geojson").exists());
 }
 
 #[test]
@@ -143,4 +161,29 @@ fn non_utf8_input_is_refused() {
         .unwrap_err()
         .to_string();
     assert!(e.contains("line 2") && e.contains("UTF-8"), "{e}");
+}
+
+/// Issue 21, defect 5: cells with a coordinate near 1e308 made the
+/// overlap check panic inside geo, and convert/import with it. Now the
+/// checker names the cell and the converter refuses the model, naming
+/// the space.
+#[test]
+fn far_flung_coordinates_are_a_finding_not_a_panic() {
+    let far = |id: &str| cell(&format!("gml:id=\"{id}\""), "0 0 1e308 0 1e308 1e308 0 0");
+    let doc = read_str(&doc_with(&far("C1"))).unwrap();
+    let findings = indoorgml::check(&doc);
+    assert!(
+        findings
+            .iter()
+            .any(|f| f.code == "coordinates-out-of-range" && f.element == "C1"),
+        "{findings:?}"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("far.gml"), doc_with(&far("C1"))).unwrap();
+    let out = nrgdb(dir.path(), &["convert", "far.gml", "out.json"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!out.status.success(), "{stderr}");
+    assert!(stderr.contains("from the origin"), "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert!(!dir.path().join("out.json").exists());
 }

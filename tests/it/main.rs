@@ -16,6 +16,7 @@ mod doorway_formats;
 mod extract;
 mod extract_doors;
 mod extract_tiling;
+mod ingest;
 mod query;
 mod query_cli;
 mod query_golden;
@@ -26,7 +27,9 @@ mod route_props;
 
 mod diff_cli;
 mod diff_edits;
+mod diff_entry_points;
 mod diff_props;
+mod diff_self;
 mod diff_shared;
 mod diff_support;
 mod render_cli;

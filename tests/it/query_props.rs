@@ -93,7 +93,8 @@ fn statement() -> impl Strategy<Value = Statement> {
             space_ref(),
             refs(),
             refs(),
-            proptest::option::of(any::<u32>()),
+            // The parser takes 1 to MAX_ALTERNATIVES.
+            proptest::option::of(1..=nrgdb::route::MAX_ALTERNATIVES as u32),
             walk_options()
         )
             .prop_map(
@@ -132,7 +133,12 @@ fn statement() -> impl Strategy<Value = Statement> {
         proptest::option::of(text()).prop_map(|map| Statement::ShowRevisions { map }),
         (text(), proptest::option::of(any::<u64>()))
             .prop_map(|(map, revision)| Statement::Use { map, revision }),
-        (space_ref(), text()).prop_map(|(space, name)| Statement::Name { space, name }),
+        // Names are never empty (or blank).
+        (
+            space_ref(),
+            "[a-zA-Z0-9_\"'\\\\%-][a-zA-Z0-9 _\"'\\\\%-]{0,9}"
+        )
+            .prop_map(|(space, name)| Statement::Name { space, name }),
         (any::<u64>(), any::<u64>()).prop_map(|(from, to)| Statement::Diff { from, to }),
     ]
     .prop_flat_map(|s| prop_oneof![Just(s.clone()), Just(Statement::Explain(Box::new(s)))])

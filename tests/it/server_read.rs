@@ -290,9 +290,16 @@ async fn exports_query_metrics_and_unknown_paths() {
     )
     .await
     .assert_error(400, "body");
-    // NAME writes: refused in its result slot on a read-only server.
-    let named = s.post("/query", &[], b"NAME 11 AS \"Lab\";").await.json();
-    assert_eq!(named["results"][0]["type"], "error");
+    // NAME writes: a read-only server refuses the whole request with 403
+    // (issue 21, defect 10: it answered 200 with an error inside), and
+    // runs none of its statements.
+    let named = s
+        .post("/query", &[], b"FIND rooms; NAME 11 AS \"Lab\";")
+        .await;
+    assert_eq!(
+        (named.status, named.json()["code"].as_str()),
+        (403, Some("ReadOnly"))
+    );
     assert_eq!(s.revision_count("building"), 1);
 
     let m = s.get("/metrics").await;
@@ -353,5 +360,28 @@ async fn cors_is_opt_in() {
     .await;
     assert_eq!(other.status, 200);
     assert!(other.header("access-control-allow-origin").is_none());
+    s.stop().await;
+}
+
+/// Issue 21, defect 1: a 4 KB query of nested brackets (or NOTs) aborted
+/// the whole server, read-only included. Now it is a 400 and the server
+/// goes on answering.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn nested_query_does_not_crash_the_server() {
+    let s = TestServer::read_only().await;
+    let brackets = format!(
+        "FIND rooms WHERE {}area > 1{};",
+        "(".repeat(2_000),
+        ")".repeat(2_000)
+    );
+    let nots = format!("FIND rooms WHERE {}area > 1;", "NOT ".repeat(5_000));
+    for body in [brackets, nots] {
+        let r = s.post("/query", &[], body.as_bytes()).await;
+        r.assert_error(400, "query");
+        assert!(r.text().contains("nest at most 64 deep"), "{}", r.text());
+    }
+    let h = s.get("/health").await;
+    assert_eq!(h.status, 200);
+    assert_eq!(h.json()["status"], "ok");
     s.stop().await;
 }

@@ -1,8 +1,13 @@
 //! Issue #7: uploads. Token rules (403 read-only, 401 without the token),
 //! size limit (413), malformed uploads store nothing, a new revision is
 //! served by the next request, multipart map YAML + image is extracted.
+//! Issue #19: an upload is read from memory, never written to a temporary
+//! folder.
 
-use super::server_client::{TOKEN, TestServer};
+use std::io::{BufRead, BufReader};
+use std::process::{Command, Stdio};
+
+use super::server_client::{TOKEN, TestServer, request};
 
 const AUTH: (&str, &str) = ("Authorization", "Bearer test-token-42");
 
@@ -297,6 +302,23 @@ async fn map_yaml_and_image_are_extracted() {
     s.stop().await;
 }
 
+/// Issue 21, defect 10: NAME through /query without the token answered
+/// 200 with an error inside; it is a 401 like every other write, with
+/// the wrong token too, and nothing is written.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn name_query_without_token_is_401() {
+    let s = TestServer::writable().await;
+    for headers in [&[][..], &[("Authorization", "Bearer nope")][..]] {
+        let r = s
+            .post("/query?map=building", headers, b"NAME 11 AS \"Lab\";")
+            .await;
+        assert_eq!(r.status, 401, "{}", r.text());
+        assert!(r.header("www-authenticate").unwrap().starts_with("Bearer"));
+    }
+    assert_eq!(s.revision_count("building"), 1);
+    s.stop().await;
+}
+
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn name_query_with_token_writes_a_revision() {
     let s = TestServer::writable().await;
@@ -366,4 +388,87 @@ async fn revision_written_by_another_process_is_served_next() {
     assert_eq!(r["revision"], 2);
     assert_eq!(r["spaces"].as_array().unwrap().len(), 8);
     s.stop().await;
+}
+
+/// A child process killed when dropped, so a failing test leaves no
+/// server behind.
+struct Killed(std::process::Child);
+
+impl Drop for Killed {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn issue_19_map_upload_leaves_no_temporary_files() {
+    // The server's temporary folder does not exist: an upload written to
+    // a temporary file (as before issue 19) fails; one read in memory not.
+    let dir = tempfile::tempdir().unwrap();
+    let tmp = dir.path().join("no-temp-dir");
+    let db = dir.path().join("up.sqlite");
+    let mut child = Killed(
+        Command::new(env!("CARGO_BIN_EXE_nrgdb"))
+            .args(["serve", "--addr", "127.0.0.1:0", "--token", TOKEN, "--db"])
+            .arg(&db)
+            .env("TMPDIR", &tmp)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap(),
+    );
+    let mut line = String::new();
+    BufReader::new(child.0.stdout.as_mut().unwrap())
+        .read_line(&mut line)
+        .unwrap();
+    let url = line
+        .split_whitespace()
+        .find(|w| w.starts_with("http://"))
+        .unwrap();
+    let addr: std::net::SocketAddr = url.trim_start_matches("http://").parse().unwrap();
+    let (yaml, pgm) = floor_pgm();
+    let headers = [("Content-Type", "multipart/form-data; boundary=B"), AUTH];
+    let broken = multipart(
+        "B",
+        &[
+            ("yaml", Some("floor.yaml"), yaml.as_bytes()),
+            ("image", Some("floor.pgm"), b"P5\n240 160\n255\n"),
+        ],
+    );
+    let r = request(addr, "POST", "/maps/floor/revisions", &headers, &broken).await;
+    assert_eq!(r.status, 400, "{}", r.text());
+    let message = r.json()["message"].as_str().unwrap_or_default().to_string();
+    assert!(
+        message.contains("nothing stored: floor.pgm: cannot decode the image"),
+        "{message}"
+    );
+    let body = multipart(
+        "B",
+        &[
+            ("yaml", Some("floor.yaml"), yaml.as_bytes()),
+            ("image", Some("floor.pgm"), &pgm),
+        ],
+    );
+    let r = request(addr, "POST", "/maps/floor/revisions", &headers, &body).await;
+    assert_eq!(r.status, 201, "{}", r.text());
+    let killed = Command::new("kill")
+        .args(["-TERM", &child.0.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(killed.success());
+    assert!(child.0.wait().unwrap().success());
+    assert!(!tmp.exists(), "nothing may create the temporary folder");
+    let left: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .flatten()
+        .map(|e| e.file_name())
+        .collect();
+    assert!(
+        left.iter()
+            .all(|n| n.to_string_lossy().starts_with("up.sqlite")),
+        "files left: {left:?}"
+    );
+    let store = nrgdb::store::Store::open(&db).unwrap();
+    assert_eq!(store.revisions("floor").unwrap().len(), 1);
 }

@@ -45,6 +45,22 @@ pub fn check_overlaps(doc: &Document, out: &mut Vec<Finding>) {
         let Ok((ring, holes)) = footprint(c) else {
             continue;
         };
+        // geo's boolean operations panic on coordinates near 1e308 (issue
+        // 21, defect 5): such a cell is a finding of its own, not compared.
+        let limit = crate::model::MAX_COORD_M;
+        if std::iter::once(&ring)
+            .chain(&holes)
+            .flatten()
+            .any(|p| !(p[0].abs() <= limit && p[1].abs() <= limit))
+        {
+            out.push(finding(
+                "coordinates-out-of-range",
+                &c.info.id,
+                c.info.line,
+                format!("has a coordinate more than {limit} m from the origin (or not a number)"),
+            ));
+            continue;
+        }
         let line =
             |r: &[[f64; 2]]| GeoLine::new(r.iter().map(|p| Coord { x: p[0], y: p[1] }).collect());
         let polygon = GeoPolygon::new(line(&ring), holes.iter().map(|h| line(h)).collect());

@@ -15,7 +15,8 @@ fn cross(u: Point, v: Point) -> f64 {
 
 /// Euclidean distance.
 pub(crate) fn dist(a: Point, b: Point) -> f64 {
-    (a[0] - b[0]).hypot(a[1] - b[1])
+    let (dx, dy) = (a[0] - b[0], a[1] - b[1]);
+    (dx * dx + dy * dy).sqrt()
 }
 
 /// The length of a polyline.

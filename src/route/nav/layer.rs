@@ -1,14 +1,15 @@
 //! What makes a route query fast, computed once per revision: inside every
-//! space, a shortest-path tree over its triangles from each of its gates and
-//! from its anchor, and the walked length (funnel) between every pair of
-//! crossing points — [`SAMPLES`] along each gate, and the anchor. A query
-//! then searches only the small graph of gate crossings.
+//! space, a shortest-path tree over its triangles from each crossing point
+//! ([`SAMPLES`] along each of its openings) and from its anchor, and the
+//! walked length (funnel) between every pair of them. A query then searches
+//! only the small graph of opening crossings.
 
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 use std::sync::OnceLock;
 
 use super::clearance::{clear_walk, edge_open, traversal_open};
+use super::dead_ends::DeadEnds;
 use super::funnel::{dist, funnel, polyline_length};
 use super::mesh::{Across, Mesh, NONE};
 use crate::model::{Nrg, Point};
@@ -23,19 +24,20 @@ pub(crate) struct Tree {
     cost: Vec<f64>,
 }
 
-/// Crossing points per gate: inset from both ends, and the middle, so the
+/// Crossing points per opening: inset from both ends, and the middle, so the
 /// search can pass a doorway near the side it turns to.
 pub(crate) const SAMPLES: usize = 3;
 
-/// Spaces with more gates than this get approximate in-space lengths
+/// Spaces with more openings than this get approximate in-space lengths
 /// (tree distances) instead of one funnel per pair of crossing points.
-const EXACT_TABLE_GATES: usize = 200;
+const EXACT_TABLE_OPENINGS: usize = 200;
 
-/// Where along a gate its crossing points lie (fractions of its free part).
+/// Where along an opening its crossing points lie (fractions of its free
+/// part).
 const SAMPLE_AT: [f64; SAMPLES] = [0.1, 0.5, 0.9];
 
 /// The sources of one space: [`SAMPLES`] crossing points of each of its
-/// gates in `Mesh::space_gates` order, then its anchor.
+/// openings in `Openings::of_space` order, then its anchor.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct SpaceTable {
     /// `(triangle, point)` of each source.
@@ -58,30 +60,12 @@ impl SpaceTable {
         self.sources.len().saturating_sub(1)
     }
 
-    /// The tree grown from source `i` (one per gate, one for the anchor).
-    fn tree_of(&self, i: usize) -> usize {
-        if i == self.anchor() {
-            self.trees.len().saturating_sub(1)
-        } else {
-            i / SAMPLES
-        }
-    }
-
     /// The triangles from source `i` to source `j`, both included.
     pub fn channel(&self, mesh: &Mesh, local: &[u32], i: usize, j: usize) -> Option<Vec<u32>> {
-        let (ti, tj) = (self.tree_of(i), self.tree_of(j));
-        if ti == tj {
-            return Some(vec![self.sources.get(i)?.0]);
-        }
-        if ti < tj {
-            let target = self.sources.get(j)?.0;
-            let mut c = self.trees.get(ti)?.walk(mesh, local, target)?;
-            c.reverse();
-            Some(c)
-        } else {
-            let target = self.sources.get(i)?.0;
-            self.trees.get(tj)?.walk(mesh, local, target)
-        }
+        let target = self.sources.get(j)?.0;
+        let mut c = self.trees.get(i)?.walk(mesh, local, target)?;
+        c.reverse();
+        Some(c)
     }
 }
 
@@ -137,7 +121,7 @@ impl Tree {
         Tree { pred, cost }
     }
 
-    /// A tree that reaches nothing (from a closed gate).
+    /// A tree that reaches nothing (from a closed opening).
     pub fn unreached(n: usize) -> Tree {
         Tree {
             pred: vec![NONE; n],
@@ -191,12 +175,15 @@ pub(crate) fn walk(mesh: &Mesh, from: Point, to: Point, channel: &[u32], r: f64)
 pub(crate) struct Layer {
     /// The clearance kept, metres.
     pub clearance_m: f64,
-    /// The crossing points of each gate.
-    pub samples: Vec<[Point; SAMPLES]>,
-    /// Whether each gate is wide enough for it.
-    pub gate_open: Vec<bool>,
+    /// The crossing points of each opening, each with the gate it lies on.
+    pub samples: Vec<[(u32, Point); SAMPLES]>,
+    /// Whether each opening is wide enough for it.
+    pub open: Vec<bool>,
+
     /// Local index of each triangle within its space.
     pub local: Vec<u32>,
+    /// The dead ends of the opening graph at this clearance.
+    pub dead_ends: DeadEnds,
     /// The anchor of each space: its triangle and point.
     anchors: Vec<(u32, Point)>,
     /// One table per space (dense index), built when a route first needs
@@ -214,15 +201,14 @@ impl Layer {
                 local[*t as usize] = i as u32;
             }
         }
-        let gate_open: Vec<bool> = mesh
-            .gates
+        let openings = &mesh.openings.list;
+        let open: Vec<bool> = openings
             .iter()
-            .map(|g| edge_open(mesh, g.ends[0], g.ends[1], clearance_m))
+            .map(|o| o.open(&mesh.gate_view(), clearance_m))
             .collect();
-        let samples: Vec<[Point; SAMPLES]> = mesh
-            .gates
+        let samples: Vec<[(u32, Point); SAMPLES]> = openings
             .iter()
-            .map(|g| crossings(mesh, g.ends, clearance_m))
+            .map(|o| o.crossings(&mesh.gate_view(), SAMPLE_AT, clearance_m))
             .collect();
         let anchors = (0..mesh.space_ids.len() as u32)
             .map(|s| anchor(mesh, nrg, s))
@@ -230,7 +216,8 @@ impl Layer {
         Layer {
             clearance_m,
             samples,
-            gate_open,
+            dead_ends: DeadEnds::new(mesh, &open),
+            open,
             local,
             anchors,
             tables: (0..mesh.space_ids.len()).map(|_| OnceLock::new()).collect(),
@@ -255,7 +242,7 @@ impl Layer {
                 &self.local,
                 s,
                 self.clearance_m,
-                &self.gate_open,
+                &self.open,
                 &self.samples,
                 *anchor,
             )
@@ -277,74 +264,47 @@ fn anchor(mesh: &Mesh, nrg: &Nrg, s: u32) -> (u32, Point) {
         .unwrap_or_else(|| (*first, mesh.centroid(*first)))
 }
 
-/// The crossing points of the gate `ends`, on the part of it at least `r`
-/// from an obstacle end.
-fn crossings(mesh: &Mesh, ends: [u32; 2], r: f64) -> [Point; SAMPLES] {
-    let [a, b] = ends.map(|v| mesh.point(v));
-    let len = dist(a, b);
-    let inset = |v: u32| if mesh.obstacle[v as usize] { r } else { 0.0 };
-    let (t0, t1) = if len > 0.0 {
-        let (t0, t1) = (inset(ends[0]) / len, 1.0 - inset(ends[1]) / len);
-        if t0 <= t1 { (t0, t1) } else { (0.5, 0.5) }
-    } else {
-        (0.0, 0.0)
-    };
-    SAMPLE_AT.map(|f| {
-        let t = t0 + f * (t1 - t0);
-        [a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])]
-    })
-}
-
 #[allow(clippy::too_many_arguments)]
 fn table(
     mesh: &Mesh,
     local: &[u32],
     s: u32,
     r: f64,
-    gate_open: &[bool],
-    samples: &[[Point; SAMPLES]],
+    open: &[bool],
+    samples: &[[(u32, Point); SAMPLES]],
     anchor: (u32, Point),
 ) -> SpaceTable {
     let tris = &mesh.space_tris[s as usize];
     if tris.is_empty() {
         return SpaceTable::default();
     }
-    let mut sources: Vec<(u32, Point)> = mesh.space_gates[s as usize]
+    let openings = &mesh.openings.of_space[s as usize];
+    // Each crossing point in the triangle on this space's side of its gate.
+    let mut sources: Vec<(u32, Point)> = openings
         .iter()
-        .flat_map(|g| {
-            let gate = &mesh.gates[*g as usize];
-            let side = if gate.sides[0].1 == s {
-                gate.sides[0].0
-            } else {
-                gate.sides[1].0
-            };
-            samples[*g as usize].map(|p| (side, p))
+        .flat_map(|o| {
+            samples[*o as usize].map(|(g, p)| {
+                let gate = &mesh.gates[g as usize];
+                let side = if gate.sides[0].1 == s {
+                    gate.sides[0].0
+                } else {
+                    gate.sides[1].0
+                };
+                (side, p)
+            })
         })
         .collect();
     sources.push(anchor);
-    let gates = &mesh.space_gates[s as usize];
     let n = sources.len();
     let anchor = n - 1;
-    // The tree of each source: one per gate (grown from its middle
-    // crossing), then the anchor's.
-    let tree_of = |i: usize| {
-        if i == anchor {
-            gates.len()
-        } else {
-            i / SAMPLES
-        }
-    };
-    // A closed gate is a source nothing reaches.
-    let open = |i: usize| i == anchor || gate_open[gates[i / SAMPLES] as usize];
-    let roots = (0..gates.len())
-        .map(|g| g * SAMPLES + SAMPLES / 2)
-        .chain(std::iter::once(anchor));
-    let trees: Vec<Tree> = roots
+    // A closed opening is a source nothing reaches.
+    let reached = |i: usize| i == anchor || open[openings[i / SAMPLES] as usize];
+    let trees: Vec<Tree> = (0..n)
         .map(|i| {
-            if open(i) {
+            if reached(i) {
                 Tree::grow(mesh, local, s, sources[i].0, sources[i].1, r)
             } else {
-                Tree::unreached(mesh.space_tris[s as usize].len())
+                Tree::unreached(tris.len())
             }
         })
         .collect();
@@ -352,30 +312,25 @@ fn table(
     for i in 0..n {
         costs[i * n + i] = 0.0;
         for j in i + 1..n {
-            if !open(i) || !open(j) {
+            if !reached(i) || !reached(j) {
                 continue;
             }
-            let (ti, tj) = (tree_of(i), tree_of(j));
-            if gates.len() > EXACT_TABLE_GATES {
+            if openings.len() > EXACT_TABLE_OPENINGS {
                 // A hall with hundreds of doors: n² funnels would take
                 // minutes, so the search uses the tree's distance through
                 // edge midpoints (never below the straight line); the route
                 // it picks is still straightened exactly.
                 let lt = local[sources[j].0 as usize] as usize;
-                let through = trees[ti].cost.get(lt).copied().unwrap_or(f64::INFINITY);
+                let through = trees[i].cost.get(lt).copied().unwrap_or(f64::INFINITY);
                 let length = through.max(dist(sources[i].1, sources[j].1));
                 costs[i * n + j] = length;
                 costs[j * n + i] = length;
                 continue;
             }
-            let channel = if ti == tj {
-                Some(vec![sources[i].0])
-            } else {
-                trees[ti].walk(mesh, local, sources[j].0).map(|mut c| {
-                    c.reverse();
-                    c
-                })
-            };
+            let channel = trees[i].walk(mesh, local, sources[j].0).map(|mut c| {
+                c.reverse();
+                c
+            });
             if let Some(c) = channel {
                 let length = polyline_length(&walk(mesh, sources[i].1, sources[j].1, &c, r));
                 costs[i * n + j] = length;

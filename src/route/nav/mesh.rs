@@ -11,10 +11,11 @@ use rstar::primitives::{GeomWithData, Rectangle};
 use spade::handles::FixedVertexHandle;
 use spade::{ConstrainedDelaunayTriangulation, Point2, PositionInTriangulation, Triangulation};
 
+use super::gate::GateView;
+use super::openings::Openings;
 use crate::model::{Nrg, Point, Space, SpaceId, point_in_ring};
 
-/// "No triangle" / "no space" in the dense index arrays.
-pub(crate) const NONE: u32 = u32::MAX;
+pub(crate) use super::gate::{Gate, NONE};
 
 /// What lies across one edge of a triangle.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -37,17 +38,6 @@ pub(crate) struct Tri {
     pub space: u32,
 }
 
-/// A passable triangle edge between two spaces.
-#[derive(Debug, Clone)]
-pub(crate) struct Gate {
-    /// The edge's end points (vertex indices).
-    pub ends: [u32; 2],
-    /// The triangle on each side and its space: `(tri, space)`.
-    pub sides: [(u32, u32); 2],
-    /// This gate's index in `Mesh::space_gates` of each side's space.
-    pub slots: [u32; 2],
-}
-
 /// The triangulated floor.
 #[derive(Debug)]
 pub(crate) struct Mesh {
@@ -59,10 +49,10 @@ pub(crate) struct Mesh {
     pub space_index: HashMap<SpaceId, u32>,
     /// Triangles of each space.
     pub space_tris: Vec<Vec<u32>>,
-    /// Gates of each space.
-    pub space_gates: Vec<Vec<u32>>,
     /// Whether a vertex touches a wall edge (an obstacle corner).
     pub obstacle: Vec<bool>,
+    /// The gates joined into openings.
+    pub openings: Openings,
     /// Map from spade's inner face index to our triangle (NONE: outside).
     face_tri: Vec<u32>,
     cdt: ConstrainedDelaunayTriangulation<Point2<f64>>,
@@ -235,7 +225,7 @@ impl Mesh {
             nrg.connection(space_ids[a as usize], space_ids[b as usize])
                 .is_some_and(|c| c.kind.is_navigable())
         };
-        let mut gates = Vec::new();
+        let mut gates: Vec<Gate> = Vec::new();
         let mut gate_of_edge: HashMap<usize, u32> = HashMap::new();
         let mut obstacle = vec![false; points.len()];
         for face in cdt.inner_faces() {
@@ -273,7 +263,6 @@ impl Mesh {
                             gates.push(Gate {
                                 ends: [p, q],
                                 sides: [(t, space), (other, os)],
-                                slots: [0; 2],
                             });
                             (gates.len() - 1) as u32
                         });
@@ -294,25 +283,20 @@ impl Mesh {
         for (t, tri) in tris.iter().enumerate() {
             space_tris[tri.space as usize].push(t as u32);
         }
-        let mut space_gates = vec![Vec::new(); space_ids.len()];
-        for (g, gate) in gates.iter_mut().enumerate() {
-            for (side, (_, s)) in gate.sides.iter().enumerate() {
-                gate.slots[side] = space_gates[*s as usize].len() as u32;
-                space_gates[*s as usize].push(g as u32);
-            }
-        }
-        Mesh {
+        let mut mesh = Mesh {
             points,
             tris,
             gates,
             space_ids,
             space_index,
             space_tris,
-            space_gates,
             obstacle,
+            openings: Openings::default(),
             face_tri,
             cdt,
-        }
+        };
+        mesh.openings = Openings::new(&mesh.gate_view());
+        mesh
     }
 
     /// The triangle containing `p`, preferring one of space `prefer` when
@@ -352,6 +336,16 @@ impl Mesh {
             .or_else(|| found.first().copied())
     }
 
+    /// The gate edges with the vertices they need, for [`Openings`].
+    pub fn gate_view(&self) -> GateView<'_> {
+        GateView {
+            points: &self.points,
+            obstacle: &self.obstacle,
+            gates: &self.gates,
+            spaces: self.space_ids.len(),
+        }
+    }
+
     /// The position of vertex `v`.
     pub fn point(&self, v: u32) -> Point {
         self.points[v as usize]
@@ -381,14 +375,6 @@ impl Mesh {
             };
             (next == u).then(|| (tri.v[i], tri.v[(i + 1) % 3]))
         })
-    }
-
-    /// The index of gate `g` in `space_gates[s]`, when `s` is one of its sides.
-    pub fn slot(&self, g: u32, s: u32) -> Option<usize> {
-        let gate = self.gates.get(g as usize)?;
-        (0..2)
-            .find(|i| gate.sides[*i].1 == s)
-            .map(|i| gate.slots[i] as usize)
     }
 
     /// The dense index of a space.

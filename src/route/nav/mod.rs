@@ -15,9 +15,12 @@
 //! `rstar`; knows nothing of queries, storage or HTTP.
 
 mod clearance;
+mod dead_ends;
 mod funnel;
+mod gate;
 pub(crate) mod layer;
 pub(crate) mod mesh;
+mod openings;
 mod search;
 
 use std::collections::HashMap;

@@ -1,10 +1,11 @@
-//! One walked path between two end points: A* over the gates with the
+//! One walked path between two end points: A* over the openings with the
 //! precomputed in-space lengths, then the channel of triangles it implies,
 //! straightened by the funnel.
 
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
+use super::dead_ends::DeadEnds;
 use super::funnel::{dist, polyline_length};
 use super::layer::{Layer, SAMPLES, Tree, walk};
 use super::mesh::{Mesh, NONE};
@@ -20,10 +21,10 @@ pub(crate) struct End {
     pub at: Point,
     /// Its triangle.
     pub tri: u32,
-    /// In-space walked length to each crossing point of each gate of its
-    /// space (`Mesh::space_gates` order, [`SAMPLES`] a gate).
-    pub to_gates: Vec<f64>,
-    /// How the channel to a gate is found.
+    /// In-space walked length to each crossing point of each opening of
+    /// its space (`Openings::of_space` order, [`SAMPLES`] an opening).
+    pub to_crossings: Vec<f64>,
+    /// How the channel to a crossing is found.
     kind: EndKind,
 }
 
@@ -41,12 +42,12 @@ impl End {
         let table = layer.table(mesh, s);
         let a = table.anchor();
         let (tri, at) = *table.sources.get(a)?;
-        let to_gates = (0..a).map(|j| table.cost(a, j)).collect();
+        let to_crossings = (0..a).map(|j| table.cost(a, j)).collect();
         Some(End {
             space: s,
             at,
             tri,
-            to_gates,
+            to_crossings,
             kind: EndKind::Anchor,
         })
     }
@@ -57,31 +58,31 @@ impl End {
         let r = layer.clearance_m;
         let tree = Tree::grow(mesh, &layer.local, space, tri, at, r);
         let table = layer.table(mesh, space);
-        let gates = &mesh.space_gates[space as usize];
-        let mut to_gates = vec![f64::INFINITY; gates.len() * SAMPLES];
-        for (j, g) in gates.iter().enumerate() {
-            if !layer.gate_open[*g as usize] {
+        let openings = &mesh.openings.of_space[space as usize];
+        let mut to_crossings = vec![f64::INFINITY; openings.len() * SAMPLES];
+        for (j, o) in openings.iter().enumerate() {
+            if !layer.open[*o as usize] {
                 continue;
             }
-            let Some(mut c) = tree.walk(mesh, &layer.local, table.sources[j * SAMPLES].0) else {
-                continue;
-            };
-            c.reverse();
             for k in 0..SAMPLES {
-                let p = table.sources[j * SAMPLES + k].1;
-                to_gates[j * SAMPLES + k] = polyline_length(&walk(mesh, at, p, &c, r));
+                let (tri, p) = table.sources[j * SAMPLES + k];
+                let Some(mut c) = tree.walk(mesh, &layer.local, tri) else {
+                    continue;
+                };
+                c.reverse();
+                to_crossings[j * SAMPLES + k] = polyline_length(&walk(mesh, at, p, &c, r));
             }
         }
         End {
             space,
             at,
             tri,
-            to_gates,
+            to_crossings,
             kind: EndKind::Point(tree),
         }
     }
 
-    /// Triangles from this end to source `j` (a gate crossing) of its space
+    /// Triangles from this end to source `j` (an opening crossing) of its space
     /// (`outbound`) or from there to this end.
     fn channel(&self, mesh: &Mesh, layer: &Layer, j: usize, outbound: bool) -> Option<Vec<u32>> {
         let table = layer.table(mesh, self.space);
@@ -128,7 +129,7 @@ pub(crate) struct Walk {
     pub length_m: f64,
     /// The spaces entered, in order (dense indices), start and goal included.
     pub spaces: Vec<u32>,
-    /// The gates crossed, in order (one fewer than `spaces`).
+    /// The gate edges crossed, in order (one fewer than `spaces`).
     pub gates: Vec<u32>,
 }
 
@@ -143,14 +144,17 @@ pub(crate) fn shortest_walk(
     banned: &[bool],
     budget: &Budget,
 ) -> Option<Walk> {
-    // Nodes are gate crossings: gate g, sample k is node g * SAMPLES + k.
-    let nodes = mesh.gates.len() * SAMPLES;
+    // Nodes are opening crossings: opening o, sample k is node
+    // o * SAMPLES + k.
+    let openings = &mesh.openings;
+    let nodes = openings.list.len() * SAMPLES;
     let mut cost = vec![f64::INFINITY; nodes];
     // Predecessor of a node: the previous node (NONE: the start) and the
     // space walked through.
     let mut pred = vec![(NONE, NONE); nodes];
+    let mut done = vec![false; nodes];
     let mut heap: BinaryHeap<Reverse<(u64, u32)>> = BinaryHeap::new();
-    let point = |n: u32| layer.samples[n as usize / SAMPLES][n as usize % SAMPLES];
+    let point = |n: u32| layer.samples[n as usize / SAMPLES][n as usize % SAMPLES].1;
     let h = |n: u32| dist(point(n), to.at);
     let mut best = f64::INFINITY;
     // The goal's predecessor node (NONE: direct, inside one space).
@@ -160,17 +164,20 @@ pub(crate) fn shortest_walk(
     {
         best = polyline_length(&walk(mesh, from.at, to.at, &c, layer.clearance_m));
     }
-    for (j, g) in mesh.space_gates[from.space as usize].iter().enumerate() {
+    let scope = Scope::new(mesh, &layer.dead_ends, &[from.space, to.space]);
+    let from_openings = &openings.of_space[from.space as usize];
+    scope.for_each_slot(mesh, from.space, |j| {
+        let g = from_openings[j];
         for k in 0..SAMPLES {
-            let c = from.to_gates[j * SAMPLES + k];
-            let n = *g * SAMPLES as u32 + k as u32;
+            let c = from.to_crossings[j * SAMPLES + k];
+            let n = g * SAMPLES as u32 + k as u32;
             if c < cost[n as usize] {
                 cost[n as usize] = c;
                 pred[n as usize] = (NONE, from.space);
                 heap.push(Reverse(((c + h(n)).to_bits(), n)));
             }
         }
-    }
+    });
     while let Some(Reverse((key, n))) = heap.pop() {
         if budget.check() {
             return None;
@@ -179,40 +186,45 @@ pub(crate) fn shortest_walk(
         if f >= best {
             break;
         }
-        let d = cost[n as usize];
-        if f > d + h(n) + 1e-9 {
+        // The heuristic is consistent (every in-space length is at least
+        // the straight line), so a node's first pop is final.
+        if std::mem::replace(&mut done[n as usize], true) {
             continue;
         }
-        let (g, k) = (n as usize / SAMPLES, n as usize % SAMPLES);
-        let gate = &mesh.gates[g];
-        for (_, t) in gate.sides {
-            if t == pred[n as usize].1 || (banned[t as usize] && t != to.space) {
+        let d = cost[n as usize];
+        let (o, k) = (n as usize / SAMPLES, n as usize % SAMPLES);
+        let opening = &openings.list[o];
+        for (i, t) in opening.sides.into_iter().enumerate() {
+            if t == pred[n as usize].1 || (banned[t as usize] && t != to.space) || !scope.enters(t)
+            {
                 continue;
             }
-            let list = &mesh.space_gates[t as usize];
+            let list = &openings.of_space[t as usize];
             let table = layer.table(mesh, t);
-            let Some(jg) = mesh.slot(g as u32, t) else {
-                continue;
-            };
-            let src = jg * SAMPLES + k;
+            let src = opening.slots[i] as usize * SAMPLES + k;
             if t == to.space {
-                let goal = d + to.to_gates[src];
+                let goal = d + to.to_crossings[src];
                 if goal < best {
                     best = goal;
                     best_pred = n;
                 }
             }
-            for (jh, hgate) in list.iter().enumerate() {
+            scope.for_each_slot(mesh, t, |jh| {
+                let hgate = list[jh];
                 for k2 in 0..SAMPLES {
                     let nd = d + table.cost(src, jh * SAMPLES + k2);
-                    let m = *hgate * SAMPLES as u32 + k2 as u32;
+                    let m = hgate * SAMPLES as u32 + k2 as u32;
                     if nd < cost[m as usize] {
+                        let f = nd + h(m);
+                        if f >= best {
+                            continue;
+                        }
                         cost[m as usize] = nd;
                         pred[m as usize] = (n, t);
-                        heap.push(Reverse(((nd + h(m)).to_bits(), m)));
+                        heap.push(Reverse((f.to_bits(), m)));
                     }
                 }
-            }
+            });
         }
     }
     if !best.is_finite() {
@@ -243,8 +255,8 @@ fn assemble(
 ) -> Option<Walk> {
     // The source index of node `n` in space `s`'s table.
     let index_in = |s: u32, n: u32| {
-        let (g, k) = (n / SAMPLES as u32, n as usize % SAMPLES);
-        mesh.slot(g, s).map(|j| j * SAMPLES + k)
+        let (o, k) = (n / SAMPLES as u32, n as usize % SAMPLES);
+        mesh.openings.slot(o, s).map(|j| j * SAMPLES + k)
     };
     let mut tris: Vec<u32> = Vec::new();
     let mut spaces = vec![from.space];
@@ -272,7 +284,10 @@ fn assemble(
         points,
         length_m,
         spaces,
-        gates: chain.iter().map(|n| n / SAMPLES as u32).collect(),
+        gates: chain
+            .iter()
+            .map(|n| layer.samples[*n as usize / SAMPLES][*n as usize % SAMPLES].0)
+            .collect(),
     })
 }
 
@@ -287,12 +302,13 @@ pub(crate) fn anchor_distances(
     bound_m: f64,
     budget: &Budget,
 ) -> Option<Vec<f64>> {
-    let nodes = mesh.gates.len() * SAMPLES;
+    let openings = &mesh.openings;
+    let nodes = openings.list.len() * SAMPLES;
     let mut cost = vec![f64::INFINITY; nodes];
     let mut heap: BinaryHeap<Reverse<(u64, u32)>> = BinaryHeap::new();
-    for (j, g) in mesh.space_gates[from.space as usize].iter().enumerate() {
+    for (j, g) in openings.of_space[from.space as usize].iter().enumerate() {
         for k in 0..SAMPLES {
-            let c = from.to_gates[j * SAMPLES + k];
+            let c = from.to_crossings[j * SAMPLES + k];
             let n = *g as usize * SAMPLES + k;
             if c <= bound_m && c < cost[n] {
                 cost[n] = c;
@@ -322,17 +338,15 @@ pub(crate) fn anchor_distances(
         if d > cost[n as usize] {
             continue;
         }
-        let (g, k) = (n as usize / SAMPLES, n as usize % SAMPLES);
-        for (_, t) in mesh.gates[g].sides {
+        let (o, k) = (n as usize / SAMPLES, n as usize % SAMPLES);
+        let opening = &openings.list[o];
+        for (i, t) in opening.sides.into_iter().enumerate() {
             if banned[t as usize] {
                 continue;
             }
-            let list = &mesh.space_gates[t as usize];
+            let list = &openings.of_space[t as usize];
             let table = layer.table(mesh, t);
-            let Some(jg) = mesh.slot(g as u32, t) else {
-                continue;
-            };
-            let src = jg * SAMPLES + k;
+            let src = opening.slots[i] as usize * SAMPLES + k;
             let to_anchor = d + table.cost(src, table.anchor());
             if to_anchor <= bound_m && to_anchor < out[t as usize] {
                 out[t as usize] = to_anchor;
@@ -350,4 +364,70 @@ pub(crate) fn anchor_distances(
         }
     }
     Some(out)
+}
+
+/// The part of the opening graph one search may use: the core, and the dead
+/// ends on the way out from its end points' spaces.
+struct Scope<'a> {
+    dead_ends: &'a DeadEnds,
+    /// Dead-end spaces the search may enter.
+    open: Vec<u32>,
+    /// `(core space, slot)` of the openings from the core into `open` spaces.
+    doors_in: Vec<(u32, u32)>,
+}
+
+impl<'a> Scope<'a> {
+    /// The scope of a search between points in spaces `ends`.
+    fn new(mesh: &Mesh, dead_ends: &'a DeadEnds, ends: &[u32]) -> Scope<'a> {
+        let mut open: Vec<u32> = ends.iter().flat_map(|s| dead_ends.way_out(*s)).collect();
+        open.sort_unstable();
+        open.dedup();
+        let mut doors_in = Vec::new();
+        for c in &open {
+            let p = dead_ends.parent[*c as usize];
+            if p == NONE || dead_ends.dead[p as usize] {
+                continue;
+            }
+            let openings = &mesh.openings;
+            for o in &openings.of_space[*c as usize] {
+                if openings.other_side(*o, *c) == p
+                    && let Some(j) = openings.slot(*o, p)
+                {
+                    doors_in.push((p, j as u32));
+                }
+            }
+        }
+        Scope {
+            dead_ends,
+            open,
+            doors_in,
+        }
+    }
+
+    /// Whether the search may enter space `s`.
+    fn enters(&self, s: u32) -> bool {
+        !self.dead_ends.dead[s as usize] || self.open.contains(&s)
+    }
+
+    /// Calls `f` with the slot of every opening of `s` leading somewhere
+    /// the search may go.
+    fn for_each_slot(&self, mesh: &Mesh, s: u32, mut f: impl FnMut(usize)) {
+        if self.dead_ends.dead[s as usize] {
+            let openings = &mesh.openings;
+            for (j, o) in openings.of_space[s as usize].iter().enumerate() {
+                if self.enters(openings.other_side(*o, s)) {
+                    f(j);
+                }
+            }
+            return;
+        }
+        for j in &self.dead_ends.core_slots[s as usize] {
+            f(*j as usize);
+        }
+        for (p, j) in &self.doors_in {
+            if *p == s {
+                f(*j as usize);
+            }
+        }
+    }
 }

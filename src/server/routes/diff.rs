@@ -1,5 +1,6 @@
 //! `GET /maps/{map}/diff?from=&to=&align=`: what changed between two
-//! revisions of a map ([`crate::diff::compare`]: spaces added, removed,
+//! revisions of a map ([`crate::query::compare_revisions`], the change-set
+//! service on the revisions and their stored grids: spaces added, removed,
 //! resized, split, merged, re-kinded, renamed; connections; door widths),
 //! aligning the two when their frames differ.
 
@@ -8,9 +9,10 @@ use axum::extract::{Path, State};
 use axum::http::Uri;
 use serde_json::{Value, json};
 
-use super::{ParamDoc, q};
-use crate::diff::{AlignMode, AlignParams, DiffError, DiffParams, Revision, compare};
-use crate::server::error::ApiError;
+use crate::diff::{AlignMode, DiffOptions};
+use crate::query::compare_revisions;
+use crate::server::endpoint::{ParamDoc, q};
+use crate::server::error::{ApiError, comparing_error};
 use crate::server::params::{Params, parse_rev};
 use crate::server::state::AppState;
 use crate::store::StoreError;
@@ -79,33 +81,22 @@ pub async fn diff(
                 .revision(&map, to)
                 .map_err(|e| named("to", e))?
                 .seq;
-            let a = ctx.revision(&map, Some(a_seq))?;
-            let b = ctx.revision(&map, Some(b_seq))?;
-            let ga = ctx.store().grid(&map, Some(a_seq))?;
-            let gb = ctx.store().grid(&map, Some(b_seq))?;
-            let done = compare(
-                Revision {
-                    nrg: &a.nrg,
-                    grid: ga.as_ref(),
-                },
-                Revision {
-                    nrg: &b.nrg,
-                    grid: gb.as_ref(),
-                },
-                mode,
-                &DiffParams::default(),
-                &AlignParams::default(),
+            let options = DiffOptions {
+                align: mode,
+                ..DiffOptions::default()
+            };
+            let done = compare_revisions(
+                &*ctx.store(),
+                &map,
+                u64::from(a_seq),
+                u64::from(b_seq),
+                &options,
             )
-            .map_err(|e| match e {
-                DiffError::Unreliable { .. } | DiffError::TooFewWalls { .. } => ApiError::bad(
-                    "align",
-                    format!("{e} (align=never compares the revisions as they are)"),
-                ),
-                other => ApiError::Internal(other.to_string()),
-            })?;
-            let mut changes = done.changes;
-            changes.from = Some(format!("{map}@{a_seq}"));
-            changes.to = Some(format!("{map}@{b_seq}"));
+            .map_err(|e| {
+                comparing_error(e, "align", "align=never compares the revisions as they are")
+            })?
+            .comparison;
+            let changes = done.changes;
             // The transform itself is in `changes.alignment`; this is its quality.
             let alignment = done.alignment.map(|al| {
                 json!({"inliers": al.inliers, "tolerance_m": al.tolerance_m, "rms_m": al.rms_m})

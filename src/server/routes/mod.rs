@@ -1,7 +1,9 @@
 //! The route table: every endpoint once, with its method, path, summary,
 //! query parameters and handler. [`super::router`] and the OpenAPI
 //! document are both built from [`endpoints`], so adding a route is one
-//! line here (plus its handler).
+//! line here (plus its handler). The types of the table ([`Endpoint`],
+//! [`ParamDoc`]) live in `server/endpoint.rs`, which the handlers and the
+//! OpenAPI builder import; nothing here is imported back by them.
 
 mod diff;
 mod maps;
@@ -13,94 +15,12 @@ mod system;
 mod upload;
 
 use axum::http::Method;
-use axum::routing::{MethodRouter, get, post};
+use axum::routing::{get, post};
 
-use super::state::AppState;
+pub use super::endpoint::{Endpoint, ParamDoc, ParamIn, path_param_doc, path_params, q};
+use super::endpoint::{REV, ep};
 
-pub use system::{fallback, method_not_allowed};
-
-/// Where a parameter goes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum ParamIn {
-    /// In the path (`{map}`).
-    Path,
-    /// In the query string.
-    Query,
-}
-
-/// A documented parameter.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct ParamDoc {
-    /// Its name.
-    pub name: &'static str,
-    /// JSON schema type: "string", "integer", "number" or "boolean".
-    pub kind: &'static str,
-    /// Whether it must be given.
-    pub required: bool,
-    /// What it means.
-    pub doc: &'static str,
-}
-
-/// A query-string parameter.
-pub const fn q(
-    name: &'static str,
-    kind: &'static str,
-    required: bool,
-    doc: &'static str,
-) -> ParamDoc {
-    ParamDoc {
-        name,
-        kind,
-        required,
-        doc,
-    }
-}
-
-const REV: ParamDoc = q(
-    "rev",
-    "string",
-    false,
-    "revision number, or 'latest' (default)",
-);
-
-/// One endpoint of the API.
-pub struct Endpoint {
-    /// The HTTP method.
-    pub method: Method,
-    /// The axum path pattern (`/maps/{map}`), also the OpenAPI path.
-    pub path: &'static str,
-    /// One line for the OpenAPI document.
-    pub summary: &'static str,
-    /// Query-string parameters (path parameters come from `path`).
-    pub params: &'static [ParamDoc],
-    /// The handler.
-    pub handler: MethodRouter<AppState>,
-    /// Whether the request timeout applies (uploads are bounded by size).
-    pub timed: bool,
-}
-
-impl std::fmt::Debug for Endpoint {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{} {}", self.method, self.path)
-    }
-}
-
-fn ep(
-    method: Method,
-    path: &'static str,
-    summary: &'static str,
-    params: &'static [ParamDoc],
-    handler: MethodRouter<AppState>,
-) -> Endpoint {
-    Endpoint {
-        method,
-        path,
-        summary,
-        params,
-        handler,
-        timed: true,
-    }
-}
+pub use system::{OpenApiDocument, fallback, method_not_allowed};
 
 /// Every endpoint, in the order of the OpenAPI document. One line each;
 /// `#[rustfmt::skip]` keeps it a table.
@@ -128,23 +48,6 @@ pub fn endpoints() -> Vec<Endpoint> {
         ep(M::GET, "/maps/{map}/revisions/{rev}/svg", "A revision drawn as SVG, optionally with a route or a diff", &crate::server::viewer::SVG_PARAMS, get(crate::server::viewer::svg)),
         ep(M::POST, "/query", "Run query-language statements; JSON results", &query::PARAMS, post(query::query)),
     ]
-}
-
-/// The path parameters of a pattern, in order (`/maps/{map}` → `map`).
-pub fn path_params(path: &str) -> Vec<&str> {
-    path.split('/')
-        .filter_map(|seg| seg.strip_prefix('{').and_then(|s| s.strip_suffix('}')))
-        .collect()
-}
-
-/// What a path parameter means.
-pub fn path_param_doc(name: &str) -> &'static str {
-    match name {
-        "map" => "map name",
-        "id" => "space id (a number)",
-        "rev" => "revision number, or 'latest'",
-        _ => "path parameter",
-    }
 }
 
 #[cfg(test)]

@@ -10,13 +10,14 @@ use serde::Deserialize;
 use serde_json::{Value, json};
 
 use super::spaces::rows_as_objects;
-use super::{ParamDoc, REV, q};
+use crate::grid::OccupancyGrid;
 use crate::model::{Nrg, SpaceId};
 use crate::query::{
-    Limits, MapInfo, QueryError, QueryResult, RevisionInfo, Session, Source, SourceError,
+    Limits, MapInfo, QueryError, QueryResult, RevisionInfo, Session, Source, SourceError, Statement,
 };
-use crate::server::auth::has_token;
+use crate::server::auth::{has_token, require_write};
 use crate::server::body::read_limited;
+use crate::server::endpoint::{ParamDoc, REV, q};
 use crate::server::error::ApiError;
 use crate::server::params::{Params, parse_rev};
 use crate::server::state::AppState;
@@ -56,6 +57,9 @@ impl Source for QuerySource<'_> {
     }
     fn load(&self, map: &str, revision: u64) -> Result<Nrg, SourceError> {
         <Store as Source>::load(self.store, map, revision)
+    }
+    fn grid(&self, map: &str, revision: u64) -> Result<Option<OccupancyGrid>, SourceError> {
+        <Store as Source>::grid(self.store, map, revision)
     }
     fn rename_space(
         &mut self,
@@ -131,6 +135,16 @@ pub async fn query(
             "query",
             "empty (send statements such as FIND rooms;)",
         ));
+    }
+    // A request that would write (NAME) is refused as a whole, 401 or
+    // 403 as for every other write, before anything runs (it used to
+    // answer 200 with an error in the statement's slot).
+    if crate::query::parse(&text)
+        .map_err(ApiError::from)?
+        .iter()
+        .any(Statement::writes)
+    {
+        require_write(state.config(), &headers)?;
     }
     let writable = has_token(state.config(), &headers);
     let limits = Limits {

@@ -6,16 +6,15 @@ use axum::http::{Uri, header};
 use axum::response::{IntoResponse, Response};
 
 use super::route_json::route_response;
-use super::{ParamDoc, REV, q};
 use crate::model::SpaceId;
 use crate::query::{IndexedRevision, QueryError, SpaceRef};
 use crate::route::{Budget, Endpoint, Profile, RouteRequest, no_route_reason, shortest_route};
+use crate::server::endpoint::{ParamDoc, REV, q};
 use crate::server::error::ApiError;
 use crate::server::params::{Params, parse_value};
 use crate::server::state::{AppState, Ctx};
 
-/// Most routes `alternatives` may ask for.
-pub const MAX_ALTERNATIVES: usize = 10;
+use crate::route::MAX_ALTERNATIVES;
 
 /// Query parameters of the route endpoint.
 pub const PARAMS: [ParamDoc; 9] = [

@@ -6,9 +6,9 @@ use axum::extract::{Path, State};
 use axum::http::Uri;
 use serde_json::{Map, Value, json};
 
-use super::{ParamDoc, REV, q};
 use crate::model::{Space, SpaceId, SpaceKind, doorway};
 use crate::query::{IndexedRevision, Limits, Plan, QueryResult, Table, execute, like};
+use crate::server::endpoint::{ParamDoc, REV, q};
 use crate::server::error::ApiError;
 use crate::server::params::{Params, parse_metres, parse_value};
 use crate::server::state::AppState;

@@ -3,11 +3,15 @@
 //! parameters) or with one model file (IndoorGML `.gml`/`.xml`, model
 //! `.json`, `.geojson`), or such a model file as the raw body
 //! (`application/xml`, `application/json`, `application/geo+json`).
-//! Everything is read and checked before the one import transaction, so a
-//! malformed upload stores nothing. The model goes in through
-//! [`crate::ingest::ingest`] (walked connection lengths); IndoorGML
-//! Transitions with a missing or 0 weight are fixed on reading and counted
-//! in the answer's `weights_fixed`.
+//!
+//! The handler only unpacks the request: the parts go to
+//! [`crate::ingest::read`] (the same code `nrgdb import` runs on files),
+//! which tells each part's format ([`crate::format::detect`]: file name,
+//! Content-Type, bytes, field name), reads the map from the bytes in
+//! memory (nothing is written to disk) and checks everything before the
+//! one import transaction of [`crate::ingest::ingest`], so a malformed
+//! upload stores nothing. IndoorGML Transitions with a missing or 0 weight
+//! are fixed on reading and counted in the answer's `weights_fixed`.
 
 use axum::Json;
 use axum::body::Body;
@@ -16,17 +20,15 @@ use axum::http::{HeaderMap, HeaderValue, StatusCode, Uri, header};
 use axum::response::{IntoResponse, Response};
 use serde_json::json;
 
-use super::{ParamDoc, q};
-use crate::extract::{ExtractParams, extract};
-use crate::grid::{LoadOptions, OccupancyGrid, load_map};
-use crate::model::Nrg;
+use crate::format::{Declared, FileKind};
+use crate::ingest::{IngestError, IngestOptions, InputFile, read};
 use crate::server::auth::require_write;
 use crate::server::body::read_limited;
+use crate::server::endpoint::{ParamDoc, q};
 use crate::server::error::ApiError;
 use crate::server::multipart::{self, Part};
 use crate::server::params::Params;
 use crate::server::state::AppState;
-use crate::store::{ImportMeta, sha256_hex};
 
 /// Query parameters of the upload (multipart fields of the same names win).
 pub const PARAMS: [ParamDoc; 2] = [
@@ -39,188 +41,57 @@ pub const PARAMS: [ParamDoc; 2] = [
     ),
 ];
 
-/// What an uploaded file is.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Kind {
-    MapYaml,
-    Image,
-    IndoorGml,
-    Json,
-    GeoJson,
-}
-
-fn kind_of_name(name: &str) -> Option<Kind> {
-    let ext = name.rsplit_once('.')?.1.to_ascii_lowercase();
-    match ext.as_str() {
-        "yaml" | "yml" => Some(Kind::MapYaml),
-        "pgm" | "png" => Some(Kind::Image),
-        "gml" | "xml" => Some(Kind::IndoorGml),
-        "json" => Some(Kind::Json),
-        "geojson" => Some(Kind::GeoJson),
-        _ => None,
-    }
-}
-
-fn kind_of_type(content_type: &str) -> Option<Kind> {
-    let mime = content_type.split(';').next()?.trim().to_ascii_lowercase();
-    match mime.as_str() {
-        "application/xml" | "text/xml" | "application/gml+xml" => Some(Kind::IndoorGml),
-        "application/json" => Some(Kind::Json),
-        "application/geo+json" => Some(Kind::GeoJson),
-        "application/yaml" | "application/x-yaml" | "text/yaml" => Some(Kind::MapYaml),
-        "image/png" | "image/x-portable-graymap" => Some(Kind::Image),
-        _ => None,
-    }
-}
-
-/// A part's kind: by file name, then content type, then field name.
-fn kind_of_part(p: &Part<'_>) -> Option<Kind> {
-    let by_field = match p.name.as_deref() {
-        Some("yaml") => Some(Kind::MapYaml),
-        Some("image") => Some(Kind::Image),
-        Some("indoorgml" | "gml") => Some(Kind::IndoorGml),
-        Some("geojson") => Some(Kind::GeoJson),
-        Some("model" | "json") => Some(Kind::Json),
-        _ => None,
-    };
-    p.filename
-        .as_deref()
-        .and_then(kind_of_name)
-        .or_else(|| p.content_type.as_deref().and_then(kind_of_type))
-        .or(by_field)
-}
-
 fn utf8(bytes: &[u8], what: &str) -> Result<String, ApiError> {
     String::from_utf8(bytes.to_vec())
         .map_err(|_| ApiError::BadUpload(format!("{what} is not UTF-8 text")))
 }
 
-/// Reads a model file of `kind`, with how many IndoorGML Transition
-/// weights were missing or 0 and fixed.
-fn read_model(kind: Kind, bytes: &[u8], name: &str) -> Result<(Nrg, usize), ApiError> {
-    let text = utf8(bytes, name)?;
-    let bad = |e: String| ApiError::BadUpload(format!("{name}: {e}"));
-    let nrg = match kind {
-        Kind::IndoorGml => {
-            return crate::indoorgml::read_str(&text)
-                .and_then(|d| crate::format::from_document(&d))
-                .map(|(nrg, fixes)| (nrg, fixes.total()))
-                .map_err(|e| bad(e.to_string()));
-        }
-        Kind::GeoJson => crate::geojson::from_geojson(&text).map_err(|e| bad(e.to_string())),
-        _ if text.contains("\"FeatureCollection\"") => {
-            crate::geojson::from_geojson(&text).map_err(|e| bad(e.to_string()))
-        }
-        _ => Nrg::from_json(&text).map_err(|e| bad(e.to_string())),
-    }?;
-    Ok((nrg, 0))
+fn bad(e: IngestError) -> ApiError {
+    ApiError::BadUpload(e.to_string())
 }
 
-/// Extracts a model from a map YAML and its image (written to a temporary
-/// directory; the YAML's `image:` is pointed at the uploaded image).
-fn extract_map(
-    yaml: &[u8],
-    image: &[u8],
-    image_name: &str,
-) -> Result<(Nrg, OccupancyGrid, serde_json::Value), ApiError> {
-    let bad = |e: String| ApiError::BadUpload(e);
-    let mut doc: serde_yaml_ng::Value =
-        serde_yaml_ng::from_slice(yaml).map_err(|e| bad(format!("map YAML: {e}")))?;
-    let ext = if image_name.to_ascii_lowercase().ends_with(".png") {
-        "png"
-    } else {
-        "pgm"
-    };
-    let file = format!("image.{ext}");
-    match &mut doc {
-        serde_yaml_ng::Value::Mapping(m) => {
-            m.insert("image".into(), file.as_str().into());
-        }
-        _ => {
-            return Err(bad(
-                "map YAML: expected a mapping with image, resolution, origin".into(),
-            ));
-        }
-    }
-    let dir = tempfile::tempdir().map_err(|e| ApiError::Internal(format!("temp dir: {e}")))?;
-    let text = serde_yaml_ng::to_string(&doc).map_err(|e| bad(format!("map YAML: {e}")))?;
-    let yaml_path = dir.path().join("map.yaml");
-    std::fs::write(&yaml_path, text)
-        .and_then(|()| std::fs::write(dir.path().join(&file), image))
-        .map_err(|e| ApiError::Internal(format!("temp files: {e}")))?;
-    let grid = load_map(&yaml_path, &LoadOptions::default()).map_err(|e| {
-        // Paths in the message are our temporary files; name the upload.
-        bad(format!(
-            "map: {}",
-            e.to_string()
-                .replace(&dir.path().display().to_string(), "upload")
-        ))
-    })?;
-    let params = ExtractParams::default();
-    let extraction = extract(&grid, &params).map_err(|e| bad(format!("extraction: {e}")))?;
-    let params = serde_json::to_value(&params).unwrap_or(serde_json::Value::Null);
-    Ok((extraction.nrg, grid, params))
-}
-
-/// A model to import, the occupancy grid it was extracted from (kept with
-/// the revision, see [`crate::store::Store::grid`]) and how many IndoorGML
-/// Transition weights were fixed on reading.
-type Upload = (Nrg, Option<OccupancyGrid>, usize);
-
-fn from_multipart(body: &[u8], boundary: &str, meta: &mut ImportMeta) -> Result<Upload, ApiError> {
-    let parts = multipart::parse(body, boundary).map_err(|e| ApiError::BadUpload(e.to_string()))?;
-    let mut yaml = None;
-    let mut image = None;
-    let mut model = None;
-    for p in &parts {
+/// The file parts of a multipart upload; the `message` and `author`
+/// fields set those of the revision.
+fn file_parts<'a>(
+    parts: &'a [Part<'a>],
+    message: &mut String,
+    author: &mut String,
+) -> Result<Vec<InputFile<'a>>, ApiError> {
+    let mut files = Vec::with_capacity(parts.len());
+    for p in parts {
         match p.name.as_deref() {
-            Some("message") if p.filename.is_none() => meta.message = utf8(p.data, "message")?,
-            Some("author") if p.filename.is_none() => meta.author = utf8(p.data, "author")?,
-            _ => match kind_of_part(p) {
-                Some(Kind::MapYaml) => yaml = Some(p),
-                Some(Kind::Image) => image = Some(p),
-                Some(k) => model = Some((k, p)),
-                None => {
-                    return Err(ApiError::BadUpload(format!(
-                        "part '{}' is neither a map YAML, a PGM/PNG image nor a model file (.gml, .xml, .json, .geojson)",
-                        p.filename.as_deref().or(p.name.as_deref()).unwrap_or("?")
-                    )));
-                }
-            },
+            Some("message") if p.filename.is_none() => *message = utf8(p.data, "message")?,
+            Some("author") if p.filename.is_none() => *author = utf8(p.data, "author")?,
+            _ => files.push(InputFile {
+                declared: Declared {
+                    name: p.filename.as_deref(),
+                    media_type: p.content_type.as_deref(),
+                    field: p.name.as_deref(),
+                },
+                bytes: p.data,
+            }),
         }
     }
-    let name =
-        |p: &Part<'_>, default: &str| p.filename.clone().unwrap_or_else(|| default.to_string());
-    match (yaml, image, model) {
-        (Some(y), Some(i), None) => {
-            let image_name = name(i, "map.pgm");
-            let (nrg, grid, params) = extract_map(y.data, i.data, &image_name)?;
-            let mut bytes = y.data.to_vec();
-            bytes.extend_from_slice(i.data);
-            meta.source_name = Some(format!("{} + {image_name}", name(y, "map.yaml")));
-            meta.source_sha256 = Some(sha256_hex(&bytes));
-            meta.params = Some(params);
-            Ok((nrg, Some(grid), 0))
-        }
-        (None, None, Some((k, p))) => {
-            let file = name(p, "upload");
-            let (nrg, fixed) = read_model(k, p.data, &file)?;
-            *meta = std::mem::take(meta).with_source(file, p.data);
-            Ok((nrg, None, fixed))
-        }
-        (Some(_), None, _) => Err(ApiError::BadUpload(
-            "a map YAML needs its image (a PGM or PNG part)".into(),
-        )),
-        (None, Some(_), _) => Err(ApiError::BadUpload(
-            "an image needs its map YAML (a .yaml part)".into(),
-        )),
-        (None, None, None) => Err(ApiError::BadUpload(
-            "no file part (send a map YAML + image, or one model file)".into(),
-        )),
-        _ => Err(ApiError::BadUpload(
-            "send either a map YAML + image or one model file, not both".into(),
-        )),
+    Ok(files)
+}
+
+/// A raw body's one file: a model, its format declared by Content-Type.
+fn body_file<'a>(content_type: &'a str, bytes: &'a [u8]) -> Result<InputFile<'a>, ApiError> {
+    if !matches!(
+        FileKind::by_media_type(content_type),
+        Some(FileKind::Model(_))
+    ) {
+        return Err(ApiError::BadUpload(format!(
+            "Content-Type '{content_type}' is not accepted: use multipart/form-data, application/xml (IndoorGML), application/json or application/geo+json"
+        )));
     }
+    Ok(InputFile {
+        declared: Declared {
+            media_type: Some(content_type),
+            ..Declared::default()
+        },
+        bytes,
+    })
 }
 
 /// `POST /maps/{map}/revisions` (bearer token).
@@ -239,27 +110,28 @@ pub async fn upload(
         .and_then(|v| v.to_str().ok())
         .unwrap_or("")
         .to_string();
-    let mut meta = ImportMeta::new(
-        p.get("message").unwrap_or(""),
-        p.get("author").unwrap_or("nrgdb serve"),
-    );
+    let mut message = p.get("message").unwrap_or("").to_string();
+    let mut author = p.get("author").unwrap_or("nrgdb serve").to_string();
     let (done, weights_fixed) = state
         .blocking(move |ctx| {
-            let (nrg, grid, fixed) = if let Some(b) = multipart::boundary(&content_type) {
-                from_multipart(&bytes, &b, &mut meta)?
-            } else {
-                let kind = kind_of_type(&content_type).filter(|k| !matches!(k, Kind::MapYaml | Kind::Image));
-                let Some(kind) = kind else {
-                    return Err(ApiError::BadUpload(format!(
-                        "Content-Type '{content_type}' is not accepted: use multipart/form-data, application/xml (IndoorGML), application/json or application/geo+json"
-                    )));
-                };
-                let (nrg, fixed) = read_model(kind, &bytes, "body")?;
-                meta = std::mem::take(&mut meta).with_source("upload", &bytes);
-                (nrg, None, fixed)
+            let parts;
+            let files = match multipart::boundary(&content_type) {
+                Some(b) => {
+                    parts = multipart::parse(&bytes, &b).map_err(ApiError::BadUpload)?;
+                    file_parts(&parts, &mut message, &mut author)?
+                }
+                None => vec![body_file(&content_type, &bytes)?],
             };
-            let done = crate::ingest::ingest(ctx.store(), &map, &nrg, meta, grid.as_ref())?;
-            Ok((done.imported, fixed))
+            let prepared = read(&files, &IngestOptions::default()).map_err(bad)?;
+            let meta = prepared.meta(message, author);
+            let done = crate::ingest::ingest(
+                ctx.store(),
+                &map,
+                &prepared.nrg,
+                meta,
+                prepared.grid.as_ref(),
+            )?;
+            Ok((done.imported, prepared.weights_fixed.total()))
         })
         .await?;
     let info = &done.revision;
@@ -288,19 +160,18 @@ mod tests {
     use super::*;
 
     #[test]
-    fn kinds() {
-        assert_eq!(kind_of_name("a.YAML"), Some(Kind::MapYaml));
-        assert_eq!(kind_of_name("a.gml"), Some(Kind::IndoorGml));
-        assert_eq!(kind_of_name("a"), None);
-        assert_eq!(
-            kind_of_type("application/json; charset=utf-8"),
-            Some(Kind::Json)
-        );
-        let nrg = crate::fixtures::corridor_building(2);
-        assert_eq!(
-            read_model(Kind::Json, nrg.to_json().as_bytes(), "x").unwrap(),
-            (nrg, 0)
-        );
-        assert!(read_model(Kind::Json, b"{", "x").is_err());
+    fn parts_and_bodies() {
+        let body = b"--X\r\nContent-Disposition: form-data; name=\"message\"\r\n\r\nhi\r\n--X\r\nContent-Disposition: form-data; name=\"model\"; filename=\"m.json\"\r\nContent-Type: application/json\r\n\r\n{}\r\n--X--\r\n";
+        let parts = multipart::parse(body, "X").unwrap();
+        let (mut message, mut author) = (String::new(), "a".to_string());
+        let files = file_parts(&parts, &mut message, &mut author).unwrap();
+        assert_eq!((message.as_str(), author.as_str()), ("hi", "a"));
+        assert_eq!(files.len(), 1);
+        assert_eq!(files[0].declared.name, Some("m.json"));
+        assert_eq!(files[0].declared.field, Some("model"));
+        assert_eq!(files[0].bytes, b"{}");
+        assert!(body_file("application/geo+json", b"{}").is_ok());
+        assert!(body_file("image/png", b"").is_err());
+        assert!(body_file("text/plain", b"").is_err());
     }
 }

@@ -11,14 +11,17 @@ use axum::extract::{Path, State};
 use axum::http::{HeaderValue, Uri, header};
 use axum::response::{IntoResponse, Response};
 
+use crate::diff::DiffOptions;
 use crate::model::SpaceId;
+use crate::query::compare_revisions;
 use crate::query::{IndexedRevision, QueryError, SpaceRef};
 use crate::render::{RenderOptions, RouteOverlay, Scene, diff_overlay, render_svg};
 use crate::route::{Budget, RouteRequest, shortest_route};
-use crate::server::error::ApiError;
+use crate::server::endpoint::{ParamDoc, q};
+use crate::server::error::{ApiError, comparing_error};
 use crate::server::params::{Params, parse_rev};
-use crate::server::routes::{ParamDoc, q};
 use crate::server::state::AppState;
+use crate::store::StoreError;
 
 /// The page.
 pub const INDEX_HTML: &str = include_str!("index.html");
@@ -35,7 +38,7 @@ pub const SVG_PARAMS: [ParamDoc; 3] = [
         "diff",
         "string",
         false,
-        "draw what changed since this revision number",
+        "draw what changed since this revision number (the change set of GET /maps/{map}/diff?from=A&to=rev, aligned when the frames differ)",
     ),
     q(
         "map",
@@ -107,9 +110,40 @@ pub async fn svg(
                     })
                 }
             };
+            // The change set of `GET /diff?from=A&to=rev`, drawn over rev.
             let changes = match diff {
                 None => None,
-                Some(a) => Some(diff_overlay(&ctx.revision(&map, Some(a))?.nrg, &r.nrg)),
+                Some(a) => {
+                    let a = ctx
+                        .store()
+                        .revision(&map, Some(a))
+                        .map_err(|e| match e {
+                            StoreError::NoSuchRevision { .. } => {
+                                ApiError::not_found("diff", e.to_string())
+                            }
+                            other => other.into(),
+                        })?
+                        .seq;
+                    let done = compare_revisions(
+                        &*ctx.store(),
+                        &map,
+                        u64::from(a),
+                        r.revision,
+                        &DiffOptions::default(),
+                    )
+                    .map_err(|e| {
+                        comparing_error(
+                            e,
+                            "diff",
+                            "GET /maps/{map}/diff?align=never compares them as they are",
+                        )
+                    })?;
+                    Some(diff_overlay(
+                        &done.comparison.changes,
+                        &done.old.nrg,
+                        &done.new.nrg,
+                    ))
+                }
             };
             let title = match diff {
                 Some(a) => format!("{map}@{a} -> @{}", r.revision),
