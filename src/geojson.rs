@@ -1,7 +1,9 @@
 //! The model as GeoJSON: a FeatureCollection that QGIS and web maps open.
 //!
 //! Each space is a Polygon feature (`"feature": "space"`, properties `id`,
-//! `kind`, `name`, `area_m2`, `anchor`, `attributes`); each connection is a
+//! `kind`, `name`, `area_m2`, `anchor`, `attributes`, and for a door
+//! `width_m` and `doorway`, its doorway line `[[x, y], [x, y]]`: see
+//! [`doorway`](crate::model::doorway())); each connection is a
 //! LineString feature (`"feature": "connection"`, properties `a`, `b`,
 //! `kind`, `length_m`) from `a`'s anchor to `b`'s: the walked polyline
 //! through the doorway when the caller passes one ([`to_geojson_with_paths`],
@@ -11,7 +13,7 @@
 
 use serde_json::{Map, Value, json};
 
-use crate::model::{Connection, ConnectionPaths, Nrg, Point, Ring, Space, SpaceId};
+use crate::model::{Connection, ConnectionPaths, Nrg, Point, Ring, Space, SpaceId, doorway};
 
 /// Why a GeoJSON document is not an nrgdb model.
 #[derive(Debug, thiserror::Error)]
@@ -50,19 +52,24 @@ pub fn to_geojson_with_paths(nrg: &Nrg, paths: &ConnectionPaths) -> Value {
             .chain(&s.holes)
             .map(|r| closed(r))
             .collect();
+        let mut properties = json!({
+            "feature": "space",
+            "id": s.id,
+            "kind": s.kind,
+            "name": s.name,
+            "area_m2": s.area_m2,
+            "anchor": s.anchor,
+            "attributes": s.attributes,
+        });
+        if let (Some(d), Some(p)) = (doorway(s), properties.as_object_mut()) {
+            p.insert("width_m".into(), json!(d.width_m));
+            p.insert("doorway".into(), json!(d.line));
+        }
         features.push(json!({
             "type": "Feature",
             "id": format!("space-{}", s.id),
             "geometry": {"type": "Polygon", "coordinates": rings},
-            "properties": {
-                "feature": "space",
-                "id": s.id,
-                "kind": s.kind,
-                "name": s.name,
-                "area_m2": s.area_m2,
-                "anchor": s.anchor,
-                "attributes": s.attributes,
-            }
+            "properties": properties,
         }));
     }
     for c in nrg.connections() {
@@ -172,6 +179,12 @@ fn space(f: &Value, props: &Map<String, Value>) -> Result<Space, String> {
     if let Some(Value::Object(a)) = props.get("attributes") {
         s.attributes = a.clone();
     }
+    if let Some(line) = props.get("doorway").filter(|v| !v.is_null()) {
+        let line: [Point; 2] =
+            serde_json::from_value(line.clone()).map_err(|e| format!("doorway: {e}"))?;
+        s.doorway = Some(line);
+    }
     s.update_area();
+    s.update_doorway();
     Ok(s)
 }

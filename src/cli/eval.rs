@@ -164,14 +164,25 @@ fn cells(e: &Evaluation) -> [f64; 8] {
 fn print_table(rows: &[(String, Evaluation)], out: &mut dyn Write) -> std::io::Result<()> {
     writeln!(
         out,
-        "{:<28} {:>6} {:>6} {:>6} {:>6} | {:>6} {:>6} | {:>6} {:>6}",
-        "map (%)", "R", "P", "Rmac", "Pmac", "doorR", "doorP", "connR", "connP"
+        "{:<28} {:>6} {:>6} {:>6} {:>6} | {:>6} {:>6} | {:>6} {:>6} | {:>5} {:>5}",
+        "map (%; width error m)",
+        "R",
+        "P",
+        "Rmac",
+        "Pmac",
+        "doorR",
+        "doorP",
+        "connR",
+        "connP",
+        "wMed",
+        "wP90"
     )?;
     let mut sum = [0.0; 8];
-    let row = |out: &mut dyn Write, name: &str, c: &[f64; 8]| {
+    let metres = |v: Option<f64>| v.map_or_else(|| "-".to_string(), |m| format!("{m:.3}"));
+    let row = |out: &mut dyn Write, name: &str, c: &[f64; 8], w: [Option<f64>; 2]| {
         writeln!(
             out,
-            "{name:<28} {:>6.1} {:>6.1} {:>6.1} {:>6.1} | {:>6.1} {:>6.1} | {:>6.1} {:>6.1}",
+            "{name:<28} {:>6.1} {:>6.1} {:>6.1} {:>6.1} | {:>6.1} {:>6.1} | {:>6.1} {:>6.1} | {:>5} {:>5}",
             100.0 * c[0],
             100.0 * c[1],
             100.0 * c[2],
@@ -179,19 +190,35 @@ fn print_table(rows: &[(String, Evaluation)], out: &mut dyn Write) -> std::io::R
             100.0 * c[4],
             100.0 * c[5],
             100.0 * c[6],
-            100.0 * c[7]
+            100.0 * c[7],
+            metres(w[0]),
+            metres(w[1])
         )
     };
+    let mut worst: [Option<f64>; 2] = [None, None];
     for (name, e) in rows {
         let c = cells(e);
         for (s, v) in sum.iter_mut().zip(c) {
             *s += v;
         }
-        row(out, name, &c)?;
+        let w = [e.widths.median_m, e.widths.p90_m];
+        for (m, v) in worst.iter_mut().zip(w) {
+            *m = match (*m, v) {
+                (Some(a), Some(b)) => Some(a.max(b)),
+                (a, b) => a.or(b),
+            };
+        }
+        row(out, name, &c, w)?;
     }
     if !rows.is_empty() {
         let mean = sum.map(|s| s / rows.len() as f64);
-        row(out, &format!("mean of {}", rows.len()), &mean)?;
+        // Width errors: the worst map's.
+        row(
+            out,
+            &format!("mean of {} (w: worst)", rows.len()),
+            &mean,
+            worst,
+        )?;
     }
     Ok(())
 }
@@ -231,5 +258,14 @@ fn print_one(e: &Evaluation, json: bool, out: &mut dyn Write) -> std::io::Result
         100.0 * e.connections.precision,
         e.connections.gt,
         e.connections.detected
-    )
+    )?;
+    let w = &e.widths;
+    match (w.median_m, w.p90_m) {
+        (Some(median), Some(p90)) => writeln!(
+            out,
+            "door widths error median {median:.3} m  p90 {p90:.3} m  ({} doors matched to GT doorway lines)",
+            w.matched
+        ),
+        _ => writeln!(out, "door widths no door matched to a GT doorway line"),
+    }
 }

@@ -12,7 +12,7 @@
 //! 4. Per matched pair: resized (relative and absolute area thresholds,
 //!    not reported for split or merged spaces, whose area change the split
 //!    or merge explains), re-kinded, renamed, door width
-//!    ([`door_width`](super::door_width)).
+//!    ([`doorway`](crate::model::doorway())).
 //! 5. Connections through the matching: removed, added, re-kinded, or a
 //!    length change (carried, not reported).
 
@@ -22,12 +22,11 @@ use super::change_set::{
     CHANGESET_FORMAT, ChangeSet, ConnectionChange, ConnectionChangeKind, Merge, SpaceChange,
     SpaceChangeKind, Split, Summary,
 };
-use super::door_width::door_width;
 use super::matching::{match_overlaps, overlaps};
 use super::overlaps::Overlaps;
 use super::params::{DiffParams, MatchParams};
 use super::split_merge::splits_and_merges;
-use crate::model::{Connection, Nrg, Space, SpaceId, SpaceKind};
+use crate::model::{Connection, Nrg, Space, SpaceId, SpaceKind, doorway};
 
 /// Compares `b` with the base `a` (both in the same frame: align first
 /// when they are not). `apply(a, &diff(a, b))`
@@ -138,7 +137,8 @@ fn matched(old: &Space, new: &Space, iou: f64, params: &DiffParams) -> SpaceChan
     }
     let mut widths = None;
     if old.kind == SpaceKind::Door && new.kind == SpaceKind::Door {
-        let (wa, wb) = (door_width(old), door_width(new));
+        let width = |s: &Space| doorway(s).map_or(0.0, |d| d.width_m);
+        let (wa, wb) = (width(old), width(new));
         if (wa - wb).abs() > params.door_width_tol_m {
             changes.push(SpaceChangeKind::DoorWidth);
             widths = Some([wa, wb]);

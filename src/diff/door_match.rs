@@ -8,10 +8,10 @@
 //! polygon overlap (IoU), right for rooms, says nothing about doors. A door
 //! is a transition, and what identifies it is what it joins and where:
 //!
-//! * its **doorway line**: the midline, along the long side, of the door
-//!   polygon's minimum-area rectangle (the same rectangle
-//!   [`door_width`](super::door_width) measures), so a strip 1 or 6 pixels
-//!   thick gives the same line;
+//! * its **doorway line** ([`doorway`](crate::model::doorway())): the line
+//!   the extractor measured across the opening, else the midline, along
+//!   the long side, of the door polygon's minimum-area rectangle, so a
+//!   strip 1 or 6 pixels thick gives the same line;
 //! * the **non-door spaces it opens onto** (its connections).
 //!
 //! Two doors are candidates for the same door when their doorway centres
@@ -36,10 +36,9 @@
 
 use std::collections::HashMap;
 
-use super::door_width::doorway;
 use super::overlaps::{DoorSide, Overlaps};
 use super::params::MatchParams;
-use crate::model::{Nrg, Point, Ring, SpaceKind, point_in_ring};
+use crate::model::{Nrg, Point, Ring, SpaceKind, doorway, point_in_ring};
 
 /// One entry per space of `nrg` (in its order): the door's side for
 /// doors, None for every other kind.
@@ -55,7 +54,7 @@ pub(crate) fn door_sides(nrg: &Nrg) -> Vec<Option<DoorSide>> {
         .iter()
         .map(|s| {
             (s.kind == SpaceKind::Door).then(|| DoorSide {
-                line: doorway(s),
+                line: doorway(s).map(|d| d.line),
                 neighbours: Vec::new(),
             })
         })

@@ -30,11 +30,10 @@ use std::collections::{BTreeMap, BTreeSet, HashMap};
 use pathfinding::prelude::{Matrix, kuhn_munkres};
 
 use super::door_match::{door_candidates, door_sides, line_share};
-use super::door_width::convex_hull;
 use super::overlap_area::{Edges, intersection_area_of};
 use super::overlaps::Overlaps;
 use super::params::MatchParams;
-use crate::model::{Nrg, Point, Ring, Space, SpaceId, polygon_area};
+use crate::model::{Nrg, Point, Ring, Space, SpaceId, convex_hull, polygon_area};
 
 /// One space of the new revision continuing one space of the old.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -39,7 +39,6 @@ mod change_set;
 mod compare;
 mod detect;
 mod door_match;
-mod door_width;
 mod error;
 mod matching;
 mod overlap_area;
@@ -57,7 +56,6 @@ pub use change_set::{
 };
 pub use compare::{Comparison, MODEL_GRID_M, Revision, compare, model_grid};
 pub use detect::diff;
-pub use door_width::door_width;
 pub use error::DiffError;
 pub use matching::{SpaceMatch, match_overlaps, match_spaces, overlap_iou, overlaps};
 pub use overlaps::Overlaps;

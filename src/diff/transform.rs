@@ -86,8 +86,9 @@ impl RigidTransform {
         *self == RigidTransform::IDENTITY
     }
 
-    /// The model moved by this transform: polygons, holes and anchors
-    /// (areas are kept, up to rounding; connection lengths are kept).
+    /// The model moved by this transform: polygons, holes, anchors and
+    /// doorway lines (areas and widths are kept, up to rounding;
+    /// connection lengths are kept).
     pub fn apply_to_nrg(&self, nrg: &Nrg) -> Result<Nrg, ModelError> {
         if self.is_identity() {
             return Ok(nrg.clone());
@@ -97,6 +98,9 @@ impl RigidTransform {
             s.anchor = self.apply(s.anchor);
             for p in s.polygon.iter_mut().chain(s.holes.iter_mut().flatten()) {
                 *p = self.apply(*p);
+            }
+            if let Some(line) = &mut s.doorway {
+                *line = line.map(|p| self.apply(p));
             }
         }
         Nrg::new(spaces, connections)

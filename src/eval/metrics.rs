@@ -5,6 +5,7 @@ use std::collections::{BTreeSet, HashMap};
 use serde::Serialize;
 
 use super::GroundTruth;
+use super::door_widths::{WidthScores, door_widths, width_scores};
 use crate::extract::Extraction;
 use crate::imaging::{Labels, Mask, squared_distance_to_foreground};
 use crate::model::{ConnectionKind, SpaceId, SpaceKind};
@@ -49,6 +50,8 @@ pub struct Evaluation {
     pub doors: Detection,
     /// Connections between rooms through doors.
     pub connections: Detection,
+    /// Width errors of the doors matched to GT doorway lines.
+    pub widths: WidthScores,
 }
 
 /// IPA recall/precision of `segments` (0 = none) against `gt` rooms (0 = none).
@@ -279,7 +282,8 @@ pub fn door_radius_px(resolution: f64) -> f64 {
     0.5 / resolution
 }
 
-/// Every score for one extraction. `resolution` converts the 0.5 m door radius to pixels.
+/// Every score for one extraction. `resolution` converts the 0.5 m door
+/// radius to pixels and the GT doorway lines' lengths to metres.
 pub fn evaluate(gt: &GroundTruth, x: &Extraction, resolution: f64) -> Evaluation {
     let mut segments = x.labels.clone();
     let is_door = door_labels(x);
@@ -292,6 +296,7 @@ pub fn evaluate(gt: &GroundTruth, x: &Extraction, resolution: f64) -> Evaluation
         rooms: room_scores(&gt.rooms, &segments),
         doors: door_scores(gt, &door_centroids(x), door_radius_px(resolution)),
         connections: connection_scores(gt, x),
+        widths: width_scores(&door_widths(gt, x, resolution, door_radius_px(resolution))),
     }
 }
 

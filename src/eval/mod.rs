@@ -2,12 +2,14 @@
 //!
 //! Owns the metrics: room-segmentation recall/precision exactly as IPA's
 //! `evaluation_segmentation.cpp` (BENCHMARK.md §1.1), door recall/precision
-//! against the GT's doorway lines, connection recall/precision, and a
+//! against the GT's doorway lines, door widths against those lines'
+//! lengths, connection recall/precision, and a
 //! picture of where extraction and ground truth disagree; the free-space
 //! geodesic and the route-fidelity harness that measure routes against it.
 //! Uses grid, imaging, extract, sim and model; must not use store, server,
 //! the terminal, or (for the geodesic) route.
 
+mod door_widths;
 mod error;
 mod geodesic;
 mod ground_truth;
@@ -16,6 +18,7 @@ mod picture;
 mod route_fidelity;
 mod simulated;
 
+pub use door_widths::{DoorWidth, WidthScores, door_widths, gt_line_length_px, width_scores};
 pub use error::EvalError;
 pub use geodesic::{
     FreeSpaceGrid, GEODESIC_MAX_CELLS, GeodesicPath, SIGHT_RADIUS, free_space_geodesic,

@@ -1,7 +1,9 @@
-//! Doors: narrow borders between two basins become door spaces.
+//! Doors: narrow borders between two basins become door spaces, each
+//! spanning its doorway ([`door_span`]).
 
 use std::collections::{BTreeMap, HashSet, VecDeque};
 
+use super::doorway::{DoorSpan, SpanLimits, border_line, door_span};
 use crate::imaging::Labels;
 
 /// One border between two regions.
@@ -114,18 +116,116 @@ fn stretches(list: &[Crossing], w: usize, join_px: i64) -> Vec<Vec<usize>> {
     out
 }
 
-/// Cuts a door space of thickness `depth_px` across each border in `doors`,
-/// labelled `labels.count + 1 + k` for the k-th door; returns the new labels.
-/// The door grows breadth-first from its border pixels over the labelled
-/// pixels within `depth_px / 2 - 0.5` of the border (Euclidean), so two
-/// doors side by side split the band between them. Only the band is
+/// Cuts a door space across each border in `doors`, labelled
+/// `labels.count + 1 + k` for the k-th door; returns the new labels and
+/// each door's doorway line (pixel coordinates).
+///
+/// Where the border crosses a bounded opening, the door's line is the
+/// opening's narrowest chord ([`door_span`]) and the door is the opening
+/// from one face of the wall to the other (its [`DoorSpan`]), grown from
+/// the border's pixels over the pixels of its two regions. Where the wall
+/// is no thicker than `limits.min_depth`, or there is no opening narrower
+/// than `limits.max_width` through the border's centre, the door is the
+/// band within `limits.min_depth / 2` of the border; without an opening
+/// its line is the diameter of the widest circle on the border
+/// ([`border_line`]; `dist` is each pixel's distance to the nearest
+/// obstacle).
+pub(crate) fn cut_doors(
+    labels: &Labels,
+    doors: &[&Border],
+    dist: &[f32],
+    limits: &SpanLimits,
+) -> (Labels, Vec<Option<[[f64; 2]; 2]>>) {
+    let mut out = labels.clone();
+    let mut lines = Vec::with_capacity(doors.len());
+    let mut banded: Vec<(usize, &Border)> = Vec::new();
+    for (k, door) in doors.iter().enumerate() {
+        let label = labels.count + 1 + k as u32;
+        match door_span(labels, door.pair, &door.pixels, limits) {
+            // A wall thinner than the thinnest door: the band.
+            Some(span) if span.depth() <= limits.min_depth + 1e-9 => {
+                banded.push((k, door));
+                lines.push(Some(span.line));
+            }
+            Some(span) => {
+                fill_span(labels, &mut out, door, &span, label);
+                lines.push(Some(span.line));
+            }
+            None => {
+                banded.push((k, door));
+                lines.push(border_line(labels, door.pair, &door.pixels, dist));
+            }
+        }
+    }
+    cut_bands(labels, &mut out, &banded, limits.min_depth);
+    out.count = labels.count + doors.len() as u32;
+    (out, lines)
+}
+
+/// Labels `label` the pixels of `door`'s two regions that `span` covers
+/// and no other door has taken, grown (4-connected) from the border's
+/// covered pixels; then any border pixel still touching the other region
+/// (a border that strays out of the opening), so the door always cuts the
+/// two regions apart.
+fn fill_span(labels: &Labels, out: &mut Labels, door: &Border, span: &DoorSpan, label: u32) {
+    let (w, h) = (i64::from(labels.width), i64::from(labels.height));
+    let (a, b) = door.pair;
+    let xy = |p: u32| (i64::from(p) % w, i64::from(p) / w);
+    let free_for_us = |out: &Labels, j: usize| {
+        let l = labels.data[j];
+        (l == a || l == b) && out.data[j] == l
+    };
+    let mut queue: VecDeque<u32> = VecDeque::new();
+    for &p in &door.pixels {
+        let (x, y) = xy(p);
+        if free_for_us(out, p as usize) && span.covers(x, y) {
+            out.data[p as usize] = label;
+            queue.push_back(p);
+        }
+    }
+    while let Some(p) = queue.pop_front() {
+        let (x, y) = xy(p);
+        for (dx, dy) in [(-1, 0), (1, 0), (0, -1), (0, 1)] {
+            let (nx, ny) = (x + dx, y + dy);
+            if nx < 0 || ny < 0 || nx >= w || ny >= h {
+                continue;
+            }
+            let j = (ny * w + nx) as usize;
+            if free_for_us(out, j) && span.covers(nx, ny) {
+                out.data[j] = label;
+                queue.push_back(j as u32);
+            }
+        }
+    }
+    for &p in &door.pixels {
+        let (x, y) = xy(p);
+        let mine = labels.data[p as usize];
+        if out.data[p as usize] != mine {
+            continue;
+        }
+        let other = if mine == a { b } else { a };
+        let touches = [(-1, 0), (1, 0), (0, -1), (0, 1)].iter().any(|(dx, dy)| {
+            let (nx, ny) = (x + dx, y + dy);
+            nx >= 0 && ny >= 0 && nx < w && ny < h && out.data[(ny * w + nx) as usize] == other
+        });
+        if touches {
+            out.data[p as usize] = label;
+        }
+    }
+}
+
+/// The doors of `doors` (k-th door labelled `labels.count + 1 + k`) as
+/// bands of thickness `depth_px` across their borders: each grows
+/// breadth-first from its border pixels over the labelled pixels within
+/// `depth_px / 2 - 0.5` of the border (Euclidean) that no door has taken,
+/// so two doors side by side split the band between them. Only the band is
 /// visited: a few thousand pixels, whatever the map's size.
-pub(crate) fn cut_doors(labels: &Labels, doors: &[&Border], depth_px: f64) -> Labels {
+fn cut_bands(labels: &Labels, out: &mut Labels, doors: &[(usize, &Border)], depth_px: f64) {
     let (w, h) = (labels.width as i64, labels.height as i64);
     let r = (depth_px / 2.0 - 0.5).max(0.0);
     let reach = r.floor() as i64;
     let mut band: HashSet<u32> = HashSet::new();
-    for door in doors {
+    for (_, door) in doors {
         for &p in &door.pixels {
             let (x, y) = (i64::from(p) % w, i64::from(p) / w);
             for dy in -reach..=reach {
@@ -134,7 +234,8 @@ pub(crate) fn cut_doors(labels: &Labels, doors: &[&Border], depth_px: f64) -> La
                     let inside = nx >= 0 && ny >= 0 && nx < w && ny < h;
                     if inside && ((dx * dx + dy * dy) as f64) <= r * r {
                         let j = (ny * w + nx) as u32;
-                        if labels.data[j as usize] != 0 {
+                        let l = labels.data[j as usize];
+                        if l != 0 && out.data[j as usize] == l {
                             band.insert(j);
                         }
                     }
@@ -142,12 +243,11 @@ pub(crate) fn cut_doors(labels: &Labels, doors: &[&Border], depth_px: f64) -> La
             }
         }
     }
-    let mut out = labels.clone();
     let mut queue: VecDeque<u32> = VecDeque::new();
-    for (k, door) in doors.iter().enumerate() {
+    for (k, door) in doors {
         for &p in &door.pixels {
-            out.data[p as usize] = labels.count + 1 + k as u32;
             if band.remove(&p) {
+                out.data[p as usize] = labels.count + 1 + *k as u32;
                 queue.push_back(p);
             }
         }
@@ -166,8 +266,6 @@ pub(crate) fn cut_doors(labels: &Labels, doors: &[&Border], depth_px: f64) -> La
             }
         }
     }
-    out.count = labels.count + doors.len() as u32;
-    out
 }
 
 #[cfg(test)]
@@ -190,9 +288,24 @@ mod tests {
         assert_eq!(b.len(), 1);
         assert_eq!(b[0].pair, (1, 2));
         assert_eq!(b[0].width_px, 4.0);
-        let cut = cut_doors(&labels, &[&b[0]], 2.0);
+        // Open space all round (no opening): a band two pixels thick.
+        let limits = SpanLimits {
+            max_width: 2.5,
+            search: 1.0,
+            min_depth: 2.0,
+            max_depth: 4.0,
+            slack: 1.0,
+        };
+        let (cut, lines) = cut_doors(&labels, &[&b[0]], &dist, &limits);
         assert_eq!(cut.count, 3);
         assert_eq!(cut.data[..6], [1, 1, 3, 3, 2, 2]);
+        // Its line: the widest circle on the border (radius 2, row 1),
+        // across it.
+        let [p, q] = lines[0].unwrap();
+        assert!(
+            (p[1] - q[1]).abs() > 3.9 && (p[0] - q[0]).abs() < 1e-9,
+            "{p:?} {q:?}"
+        );
     }
 
     #[test]

@@ -9,8 +9,10 @@
 //! (`clean`), doorway gaps in straight walls closed (`wall_gaps`), exact
 //! distance transform, segmentation (`segment`: distance markers + Meyer
 //! watershed, or `ccl`: the paper's Experiment I), merging of tiny regions
-//! (`merge`), door spaces cut across doorway gaps and narrow borders
-//! (`doors`), unknown pockets and specks joined to their spaces
+//! (`merge`), door spaces cut across doorway gaps and narrow borders,
+//! each spanning its opening from one face of the wall to the other, with
+//! its doorway line at the opening's narrowest chord (`doors`,
+//! `doorway`), unknown pockets and specks joined to their spaces
 //! (`interior`), each space made one 4-connected piece without diagonal
 //! pinches (`tidy`), region adjacency, labelling and refinement (`graph`),
 //! outlines along pixel edges that tile the spaces exactly (`polygon`:
@@ -22,6 +24,7 @@ mod ccl;
 mod clean;
 mod conflicts;
 mod doors;
+mod doorway;
 mod error;
 mod furniture;
 mod graph;

@@ -7,6 +7,7 @@ use std::time::{Duration, Instant};
 use super::ccl::segment_ccl;
 use super::clean::clean_free;
 use super::doors::{Border, borders, cut_doors};
+use super::doorway::SpanLimits;
 use super::graph::topology;
 use super::interior::{claim_enclosed_unknown, fill_specks};
 use super::joins::{JoinLimits, open_joins};
@@ -22,12 +23,26 @@ use super::wall_gaps::{GapLimits, WallGap, close_gaps, reopen_gaps, wall_gaps};
 use super::{DoorRule, ExtractError, ExtractParams, Method};
 use crate::grid::OccupancyGrid;
 use crate::imaging::{Labels, distance_to_background, max_distance};
-use crate::model::{Connection, Nrg, Space, SpaceId, SpaceKind};
+use crate::model::{Connection, Nrg, Space, SpaceId, SpaceKind, point_in_ring};
 
 /// A border is a door under `DoorRule::Skeleton` if it passes this close
 /// (pixels) to a doorway point: the watershed border and the skeletons'
 /// crossing need not share a pixel.
 const SKELETON_NEAR_PX: f64 = 2.0;
+
+/// How far (m) from a door border's centre, across it, its doorway's
+/// narrowest chord is sought.
+const SPAN_SEARCH_M: f64 = 0.25;
+
+/// The thickest wall (m) a door spans from face to face: an opening of
+/// even width that runs on further is a passage (a corridor piece), and
+/// its door stays thin. The IPA maps' drawn walls are up to 0.65 m with
+/// their anti-aliased edges; built walls are thinner.
+const SPAN_MAX_DEPTH_M: f64 = 0.7;
+
+/// How much (m) an opening may widen at either end and still be inside its
+/// wall (anti-aliased and ragged jambs).
+const SPAN_SLACK_M: f64 = 0.05;
 
 /// Unlabelled specks smaller than this (m²) inside one space join it.
 const MIN_HOLE_M2: f64 = 0.25;
@@ -247,7 +262,14 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     let doors: Vec<&Border> = chosen.iter().map(|&k| &all[k]).collect();
     let door_pairs: Vec<(u32, u32)> = doors.iter().map(|b| b.pair).collect();
     let n_regions = regions.count;
-    let mut labels = cut_doors(&regions, &doors, (params.door_depth_m / res).max(1.0));
+    let span_limits = SpanLimits {
+        max_width: 1.15 * params.door_width_max_m.max(params.wall_gap_width_max_m) / res,
+        search: (SPAN_SEARCH_M / res).max(2.0),
+        min_depth: (params.door_depth_m / res).max(1.0),
+        max_depth: (params.wall_thickness_max_m.min(SPAN_MAX_DEPTH_M) / res).max(1.0),
+        slack: (SPAN_SLACK_M / res).max(1.5),
+    };
+    let (mut labels, door_lines) = cut_doors(&regions, &doors, &dist, &span_limits);
     claim_enclosed_unknown(
         &mut labels,
         grid,
@@ -277,6 +299,10 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         &topo.kinds,
         &topo.edges,
         params.simplify_m,
+        &DoorLines {
+            first: n_regions + 1,
+            lines: &door_lines,
+        },
     )?;
     clock.lap("polygons");
     let (labels, nrg, pixel_centroids) = out;
@@ -385,6 +411,20 @@ fn region_shapes(labels: &Labels, dist: &[f32]) -> Vec<(usize, f64)> {
 
 type Built = (Labels, Nrg, BTreeMap<SpaceId, [f64; 2]>);
 
+/// The doorway lines of the door labels (pixel coordinates): label
+/// `first + k` has `lines[k]`.
+struct DoorLines<'a> {
+    first: u32,
+    lines: &'a [Option<[[f64; 2]; 2]>],
+}
+
+impl DoorLines<'_> {
+    fn of(&self, label: usize) -> Option<[[f64; 2]; 2]> {
+        let k = label.checked_sub(self.first as usize)?;
+        self.lines.get(k).copied().flatten()
+    }
+}
+
 /// Renumbers non-empty labels to space ids 1..=n and builds spaces and connections.
 fn build(
     grid: &OccupancyGrid,
@@ -393,6 +433,7 @@ fn build(
     kinds: &[SpaceKind],
     edges: &[(u32, u32, crate::model::ConnectionKind)],
     simplify_m: f64,
+    door_lines: &DoorLines<'_>,
 ) -> Result<Built, ExtractError> {
     let n = labels.count as usize + 1;
     let w = labels.width as usize;
@@ -458,18 +499,35 @@ fn build(
         if id == 0 {
             continue;
         }
-        // A door's anchor is the middle of its doorway: its centroid.
-        let anchor = if kinds[l] == SpaceKind::Door {
+        let (polygon, holes) = std::mem::take(&mut outlines[id as usize]);
+        let door = kinds[l] == SpaceKind::Door;
+        let line = door_lines.of(l).filter(|_| door).map(|[a, b]| {
+            [
+                grid.pixel_to_metres(a[0], a[1]),
+                grid.pixel_to_metres(b[0], b[1]),
+            ]
+        });
+        // A door's anchor is the middle of its doorway line (else of its
+        // pixels); other spaces' the pixel picked above.
+        let middle = line
+            .map(|[a, b]| [(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0])
+            .filter(|m| point_in_ring(*m, &polygon) && !holes.iter().any(|h| point_in_ring(*m, h)));
+        let anchor = if let Some(m) = middle {
+            m
+        } else if door {
             let c = centre(l);
             grid.pixel_to_metres(c[0] + 0.5, c[1] + 0.5)
         } else {
             let i = pick[l].1;
             grid.pixel_to_metres((i % w) as f64 + 0.5, (i / w) as f64 + 0.5)
         };
-        let (polygon, holes) = std::mem::take(&mut outlines[id as usize]);
         let mut space = Space::new(SpaceId(id), kinds[l], anchor, polygon);
         space.holes = holes;
+        if line.is_some() {
+            space.doorway = line;
+        }
         space.update_area();
+        space.update_doorway();
         spaces.push(space);
         let c = count[l] as f64;
         centroids.insert(SpaceId(id), [sum[l][0] / c, sum[l][1] / c]);

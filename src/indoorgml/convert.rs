@@ -12,7 +12,8 @@
 //! without geometry or dual, referenced by both cells' `partialboundedBy`:
 //! in IndoorGML a shared boundary without a Transition is exactly "adjacent
 //! but not connected". Machine-readable extras (the connection kind and
-//! length, a space's attributes) go in `gml:description` as a JSON object.
+//! length, a space's attributes, a door's doorway line and width under
+//! `"doorway"`) go in `gml:description` as a JSON object.
 //!
 //! Reading: the layer whose States are dual to the most cells is the
 //! navigation layer; its Transitions become connections (length = the
@@ -105,7 +106,7 @@ pub fn from_nrg_with_paths(nrg: &Nrg, paths: &ConnectionPaths) -> Document {
         cells.push(Cell {
             info: FeatureInfo {
                 names: s.name.iter().cloned().collect(),
-                description: attributes_to_description(&s.attributes),
+                description: space_description(s),
                 ..FeatureInfo::new(cell_id(s.id))
             },
             class,
@@ -201,6 +202,34 @@ fn closed_ring(ring: &[Point], ccw: bool) -> Coords {
         dim: 2,
         values: pts.iter().flat_map(|p| *p).collect(),
     }
+}
+
+/// A cell's description: its space's attributes and, for a door, its
+/// doorway (`"doorway": {"line": [[x, y], [x, y]], "width_m": w}`; the
+/// width is derived again when read).
+fn space_description(s: &Space) -> Option<String> {
+    match crate::model::doorway(s) {
+        Some(d) => {
+            let mut attrs = s.attributes.clone();
+            attrs.insert(
+                DOORWAY_KEY.into(),
+                json!({"line": d.line, "width_m": d.width_m}),
+            );
+            Some(Value::Object(attrs).to_string())
+        }
+        None => attributes_to_description(&s.attributes),
+    }
+}
+
+/// The description key of a door's doorway extras.
+const DOORWAY_KEY: &str = "doorway";
+
+/// Takes the doorway line nrgdb wrote out of a cell's attributes.
+fn take_doorway(attributes: &mut Map<String, Value>) -> Option<[Point; 2]> {
+    let line: [Point; 2] =
+        serde_json::from_value(attributes.get(DOORWAY_KEY)?.get("line")?.clone()).ok()?;
+    attributes.remove(DOORWAY_KEY);
+    Some(line)
 }
 
 fn attributes_to_description(attrs: &Map<String, Value>) -> Option<String> {
@@ -453,6 +482,7 @@ fn space(cell: &Cell, id: SpaceId, state: Option<&State>) -> Result<Space, Indoo
         .or_else(|| polygon_centroid(&polygon))
         .unwrap_or([0.0, 0.0]);
     let mut attributes = description_to_attributes(cell.info.description.as_deref());
+    let doorway = take_doorway(&mut attributes);
     if cell.info.id != cell_id(id) {
         attributes.insert("gml_id".into(), Value::String(cell.info.id.clone()));
     }
@@ -467,7 +497,11 @@ fn space(cell: &Cell, id: SpaceId, state: Option<&State>) -> Result<Space, Indoo
     space.name = name;
     space.holes = holes;
     space.attributes = attributes;
+    if kind == SpaceKind::Door && doorway.is_some() {
+        space.doorway = doorway;
+    }
     space.update_area();
+    space.update_doorway();
     Ok(space)
 }
 

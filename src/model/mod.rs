@@ -3,11 +3,13 @@
 //!
 //! Owns the types every other module exchanges, their invariants
 //! ([`Nrg::new`] checks them), the public JSON form and the navigable
-//! connectivity graph ([`ConnectivityGraph`]). Coordinates are metres in the
+//! connectivity graph ([`ConnectivityGraph`]), and the one definition of
+//! a door's doorway line and width ([`doorway`]). Coordinates are metres in the
 //! map frame (x right, y up). Uses nothing from the rest of the crate; must
 //! not know about XML, SQL, HTTP or the terminal.
 
 mod connection;
+mod doorway;
 mod error;
 mod geometry;
 mod graph;
@@ -16,6 +18,7 @@ mod nrg;
 mod space;
 
 pub use connection::{Connection, ConnectionKind, ConnectionPaths};
+pub use doorway::{Doorway, convex_hull, doorway, polygon_doorway};
 pub use error::ModelError;
 pub use geometry::{
     Point, Ring, point_in_ring, polygon_area, polygon_centroid, ring_is_ccw, segment_distance,

@@ -59,6 +59,7 @@ impl Nrg {
         for space in &mut spaces {
             check_space(space)?;
             space.update_area();
+            space.update_doorway();
         }
         let ids: HashSet<SpaceId> = spaces.iter().map(|s| s.id).collect();
         let mut seen = HashSet::new();

@@ -6,6 +6,7 @@ use std::str::FromStr;
 use serde::{Deserialize, Serialize};
 use serde_json::{Map, Value};
 
+use super::doorway::doorway;
 use super::geometry::{Point, Ring, polygon_area};
 
 /// Stable integer identity of a space within one map.
@@ -77,8 +78,11 @@ impl FromStr for SpaceKind {
 /// The polygon is the space's 2D footprint in metres in the map frame: an
 /// open ring (the first point is not repeated), counter-clockwise, with
 /// optional clockwise holes. The anchor is the node's position, a point
-/// inside the space that routes pass through.
+/// inside the space that routes pass through. Read from JSON, the derived
+/// fields (`area_m2`, `width_m`, a door's missing `doorway`) are computed
+/// afresh.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(from = "SpaceJson")]
 pub struct Space {
     /// Stable id, unique within the model.
     pub id: SpaceId,
@@ -93,6 +97,17 @@ pub struct Space {
     /// `holes`; ignored when read).
     #[serde(default, skip_deserializing)]
     pub area_m2: f64,
+    /// For a door: its width in metres, the doorway line's length unless a
+    /// `width_m` attribute declares it (derived, see
+    /// [`doorway`](super::doorway()); ignored when read). None for other kinds.
+    #[serde(default, skip_deserializing, skip_serializing_if = "Option::is_none")]
+    pub width_m: Option<f64>,
+    /// For a door: its doorway line, from one jamb to the other through the
+    /// middle of the wall, in metres. A door read without one gets the
+    /// midline of its polygon's minimum-area rectangle; None for other
+    /// kinds (see [`doorway`](super::doorway())).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub doorway: Option<[Point; 2]>,
     /// Exterior ring in metres.
     pub polygon: Ring,
     /// Interior rings (obstacles inside the space), if any.
@@ -101,6 +116,43 @@ pub struct Space {
     /// Free attributes (JSON values), kept through every format.
     #[serde(default)]
     pub attributes: Map<String, Value>,
+}
+
+/// The fields of a [`Space`] that JSON gives; the rest is derived.
+#[derive(Deserialize)]
+struct SpaceJson {
+    id: SpaceId,
+    kind: SpaceKind,
+    #[serde(default)]
+    name: Option<String>,
+    anchor: Point,
+    #[serde(default)]
+    doorway: Option<[Point; 2]>,
+    polygon: Ring,
+    #[serde(default)]
+    holes: Vec<Ring>,
+    #[serde(default)]
+    attributes: Map<String, Value>,
+}
+
+impl From<SpaceJson> for Space {
+    fn from(j: SpaceJson) -> Space {
+        let mut space = Space {
+            id: j.id,
+            kind: j.kind,
+            name: j.name,
+            anchor: j.anchor,
+            area_m2: 0.0,
+            width_m: None,
+            doorway: j.doorway,
+            polygon: j.polygon,
+            holes: j.holes,
+            attributes: j.attributes,
+        };
+        space.update_area();
+        space.update_doorway();
+        space
+    }
 }
 
 impl Space {
@@ -112,12 +164,24 @@ impl Space {
             name: None,
             anchor,
             area_m2: 0.0,
+            width_m: None,
+            doorway: None,
             polygon,
             holes: Vec::new(),
             attributes: Map::new(),
         };
         space.update_area();
+        space.update_doorway();
         space
+    }
+
+    /// Recomputes `width_m` and, for a door without one, `doorway` (from
+    /// the polygon); clears both for other kinds. See
+    /// [`doorway`](super::doorway()).
+    pub fn update_doorway(&mut self) {
+        let d = doorway(self);
+        self.doorway = d.map(|d| d.line);
+        self.width_m = d.map(|d| d.width_m);
     }
 
     /// Recomputes `area_m2` from the rings (exterior minus holes).
@@ -138,6 +202,7 @@ impl Space {
             && self.name == other.name
             && self.anchor.map(f64::to_bits) == other.anchor.map(f64::to_bits)
             && bits(&self.polygon) == bits(&other.polygon)
+            && self.doorway.map(|l| bits(&l)) == other.doorway.map(|l| bits(&l))
             && self.holes.len() == other.holes.len()
             && self
                 .holes

@@ -6,10 +6,10 @@ use std::time::Duration;
 
 use super::error::QueryError;
 use super::filter::{field_value, matches, order_values};
-use super::index::{IndexedRevision, width_m};
+use super::index::IndexedRevision;
 use super::plan::Plan;
 use super::result::{Cell, QueryResult, Table};
-use crate::model::{Space, SpaceId, SpaceKind};
+use crate::model::{Doorway, Space, SpaceId, SpaceKind, doorway};
 use crate::route::{Budget, RouteError, no_route_reason, reachable_within, shortest_route};
 
 /// Bounds on one statement: wall-clock time and rows returned.
@@ -36,6 +36,12 @@ fn space_cells(s: &Space) -> Vec<Cell> {
         Cell::Text(s.kind.to_string()),
         s.name.clone().map_or(Cell::Null, Cell::Text),
     ]
+}
+
+/// A doorway line as text: `(x1, y1)-(x2, y2)`, metres with 2 decimals.
+fn line_text(d: &Doorway) -> String {
+    let [a, b] = d.line;
+    format!("({:.2}, {:.2})-({:.2}, {:.2})", a[0], a[1], b[0], b[1])
 }
 
 fn columns(names: &[&str]) -> Vec<String> {
@@ -116,7 +122,7 @@ pub fn execute(
             let doors = *kind == Some(SpaceKind::Door);
             let mut names = vec!["id", "kind", "name", "area_m2", "degree"];
             if doors {
-                names.push("width_m");
+                names.extend(["width_m", "doorway"]);
             }
             let rows = found
                 .into_iter()
@@ -125,7 +131,9 @@ pub fn execute(
                     row.push(Cell::Float(s.area_m2));
                     row.push(Cell::Int(rev.graph.degree(s.id) as i64));
                     if doors {
-                        row.push(width_m(s).map_or(Cell::Null, Cell::Float));
+                        let d = doorway(s);
+                        row.push(d.map_or(Cell::Null, |d| Cell::Float(d.width_m)));
+                        row.push(d.map_or(Cell::Null, |d| Cell::Text(line_text(&d))));
                     }
                     row
                 })
@@ -180,7 +188,8 @@ pub fn execute(
     bounded(result, limits)
 }
 
-/// Spaces within `depth` hops of `of` (breadth first), without `of` itself.
+/// Spaces within `depth` hops of `of` (breadth first), without `of` itself,
+/// with their hop count and, for doors, their width.
 fn neighbours(
     rev: &IndexedRevision,
     of: SpaceId,
@@ -215,11 +224,12 @@ fn neighbours(
         .map(|(d, s)| {
             let mut row = space_cells(s);
             row.push(Cell::Int(d.into()));
+            row.push(doorway(s).map_or(Cell::Null, |d| Cell::Float(d.width_m)));
             row
         })
         .collect();
     Ok(QueryResult::Table(Table {
-        columns: columns(&["id", "kind", "name", "depth"]),
+        columns: columns(&["id", "kind", "name", "depth", "width_m"]),
         rows,
     }))
 }

@@ -5,8 +5,8 @@ use std::cmp::Ordering;
 
 use super::ast::{CompareOp, Condition, Field, Value};
 use super::error::QueryError;
-use super::index::{IndexedRevision, width_m};
-use crate::model::Space;
+use super::index::IndexedRevision;
+use crate::model::{Space, doorway};
 
 /// The value of `field` for `space` (`Null` when it has none).
 pub fn field_value(field: &Field, space: &Space, rev: &IndexedRevision) -> Value {
@@ -16,7 +16,7 @@ pub fn field_value(field: &Field, space: &Space, rev: &IndexedRevision) -> Value
         Field::Name => Value::Text(space.label()),
         Field::Area => Value::Number(space.area_m2),
         Field::Degree => Value::Number(rev.graph.degree(space.id) as f64),
-        Field::Width => width_m(space).map_or(Value::Null, Value::Number),
+        Field::Width => doorway(space).map_or(Value::Null, |d| Value::Number(d.width_m)),
         Field::Attr(key) => match space.attributes.get(key) {
             None | Some(serde_json::Value::Null) => Value::Null,
             Some(serde_json::Value::Bool(b)) => Value::Bool(*b),

@@ -3,7 +3,6 @@
 
 use std::collections::HashMap;
 
-use geo::MinimumRotatedRect;
 use rstar::RTree;
 use rstar::primitives::{GeomWithData, Rectangle};
 
@@ -130,28 +129,6 @@ impl IndexedRevision {
     }
 }
 
-/// A door's width in metres: the `width_m` attribute when it is a number,
-/// else the shorter side of the polygon's minimum rotated bounding
-/// rectangle. Defined for every space; FIND shows it for doors.
-pub fn width_m(space: &Space) -> Option<f64> {
-    if let Some(w) = space.attributes.get("width_m").and_then(|v| v.as_f64()) {
-        return Some(w);
-    }
-    let coords: Vec<geo::Coord<f64>> = space
-        .polygon
-        .iter()
-        .map(|p| geo::Coord { x: p[0], y: p[1] })
-        .collect();
-    let rect = geo::LineString::new(coords).minimum_rotated_rect()?;
-    let c: Vec<_> = rect.exterior().coords().copied().collect();
-    let side = |a: usize, b: usize| {
-        c.get(a)
-            .zip(c.get(b))
-            .map(|(p, q)| (p.x - q.x).hypot(p.y - q.y))
-    };
-    Some(side(0, 1)?.min(side(1, 2)?))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -171,11 +148,16 @@ mod tests {
     }
 
     #[test]
-    fn width_prefers_the_attribute() {
+    fn width_is_the_declared_width_else_the_doorway() {
+        // Door 2 declares 0.9 m; door 7 is a 1.0 m opening through a
+        // 0.3 m wall and declares nothing: its width is the opening, the
+        // long side of its rectangle (was the 0.3 m depth).
         let nrg = demo::building(2);
         let d0 = nrg.space(SpaceId(2)).unwrap();
-        assert_eq!(width_m(d0), Some(0.9));
+        assert_eq!(d0.width_m, Some(0.9));
         let d1 = nrg.space(SpaceId(7)).unwrap();
-        assert!((width_m(d1).unwrap() - 0.3).abs() < 1e-9);
+        assert!((d1.width_m.unwrap() - 1.0).abs() < 1e-9, "{:?}", d1.width_m);
+        let room = nrg.space(SpaceId(3)).unwrap();
+        assert_eq!(room.width_m, None);
     }
 }

@@ -18,9 +18,10 @@
 //! (`"Kitchen"`, case-insensitive) or a point (`(3.5, 7.25)`, metres).
 //!
 //! WHERE fields: `id`, `kind`, `name` (the label when unnamed), `area` (m²),
-//! `degree` (navigable connections), `width` (metres: the `width_m`
-//! attribute when numeric, else the shorter side of the polygon's minimum
-//! rotated bounding rectangle) and `attr.key`; operators `= != < <= > >=
+//! `degree` (navigable connections), `width` (a door's width in metres,
+//! [`model::doorway`](crate::model::doorway()): the doorway line's length
+//! unless a `width_m` attribute declares it; none for other kinds) and
+//! `attr.key`; operators `= != < <= > >=
 //! LIKE`, combined with `AND`, `OR`, `NOT` and parentheses.
 
 pub mod demo;
@@ -47,7 +48,7 @@ pub use compare_revisions::{LoadedRevision, RevisionComparison, compare_revision
 pub use error::{QueryError, SourceError, Span};
 pub use exec::{Limits, execute};
 pub use filter::like;
-pub use index::{IndexedRevision, width_m};
+pub use index::IndexedRevision;
 pub use lexer::{Token, TokenKind, lex};
 pub use parser::{KEYWORDS, STATEMENT_KEYWORDS, parse, parse_statement};
 pub use plan::{Plan, plan};

@@ -9,7 +9,7 @@ use super::legend::{LEGEND_WIDTH_PX, SCALE_BAR_HEIGHT_PX, legend, scale_bar};
 use super::scene::{LabelMode, OverlaySpace, Scene};
 use super::style::{self, Change, okabe_ito};
 use super::transform::MapTransform;
-use crate::model::{Point, Ring, SpaceKind};
+use crate::model::{Point, Ring, SpaceKind, doorway};
 
 /// Space around the map area (px).
 pub const MARGIN_PX: f64 = 20.0;
@@ -202,6 +202,20 @@ fn spaces(scene: &Scene<'_>, t: &MapTransform, items: &mut Vec<Item>) {
                 space: Some(space.id),
             },
         });
+    }
+    // Doorway lines over the spaces: each door's opening, jamb to jamb.
+    for space in scene.nrg.spaces() {
+        if let Some(d) = doorway(space) {
+            items.push(Item::Line {
+                points: d.line.iter().map(|p| t.apply(*p)).collect(),
+                stroke: style::doorway_stroke(),
+                tag: Tag {
+                    class: "doorway".into(),
+                    id: None,
+                    space: Some(space.id),
+                },
+            });
+        }
     }
 }
 

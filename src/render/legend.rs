@@ -43,6 +43,15 @@ pub fn legend(scene: &Scene<'_>, at: [f64; 2]) -> (Vec<Item>, f64) {
         text(&mut items, y, kind.as_str().to_string());
         y += ROW_PX;
     }
+    if nrg.spaces().iter().any(|s| s.kind == SpaceKind::Door) {
+        items.push(Item::Line {
+            points: vec![[x, y + 5.0], [x + 18.0, y + 5.0]],
+            stroke: style::doorway_stroke(),
+            tag: Tag::class("legend"),
+        });
+        text(&mut items, y, "doorway".to_string());
+        y += ROW_PX;
+    }
     if scene.options.graph {
         for (kind, what) in [
             (ConnectionKind::Door, "through a door"),

@@ -45,6 +45,11 @@ pub fn space_outline() -> Stroke {
     Stroke::solid(Rgba::rgb(60, 60, 60), 1.0)
 }
 
+/// A door's doorway line (its opening, jamb to jamb): dark bluish green.
+pub fn doorway_stroke() -> Stroke {
+    Stroke::solid(Rgba::rgb(0, 90, 66), 2.0)
+}
+
 /// An edge of the graph by connection kind: door solid black, open long
 /// dashes, adjacent thin grey dots.
 pub fn edge_stroke(kind: ConnectionKind) -> Stroke {

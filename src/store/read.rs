@@ -203,10 +203,12 @@ pub(crate) fn load_at(
     // older ones filter the map's rows by their validity range.
     let is_latest = seq == latest(conn, map_id)?;
     let mut stmt = conn.prepare_cached(if is_latest {
-        "SELECT row_id, space_id, kind, name, attributes, anchor_x, anchor_y, geometry
+        "SELECT row_id, space_id, kind, name, attributes, anchor_x, anchor_y, geometry,
+                doorway_ax, doorway_ay, doorway_bx, doorway_by
          FROM spaces WHERE map_id = ?1 AND valid_to IS NULL AND ?2 > 0"
     } else {
-        "SELECT row_id, space_id, kind, name, attributes, anchor_x, anchor_y, geometry
+        "SELECT row_id, space_id, kind, name, attributes, anchor_x, anchor_y, geometry,
+                doorway_ax, doorway_ay, doorway_bx, doorway_by
          FROM spaces WHERE map_id = ?1 AND valid_from <= ?2
            AND (valid_to IS NULL OR valid_to > ?2)"
     })?;
@@ -228,6 +230,10 @@ pub(crate) fn load_at(
         space.name = r.get(3)?;
         space.holes = holes;
         space.attributes = attributes;
+        let line: [Option<f64>; 4] = [r.get(8)?, r.get(9)?, r.get(10)?, r.get(11)?];
+        if let [Some(ax), Some(ay), Some(bx), Some(by)] = line {
+            space.doorway = Some([[ax, ay], [bx, by]]);
+        }
         spaces.push(space);
     }
     let mut stmt = conn.prepare_cached(if is_latest {

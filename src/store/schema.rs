@@ -11,6 +11,7 @@ use super::StoreError;
 const MIGRATIONS: &[M<'static>] = &[
     M::up(include_str!("../../migrations/0001_init.sql")),
     M::up(include_str!("../../migrations/0002_revision_grids.sql")),
+    M::up(include_str!("../../migrations/0003_doorways.sql")),
 ];
 
 /// The newest schema version this build knows (the number of migrations).

@@ -326,8 +326,9 @@ fn count(n: usize) -> i64 {
 fn insert_space(conn: &Connection, map_id: i64, seq: u32, s: &Space) -> Result<(), StoreError> {
     let attributes = serde_json::Value::Object(s.attributes.clone()).to_string();
     conn.prepare_cached(
-        "INSERT INTO spaces (map_id, space_id, valid_from, kind, name, attributes, anchor_x, anchor_y, geometry)
-         VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)",
+        "INSERT INTO spaces (map_id, space_id, valid_from, kind, name, attributes, anchor_x, anchor_y, geometry,
+                             doorway_ax, doorway_ay, doorway_bx, doorway_by)
+         VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13)",
     )?
     .execute(params![
         map_id,
@@ -339,6 +340,10 @@ fn insert_space(conn: &Connection, map_id: i64, seq: u32, s: &Space) -> Result<(
         s.anchor[0],
         s.anchor[1],
         geometry_blob::encode(&s.polygon, &s.holes),
+        s.doorway.map(|l| l[0][0]),
+        s.doorway.map(|l| l[0][1]),
+        s.doorway.map(|l| l[1][0]),
+        s.doorway.map(|l| l[1][1]),
     ])?;
     let row_id = conn.last_insert_rowid();
     let (mut min, mut max) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);

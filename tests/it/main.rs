@@ -13,6 +13,7 @@ mod support;
 
 mod demo;
 mod extract;
+mod extract_doors;
 mod extract_tiling;
 mod ingest;
 mod query;

@@ -211,8 +211,10 @@ fn eval_over_a_folder_scores_maps_with_a_ground_truth_and_skips_the_rest() {
         .split_whitespace()
         .filter_map(|w| w.parse().ok())
         .collect();
-    assert_eq!(numbers.len(), 8, "{row}");
+    // Eight scores in %, then the door width error's median and p90 (m).
+    assert_eq!(numbers.len(), 10, "{row}");
     assert!(numbers[0] > 50.0, "room recall {row}");
+    assert!(numbers[8] <= 0.1, "width error {row}");
     assert!(text.contains("mean of 1"), "{text}");
     assert!(text.contains("b: skipped, no b_gt.png"), "{text}");
     let out = nrgdb(dir.path(), &["eval", "maps", "--json"]);

@@ -34,7 +34,7 @@ pub(crate) use self::search::Walk;
 use self::search::{End, shortest_walk};
 use super::{Budget, RouteError};
 pub(crate) use crate::model::segment_distance;
-use crate::model::{Nrg, Point, SpaceId, SpaceKind};
+use crate::model::{Nrg, Point, SpaceId, doorway};
 
 /// How the walker moves: the clearance it keeps from walls and furniture,
 /// the narrowest doorway it fits through, and its speed.
@@ -133,27 +133,15 @@ impl Level {
     }
 }
 
-/// A door's width: its `width_m` attribute when given, else the length of
-/// its opening (the longest run of gates on one side).
+/// Each space's door width (dense index): a door's width as
+/// [`doorway`] defines it, infinite for other spaces.
 fn door_widths(nrg: &Nrg, mesh: &Mesh) -> Vec<f64> {
     mesh.space_ids
         .iter()
-        .enumerate()
-        .map(|(s, id)| {
-            let Some(space) = nrg.space(*id).filter(|sp| sp.kind == SpaceKind::Door) else {
-                return f64::INFINITY;
-            };
-            if let Some(w) = space.attributes.get("width_m").and_then(|v| v.as_f64()) {
-                return w;
-            }
-            let mut by_side: HashMap<u32, f64> = HashMap::new();
-            let openings = &mesh.openings;
-            for o in &openings.of_space[s] {
-                let other = openings.other_side(*o, s as u32);
-                *by_side.entry(other).or_default() +=
-                    openings.list[*o as usize].length(&mesh.gate_view());
-            }
-            by_side.values().copied().fold(0.0, f64::max)
+        .map(|id| {
+            nrg.space(*id)
+                .and_then(doorway)
+                .map_or(f64::INFINITY, |d| d.width_m)
         })
         .collect()
 }
@@ -307,8 +295,8 @@ impl NavMesh {
 }
 
 impl NavMesh {
-    /// The width of a door space as routing sees it: its `width_m`
-    /// attribute, else the length of its opening (infinite for other kinds).
+    /// The width of a door space as routing sees it: its width as
+    /// [`doorway`] defines it (infinite for other kinds).
     pub fn door_width(&self, id: SpaceId) -> f64 {
         self.exact
             .mesh

@@ -6,7 +6,7 @@ use axum::extract::{Path, State};
 use axum::http::Uri;
 use serde_json::{Map, Value, json};
 
-use crate::model::{Space, SpaceId, SpaceKind};
+use crate::model::{Space, SpaceId, SpaceKind, doorway};
 use crate::query::{IndexedRevision, Limits, Plan, QueryResult, Table, execute, like};
 use crate::server::endpoint::{ParamDoc, REV, q};
 use crate::server::error::ApiError;
@@ -41,9 +41,10 @@ pub const LOCATE_PARAMS: [ParamDoc; 3] = [
     REV,
 ];
 
-/// The short JSON form of a space: id, kind, name, label, anchor, area, degree.
+/// The short JSON form of a space: id, kind, name, label, anchor, area,
+/// degree, and for a door its width and doorway line.
 pub(crate) fn space_summary(s: &Space, rev: &IndexedRevision) -> Value {
-    json!({
+    let mut v = json!({
         "id": s.id,
         "kind": s.kind.as_str(),
         "name": s.name,
@@ -51,7 +52,12 @@ pub(crate) fn space_summary(s: &Space, rev: &IndexedRevision) -> Value {
         "anchor": s.anchor,
         "area_m2": s.area_m2,
         "degree": rev.graph.degree(s.id),
-    })
+    });
+    if let Some(d) = doorway(s) {
+        v["width_m"] = json!(d.width_m);
+        v["doorway"] = json!(d.line);
+    }
+    v
 }
 
 /// A table's rows as objects keyed by column.
