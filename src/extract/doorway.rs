@@ -1,8 +1,9 @@
 //! Doorway geometry, in pixels: where a door border crosses an opening,
-//! the opening's narrowest chord (its **throat**: the doorway line, from
-//! one jamb to the other) and how far the opening runs through the wall
-//! on either side of it (the door's depth, from one face of the wall to
-//! the other).
+//! the opening's narrowest chord (its **throat**: where the doorway is and
+//! which way it runs), how far the opening runs through the wall on
+//! either side of it (the door's depth, from one face of the wall to the
+//! other), and the doorway line: from one jamb to the other through the
+//! middle of the wall, as long as the median chord inside the wall.
 //!
 //! Coordinates are continuous pixel coordinates: pixel `(x, y)` covers
 //! `[x, x + 1) × [y, y + 1)`, row 0 at the top. Chords are traced cell by
@@ -347,11 +348,13 @@ fn throat(
 /// `max_depth` in all; each face lies halfway between the last such chord
 /// and the first that is not. Without both faces within `max_depth` the
 /// opening is a passage and the span has no depth. Then widened to
-/// `min_depth`.
+/// `min_depth`. The doorway line is the median-length chord inside the
+/// wall, moved to the middle of the span.
 fn span(free: &impl Fn(i64, i64) -> bool, th: &Throat, limits: &SpanLimits) -> DoorSpan {
     const STEP: f64 = 0.5;
     let (s_lo, s_hi) = th.s;
     let mut extent = [s_lo, s_hi];
+    let mut chords: Vec<(f64, f64)> = vec![(s_lo, s_hi)];
     // Per side (backwards, forwards): the last offset still inside the
     // wall, and the face once found.
     let mut reach = [0.0f64, 0.0f64];
@@ -372,6 +375,7 @@ fn span(free: &impl Fn(i64, i64) -> bool, th: &Throat, limits: &SpanLimits) -> D
                 Some((a, b)) => {
                     reach[side] = k * STEP;
                     extent = [extent[0].min(a), extent[1].max(b)];
+                    chords.push((a, b));
                 }
                 None => face[side] = Some(k * STEP - STEP / 2.0),
             }
@@ -390,6 +394,14 @@ fn span(free: &impl Fn(i64, i64) -> bool, th: &Throat, limits: &SpanLimits) -> D
         t_lo -= short / 2.0;
         t_hi += short / 2.0;
     }
+    // The opening's width: the median of its chords inside the wall (on
+    // slanted jambs the pixel steps make the single narrowest one short by
+    // up to a pixel; through a straight wall they are all equal).
+    chords.sort_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)));
+    let (a, b) = chords
+        .get(chords.len() / 2)
+        .copied()
+        .unwrap_or((s_lo, s_hi));
     let mid = (t_lo + t_hi) / 2.0;
     let at = |s: f64| {
         [
@@ -398,7 +410,7 @@ fn span(free: &impl Fn(i64, i64) -> bool, th: &Throat, limits: &SpanLimits) -> D
         ]
     };
     DoorSpan {
-        line: [at(s_lo), at(s_hi)],
+        line: [at(a), at(b)],
         origin: th.centre,
         u: th.u,
         n: th.n,
