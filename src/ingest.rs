@@ -8,7 +8,10 @@
 //!    never written to disk to be read back. [`read_path`] reads the files
 //!    (a map YAML and the image it names) and does the same. Sizes from
 //!    the input are bounded (file bytes, image pixels, resolution) and
-//!    errors name the file or part. Nothing is stored by this step.
+//!    errors name the file or part. The model passes the geometric gate
+//!    ([`validate`]: what `nrgdb check` checks, repaired where that keeps
+//!    the model's meaning, refused otherwise). Nothing is stored by this
+//!    step.
 //! 2. [`ingest`]: the one path from a model (read as above, or made by
 //!    applying a change set) into the store. Every navigable connection's
 //!    length becomes its walked length ([`crate::route::walked_model`])
@@ -32,9 +35,11 @@
 
 mod error;
 mod read;
+mod valid;
 
 pub use error::IngestError;
 pub use read::{IngestOptions, InputFile, Prepared, read, read_path};
+pub use valid::{Validated, findings, validate};
 
 use crate::grid::OccupancyGrid;
 use crate::model::Nrg;

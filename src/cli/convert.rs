@@ -6,7 +6,7 @@ use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr};
 use nrgdb::format::{self, Declared, FileKind, ModelFormat};
-use nrgdb::indoorgml;
+use nrgdb::{indoorgml, ingest};
 
 /// Arguments of `nrgdb convert`.
 #[derive(Debug, clap::Args)]
@@ -25,6 +25,10 @@ pub struct Args {
     /// Refuse input files larger than this many bytes.
     #[arg(long, default_value_t = indoorgml::DEFAULT_MAX_BYTES)]
     pub max_bytes: u64,
+    /// Write the output even when the model (or document) stays invalid
+    /// for `nrgdb check`; refused by default.
+    #[arg(long)]
+    pub allow_invalid: bool,
 }
 
 /// Runs `nrgdb convert`.
@@ -39,6 +43,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
             .into_diagnostic()
             .and_then(|text| indoorgml::read_str(text).into_diagnostic())
             .wrap_err_with(|| format!("cannot read {}", args.input.display()))?;
+        refuse_findings(&args, &indoorgml::check(&doc))?;
         indoorgml::write_file(&doc, &args.output).into_diagnostic()?;
         writeln!(
             out,
@@ -52,6 +57,10 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         return Ok(ExitCode::SUCCESS);
     }
     let (nrg, fixes) = format::model_from_bytes(&bytes, from, &args.input).into_diagnostic()?;
+    let label = args.input.display().to_string();
+    let valid = ingest::validate(nrg, &label, args.allow_invalid).into_diagnostic()?;
+    super::report_repairs(&label, &valid.repairs, &valid.kept);
+    let nrg = valid.nrg;
     format::write_model(&nrg, &args.output).into_diagnostic()?;
     super::report_fixes(&fixes, out)?;
     writeln!(
@@ -63,4 +72,27 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     )
     .into_diagnostic()?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// IndoorGML to IndoorGML copies the document as it is (3D geometry and
+/// all), so findings cannot be repaired there: refused unless
+/// `--allow-invalid`, which copies them along with a warning.
+fn refuse_findings(args: &Args, findings: &[indoorgml::Finding]) -> miette::Result<()> {
+    let Some(first) = findings.first() else {
+        return Ok(());
+    };
+    let input = args.input.display();
+    if args.allow_invalid {
+        eprintln!(
+            "warning: {input}: copied with {} finding(s) of `nrgdb check` (--allow-invalid); the first: {first}",
+            findings.len()
+        );
+        return Ok(());
+    }
+    miette::bail!(
+        help = "`nrgdb check {input}` lists them; convert to .json for a repaired 2D model, \
+                or give --allow-invalid to copy the document as it is",
+        "{input}: {} finding(s) of `nrgdb check`, the first: {first}; not written",
+        findings.len()
+    )
 }

@@ -129,8 +129,10 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
 
 /// A model file as a side of the comparison, labelled by its file name
 /// (a `.yaml` map extracted, keeping its grid).
+/// Invalid geometry is no reason not to compare: it is kept (repaired
+/// where it can be, and said).
 pub fn load_file(path: &Path) -> miette::Result<LoadedRevision> {
-    let model = load_model(path)?;
+    let model = load_model(path, true)?;
     Ok(LoadedRevision {
         label: path.file_name().map_or_else(
             || path.display().to_string(),

@@ -204,6 +204,10 @@ pub struct Args {
     /// Print each stage's time.
     #[arg(long)]
     pub timings: bool,
+    /// Write the model even when it stays geometrically invalid after
+    /// repair (`nrgdb check` would report it); refused by default.
+    #[arg(long)]
+    pub allow_invalid: bool,
 }
 
 /// One output of a batch extraction.
@@ -232,7 +236,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     };
     let spinner = progress::spinner(format!("extracting {}", map.display()));
     let (grid, params) = args.map.load(map)?;
-    let (x, walked) = extract_walked(&grid, &params, map)?;
+    let (x, walked) = extract_walked(&grid, &params, map, args.allow_invalid)?;
     spinner.finish_and_clear();
     // Encode everything before writing anything, so a failure leaves no half output.
     let gml = args
@@ -278,17 +282,23 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
-/// Extracts `grid` and gives its model walked connection lengths, with
-/// the walked paths for the IndoorGML output.
+/// Extracts `grid`, passes its model through the geometric gate (repairs
+/// are said on stderr; a model still invalid is refused unless
+/// `allow_invalid`) and gives it walked connection lengths, with the
+/// walked paths for the IndoorGML output.
 fn extract_walked(
     grid: &OccupancyGrid,
     params: &ExtractParams,
     map: &Path,
+    allow_invalid: bool,
 ) -> miette::Result<(Extraction, WalkedModel)> {
     let mut x = extract(grid, params)
         .into_diagnostic()
         .wrap_err_with(|| format!("{}: extraction failed", map.display()))?;
-    let walked = walked_model(&x.nrg);
+    let label = map.display().to_string();
+    let valid = nrgdb::ingest::validate(x.nrg, &label, allow_invalid).into_diagnostic()?;
+    super::report_repairs(&label, &valid.repairs, &valid.kept);
+    let walked = walked_model(&valid.nrg);
     x.nrg = walked.nrg.clone();
     Ok((x, walked))
 }
@@ -387,7 +397,7 @@ fn run_batch(args: &Args, inputs: &[PathBuf], out: &mut dyn Write) -> miette::Re
 /// Extracts one map of a batch and writes its outputs.
 fn extract_into(args: &Args, map: &Path, dir: &Path, stem: &str) -> miette::Result<Extraction> {
     let (grid, params) = args.map.load(map)?;
-    let (x, walked) = extract_walked(&grid, &params, map)?;
+    let (x, walked) = extract_walked(&grid, &params, map, args.allow_invalid)?;
     for format in &args.formats {
         match format {
             OutputFormat::Gml => write_out(

@@ -25,6 +25,10 @@ pub struct Args {
     /// Author recorded with the revision [default: $USER].
     #[arg(long, env = "NRGDB_AUTHOR")]
     pub author: Option<String>,
+    /// Store the model even when it stays geometrically invalid after
+    /// repair (`nrgdb check` would report it); refused by default.
+    #[arg(long)]
+    pub allow_invalid: bool,
     #[command(flatten)]
     pub db: DbArg,
 }
@@ -42,7 +46,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     } else {
         indicatif::ProgressBar::hidden()
     };
-    let model = load_model(&args.file)?;
+    let model = load_model(&args.file, args.allow_invalid)?;
     spinner.set_message(format!("storing {} spaces", model.nrg.spaces().len()));
     let meta = model.meta(args.message, author(args.author));
     let mut store = args.db.open()?;

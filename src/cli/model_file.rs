@@ -8,16 +8,39 @@ use std::path::Path;
 
 use miette::IntoDiagnostic;
 use nrgdb::format::ModelFormat;
-use nrgdb::indoorgml::WeightFixes;
+use nrgdb::indoorgml::{Finding, WeightFixes};
 use nrgdb::ingest::{IngestOptions, Prepared, read_path};
-use nrgdb::model::Nrg;
+use nrgdb::model::{Nrg, Repair};
 
 /// Reads a model: `.gml`/`.xml` (IndoorGML), `.json` (model JSON),
 /// `.geojson`, or `.yaml` (a ROS occupancy map with its image, extracted
 /// with default parameters), with the grid of a map and where it came from.
-pub fn load_model(path: &Path) -> miette::Result<Prepared> {
+/// A model that stays geometrically invalid after repair is refused
+/// unless `allow_invalid`; repairs are said on stderr.
+pub fn load_model(path: &Path, allow_invalid: bool) -> miette::Result<Prepared> {
+    let options = IngestOptions {
+        allow_invalid,
+        ..IngestOptions::default()
+    };
     // The errors name the file (and the part: its image, a line).
-    read_path(path, &IngestOptions::default()).into_diagnostic()
+    let model = read_path(path, &options).into_diagnostic()?;
+    report_repairs(&path.display().to_string(), &model.repairs, &model.kept);
+    Ok(model)
+}
+
+/// Says on stderr what the geometric gate repaired in the model read
+/// from `source`, and what it kept invalid because that was allowed.
+pub fn report_repairs(source: &str, repairs: &[Repair], kept: &[Finding]) {
+    for r in repairs {
+        eprintln!("warning: {source}: repaired {r}");
+    }
+    if !kept.is_empty() {
+        eprintln!(
+            "warning: {source}: kept with {} finding(s) of `nrgdb check` (--allow-invalid); the first: {}",
+            kept.len(),
+            kept[0]
+        );
+    }
 }
 
 /// Says how many IndoorGML Transition weights were fixed on reading, if any.

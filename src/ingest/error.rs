@@ -5,6 +5,7 @@ use std::path::PathBuf;
 use crate::extract::ExtractError;
 use crate::format::FormatError;
 use crate::grid::GridError;
+use crate::indoorgml::Finding;
 
 /// Why [`read`](super::read) or [`read_path`](super::read_path) failed.
 /// Every message names the file or the part.
@@ -68,4 +69,36 @@ pub enum IngestError {
     /// No file at all.
     #[error("no file given (a map YAML and its PGM or PNG image, or one model file)")]
     Nothing,
+    /// The model is geometrically invalid and the repairs that keep its
+    /// meaning could not fix it (see [`validate`](super::validate)).
+    #[error(
+        "{source_name}: {} geometric problem(s) that `nrgdb check` reports remain{}: {}{}; \
+         nrgdb does not store or write such a model (cells that overlap by more than a sliver \
+         without one lying inside the other, e.g. several floors drawn on one plane, cannot be \
+         repaired without guessing; --allow-invalid keeps the model as it is)",
+        findings.len(),
+        if *repaired > 0 { format!(" after {repaired} repair(s)") } else { String::new() },
+        first_findings(findings),
+        if findings.len() > SHOWN { format!("; and {} more", findings.len() - SHOWN) } else { String::new() }
+    )]
+    Invalid {
+        /// The file or upload the model came from.
+        source_name: String,
+        /// How many repairs were made before giving up.
+        repaired: usize,
+        /// What is still wrong.
+        findings: Vec<Finding>,
+    },
+}
+
+/// How many findings an [`IngestError::Invalid`] message lists.
+const SHOWN: usize = 3;
+
+fn first_findings(findings: &[Finding]) -> String {
+    findings
+        .iter()
+        .take(SHOWN)
+        .map(|f| format!("{} [{}]: {}", f.element, f.code, f.message))
+        .collect::<Vec<_>>()
+        .join("; ")
 }

@@ -8,11 +8,11 @@ use std::path::Path;
 use crate::extract::{ExtractParams, extract};
 use crate::format::{self, Declared, FileKind, ModelFormat};
 use crate::grid::{LoadOptions, MapYaml, OccupancyGrid, load_map_bytes};
-use crate::indoorgml::{DEFAULT_MAX_BYTES, WeightFixes};
-use crate::model::Nrg;
+use crate::indoorgml::{DEFAULT_MAX_BYTES, Finding, WeightFixes};
+use crate::model::{Nrg, Repair};
 use crate::store::{ImportMeta, sha256_hex_of};
 
-use super::IngestError;
+use super::{IngestError, validate};
 
 /// One file handed to [`read`]: its bytes and what is said about it.
 #[derive(Debug, Clone, Copy)]
@@ -46,6 +46,9 @@ pub struct IngestOptions {
     pub params: ExtractParams,
     /// Largest file [`read_path`] reads, in bytes (default 1 GiB).
     pub max_bytes: u64,
+    /// Keep a model that stays geometrically invalid after repair
+    /// instead of refusing it (see [`validate`]; default false).
+    pub allow_invalid: bool,
 }
 
 impl Default for IngestOptions {
@@ -54,6 +57,7 @@ impl Default for IngestOptions {
             load: LoadOptions::default(),
             params: ExtractParams::default(),
             max_bytes: DEFAULT_MAX_BYTES,
+            allow_invalid: false,
         }
     }
 }
@@ -70,6 +74,10 @@ pub struct Prepared {
     pub params: Option<ExtractParams>,
     /// IndoorGML Transitions whose missing or 0 weight was fixed.
     pub weights_fixed: WeightFixes,
+    /// Geometry repaired on the way in (see [`validate`]).
+    pub repairs: Vec<Repair>,
+    /// Check findings kept because `allow_invalid` was set.
+    pub kept: Vec<Finding>,
     /// The source's file names (`floor.yaml + floor.pgm` for a map).
     pub source_name: String,
     /// SHA-256 of the source's bytes (a map's YAML, then its image).
@@ -95,6 +103,9 @@ impl Prepared {
 /// (extracted with `options.params`), or one model file. Each file's
 /// format is told by [`format::detect`]; anything else (an image without
 /// its YAML, two models, a map and a model) is an error naming the files.
+/// The model passes the geometric gate ([`validate`]): repaired where
+/// that keeps its meaning, refused when still invalid (unless
+/// `options.allow_invalid`).
 ///
 /// ```
 /// use nrgdb::ingest::{IngestOptions, InputFile, read};
@@ -127,7 +138,7 @@ pub fn read(files: &[InputFile<'_>], options: &IngestOptions) -> Result<Prepared
     }
     match (yaml, image, model) {
         (Some(y), Some(i), None) => read_map(y, i, options),
-        (None, None, Some((format, f))) => read_model(f, format),
+        (None, None, Some((format, f))) => read_model(f, format, options),
         (Some(y), None, None) => Err(IngestError::MapWithoutImage {
             yaml: y.label().into(),
         }),
@@ -150,7 +161,7 @@ pub fn read_path(path: &Path, options: &IngestOptions) -> Result<Prepared, Inges
     let name = path.to_string_lossy();
     let file = InputFile::named(&name, &bytes);
     match format::detect(&file.declared, &bytes)? {
-        FileKind::Model(format) => read_model(&file, format),
+        FileKind::Model(format) => read_model(&file, format, options),
         FileKind::Image(_) => Err(IngestError::ImageWithoutMap { image: path.into() }),
         FileKind::MapYaml => {
             let text = format::utf8_text(&bytes, path, FileKind::MapYaml)?;
@@ -200,24 +211,34 @@ fn read_map(
         path: yaml_name.into(),
         source,
     })?;
+    let valid = validate(extraction.nrg, yaml.label(), options.allow_invalid)?;
     Ok(Prepared {
-        nrg: extraction.nrg,
+        nrg: valid.nrg,
         grid: Some(grid),
         params: Some(options.params.clone()),
         weights_fixed: WeightFixes::default(),
+        repairs: valid.repairs,
+        kept: valid.kept,
         source_name: format!("{} + {}", file_name(yaml.label()), file_name(image.label())),
         source_sha256: sha256_hex_of(&[yaml.bytes, image.bytes]),
     })
 }
 
-fn read_model(file: &InputFile<'_>, format: ModelFormat) -> Result<Prepared, IngestError> {
+fn read_model(
+    file: &InputFile<'_>,
+    format: ModelFormat,
+    options: &IngestOptions,
+) -> Result<Prepared, IngestError> {
     let (nrg, weights_fixed) =
         format::model_from_bytes(file.bytes, format, Path::new(file.label()))?;
+    let valid = validate(nrg, file.label(), options.allow_invalid)?;
     Ok(Prepared {
-        nrg,
+        nrg: valid.nrg,
         grid: None,
         params: None,
         weights_fixed,
+        repairs: valid.repairs,
+        kept: valid.kept,
         source_name: file_name(file.label()).to_string(),
         source_sha256: sha256_hex_of(&[file.bytes]),
     })

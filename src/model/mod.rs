@@ -15,6 +15,7 @@ mod geometry;
 mod graph;
 mod interior_point;
 mod nrg;
+mod repair;
 mod space;
 
 pub use connection::{Connection, ConnectionKind, ConnectionPaths};
@@ -26,4 +27,5 @@ pub use geometry::{
 pub use graph::ConnectivityGraph;
 pub use interior_point::pole_of_inaccessibility;
 pub use nrg::{MAX_COORD_M, MAX_NAME_CHARS, Nrg};
+pub use repair::{MIN_OVERLAP_M2, Repair, RepairKind, repair_geometry};
 pub use space::{Space, SpaceId, SpaceKind};

@@ -275,6 +275,8 @@ fn sample_313_zero_weights_are_fixed_on_import() {
             "t.db",
             "--map",
             "m",
+            // Two of its rooms overlap by 25 m²: refused without this.
+            "--allow-invalid",
             file.to_str().unwrap(),
         ],
     );
@@ -294,4 +296,52 @@ fn sample_313_zero_weights_are_fixed_on_import() {
         .load("m", None)
         .unwrap();
     assert!(stored.connections().iter().all(|c| c.length_m > 0.0));
+}
+
+/// Issue 19: converting a sample into a model file either refuses it (the
+/// cells overlap by more than slivers) and writes nothing, or writes a
+/// file that `nrgdb check` (with the OGC schema when xmllint is there)
+/// calls clean — whatever was repaired on the way.
+#[test]
+fn issue_19_sample_models_written_by_convert_check_clean_or_are_refused() {
+    let Some(files) = samples() else { return };
+    let out = tempfile::tempdir().unwrap();
+    let mut written = 0;
+    for file in files
+        .iter()
+        .filter(|f| !REFUSED.iter().any(|(n, _)| *n == name(f)))
+    {
+        let gml = out.path().join(name(file));
+        let convert = std::process::Command::new(env!("CARGO_BIN_EXE_nrgdb"))
+            .arg("convert")
+            .arg(file)
+            .arg(out.path().join("model.json"))
+            .output()
+            .unwrap();
+        if !convert.status.success() {
+            let said = String::from_utf8_lossy(&convert.stderr);
+            assert!(said.contains("cells-overlap"), "{}: {said}", name(file));
+            continue;
+        }
+        let back = std::process::Command::new(env!("CARGO_BIN_EXE_nrgdb"))
+            .arg("convert")
+            .arg(out.path().join("model.json"))
+            .arg(&gml)
+            .output()
+            .unwrap();
+        assert!(back.status.success(), "{}", name(file));
+        let check = std::process::Command::new(env!("CARGO_BIN_EXE_nrgdb"))
+            .arg("check")
+            .arg(&gml)
+            .output()
+            .unwrap();
+        let said = String::from_utf8_lossy(&check.stdout);
+        assert!(
+            check.status.success() && said.contains("clean"),
+            "{}: {said}",
+            name(file)
+        );
+        written += 1;
+    }
+    assert!(written >= 4, "most 2D samples convert: {written}");
 }

@@ -13,8 +13,7 @@ use super::super::convert::footprint;
 use super::super::document::{CellGeometry, Document, Target};
 use super::{Finding, finding};
 
-/// Overlaps smaller than this (m²) are rounding, not modelling errors.
-const MIN_OVERLAP_M2: f64 = 1e-4;
+use crate::model::MIN_OVERLAP_M2;
 
 struct Footprint<'a> {
     id: &'a str,
@@ -97,10 +96,14 @@ pub fn check_overlaps(doc: &Document, out: &mut Vec<Finding>) {
                         "cells-overlap",
                         b.id,
                         b.line,
-                        format!(
-                            "overlaps cell {} (line {}) by {area:.4} m² in the same layer",
-                            a.id, a.line
-                        ),
+                        if a.line > 0 {
+                            format!(
+                                "overlaps cell {} (line {}) by {area:.4} m² in the same layer",
+                                a.id, a.line
+                            )
+                        } else {
+                            format!("overlaps cell {} by {area:.4} m² in the same layer", a.id)
+                        },
                     ));
                 }
             }

@@ -12,6 +12,7 @@ use spade::handles::FixedVertexHandle;
 use spade::{ConstrainedDelaunayTriangulation, Point2, PositionInTriangulation, Triangulation};
 
 use super::gate::GateView;
+use super::noding;
 use super::openings::Openings;
 use crate::model::{Nrg, Point, Space, SpaceId, point_in_ring};
 
@@ -81,6 +82,24 @@ fn contains(space: &Space, p: Point) -> bool {
 /// Vertices are snapped to this grid (per metre): a micrometre.
 const SNAP_PER_M: f64 = 1.0e6;
 
+fn snap(p: Point) -> Point {
+    p.map(|c| (c * SNAP_PER_M).round() / SNAP_PER_M)
+}
+
+/// Constrained Delaunay triangulation of `points` with `edges` as
+/// constraints; edges crossing one already added go to `conflicts`.
+fn triangulate(
+    points: &[Point],
+    edges: Vec<[usize; 2]>,
+    conflicts: &mut Vec<[usize; 2]>,
+) -> ConstrainedDelaunayTriangulation<Point2<f64>> {
+    let vertices: Vec<Point2<f64>> = points.iter().map(|p| Point2::new(p[0], p[1])).collect();
+    ConstrainedDelaunayTriangulation::<Point2<f64>>::try_bulk_load_cdt(vertices, edges, |e| {
+        conflicts.push(e)
+    })
+    .unwrap_or_default()
+}
+
 /// Largest coordinate magnitude accepted (spade needs finite, bounded input;
 /// a building is far smaller).
 const MAX_COORD: f64 = 1.0e7;
@@ -104,7 +123,7 @@ impl Mesh {
                     .map(|p| {
                         // Points closer than a micrometre are one vertex
                         // (sums like 14.6 + 0.1 differ in the last bit).
-                        let snapped = p.map(|c| (c * SNAP_PER_M).round() / SNAP_PER_M);
+                        let snapped = snap(*p);
                         let key = snapped.map(f64::to_bits);
                         *vertex_of.entry(key).or_insert_with(|| {
                             points.push(snapped);
@@ -122,23 +141,32 @@ impl Mesh {
         }
         edges.sort_unstable();
         edges.dedup();
-        let vertices: Vec<Point2<f64>> = points.iter().map(|p| Point2::new(p[0], p[1])).collect();
         let mut conflicts = Vec::new();
-        let mut cdt = ConstrainedDelaunayTriangulation::<Point2<f64>>::try_bulk_load_cdt(
-            vertices,
-            edges,
-            |e| conflicts.push(e),
-        )
-        .unwrap_or_default();
-        // Edges crossing others (overlapping or touching polygons of an
-        // imported model) are added split at the crossings.
-        for [a, b] in conflicts {
-            if a < cdt.num_vertices() && b < cdt.num_vertices() {
-                cdt.add_constraint_and_split(
-                    FixedVertexHandle::from_index(a),
-                    FixedVertexHandle::from_index(b),
-                    |p| p,
-                );
+        let mut cdt = triangulate(&points, edges.clone(), &mut conflicts);
+        if !conflicts.is_empty() {
+            // Edges crossing others (overlapping or touching rings of an
+            // imported model, a repaired overlap): node them ourselves and
+            // triangulate again (see `noding`).
+            let noded = noding::node(
+                &edges,
+                &mut noding::Vertices {
+                    points: &mut points,
+                    index: &mut vertex_of,
+                    snap,
+                },
+            );
+            conflicts.clear();
+            cdt = triangulate(&points, noded, &mut conflicts);
+            // What noding could not resolve (a crossing its snapping made)
+            // is added where it does not cross; never split by spade,
+            // which can panic there.
+            for [a, b] in conflicts {
+                if a < cdt.num_vertices() && b < cdt.num_vertices() {
+                    cdt.try_add_constraint(
+                        FixedVertexHandle::from_index(a),
+                        FixedVertexHandle::from_index(b),
+                    );
+                }
             }
         }
         let points: Vec<Point> = cdt

@@ -20,6 +20,7 @@ mod funnel;
 mod gate;
 pub(crate) mod layer;
 pub(crate) mod mesh;
+mod noding;
 mod openings;
 mod search;
 

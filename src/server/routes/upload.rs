@@ -112,7 +112,7 @@ pub async fn upload(
         .to_string();
     let mut message = p.get("message").unwrap_or("").to_string();
     let mut author = p.get("author").unwrap_or("nrgdb serve").to_string();
-    let (done, weights_fixed) = state
+    let (done, weights_fixed, repairs) = state
         .blocking(move |ctx| {
             let parts;
             let files = match multipart::boundary(&content_type) {
@@ -131,7 +131,8 @@ pub async fn upload(
                 meta,
                 prepared.grid.as_ref(),
             )?;
-            Ok((done.imported, prepared.weights_fixed.total()))
+            let repairs: Vec<String> = prepared.repairs.iter().map(|r| r.to_string()).collect();
+            Ok((done.imported, prepared.weights_fixed.total(), repairs))
         })
         .await?;
     let info = &done.revision;
@@ -146,7 +147,12 @@ pub async fn upload(
     let location = format!("/maps/{}/revisions/{}/geojson", info.map, info.seq);
     let mut response = (
         StatusCode::CREATED,
-        Json(json!({ "revision": info, "ids": ids, "weights_fixed": weights_fixed })),
+        Json(json!({
+            "revision": info,
+            "ids": ids,
+            "weights_fixed": weights_fixed,
+            "repairs": repairs,
+        })),
     )
         .into_response();
     if let Ok(v) = HeaderValue::from_str(&location) {
