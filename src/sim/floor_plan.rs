@@ -4,7 +4,6 @@
 use serde_json::Value;
 
 use super::SimError;
-use super::layout;
 use crate::model::{Connection, ConnectionKind, Nrg, Point, Ring, Space, SpaceId, SpaceKind};
 
 /// A wall as a line segment in metres.
@@ -169,20 +168,6 @@ pub struct FloorPlan {
 }
 
 impl FloorPlan {
-    /// Generates a plan from `params` (deterministic in `params.seed`).
-    ///
-    /// ```
-    /// use nrgdb::sim::{FloorPlan, FloorPlanParams};
-    /// let plan = FloorPlan::generate(&FloorPlanParams::new(3))?;
-    /// assert!(!plan.rooms.is_empty());
-    /// assert_eq!(plan, FloorPlan::generate(&FloorPlanParams::new(3))?);
-    /// # Ok::<(), nrgdb::sim::SimError>(())
-    /// ```
-    pub fn generate(params: &FloorPlanParams) -> Result<FloorPlan, SimError> {
-        params.validate()?;
-        Ok(layout::layout(params))
-    }
-
     /// Every wall as a segment: the space outlines with door faces and
     /// corridor openings cut out, plus the furniture outlines.
     pub fn walls(&self) -> Vec<Segment> {

@@ -6,6 +6,7 @@
 use std::f64::consts::FRAC_PI_2;
 
 use super::floor_plan::{Door, FloorPlan, FloorPlanParams, Opening, SpaceRef};
+use super::SimError;
 use super::prng::SplitMix64;
 use super::separation::separation_gap;
 use crate::model::{Point, Ring};
@@ -61,7 +62,23 @@ struct Slot {
 }
 
 /// Builds the plan (parameters already validated).
-pub(super) fn layout(p: &FloorPlanParams) -> FloorPlan {
+impl FloorPlan {
+    /// Generates a plan from `params` (deterministic in `params.seed`).
+    ///
+    /// ```
+    /// use nrgdb::sim::{FloorPlan, FloorPlanParams};
+    /// let plan = FloorPlan::generate(&FloorPlanParams::new(3))?;
+    /// assert!(!plan.rooms.is_empty());
+    /// assert_eq!(plan, FloorPlan::generate(&FloorPlanParams::new(3))?);
+    /// # Ok::<(), nrgdb::sim::SimError>(())
+    /// ```
+    pub fn generate(params: &FloorPlanParams) -> Result<FloorPlan, SimError> {
+        params.validate()?;
+        Ok(layout(params))
+    }
+}
+
+fn layout(p: &FloorPlanParams) -> FloorPlan {
     let mut rng = SplitMix64::new(p.seed);
     let t = p.wall_thickness_m;
     let w = rng.range(p.corridor_width_m.0, p.corridor_width_m.1);
