@@ -104,7 +104,8 @@ pub async fn query(
     // 503 (`server::timeout`), so the statements stop too.
     let deadline = std::time::Instant::now().checked_add(state.config().timeout);
     let p = Params::parse(&uri, &["map", "rev"])?;
-    let bytes = read_limited(&headers, body, state.config().max_body_bytes).await?;
+    let config = state.config();
+    let bytes = read_limited(&headers, body, config.max_body_bytes, config.body_timeout).await?;
     let is_json = headers
         .get(header::CONTENT_TYPE)
         .and_then(|v| v.to_str().ok())
