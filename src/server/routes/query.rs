@@ -182,11 +182,13 @@ pub async fn query(
                 }
                 None => session.use_default_map()?,
             }
-            let results: Vec<Value> = session
-                .execute(&text)?
-                .into_iter()
-                .map(result_json)
-                .collect();
+            let results = session.execute(&text)?;
+            // Past the deadline the client has its 503: rendering the
+            // finished statements' rows would be work for nobody.
+            if limits.past_deadline() {
+                return Err(ApiError::Timeout(limits.timeout.as_millis()));
+            }
+            let results: Vec<Value> = results.into_iter().map(result_json).collect();
             let current = session
                 .current()
                 .map(|c| json!({"map": c.map, "revision": c.revision}));
