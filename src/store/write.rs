@@ -36,12 +36,13 @@ impl Store {
     /// extracted from (see [`Store::grid`]), in the same transaction.
     ///
     /// Matching against the parent revision is the expensive part, so it
-    /// runs before the write lock is taken, on a snapshot of the map (issue
-    /// 21, defect 3: it ran inside `BEGIN IMMEDIATE` and every other writer
-    /// got "busy"). Under the lock the import checks that the revision it
-    /// matched against is still the latest; if another writer got in first
-    /// it matches again, at most [`MAX_IMPORT_ATTEMPTS`] times, then fails
-    /// with [`StoreError::MapChanged`].
+    /// (like encoding the grid) runs before the write lock is taken, on a
+    /// snapshot of the map (issue 21, defect 3: it ran inside `BEGIN
+    /// IMMEDIATE` and every other writer got "busy"). Under the lock the
+    /// import checks that the revision it matched against is still the
+    /// latest; if another writer got in first it matches again, at most
+    /// [`MAX_IMPORT_ATTEMPTS`] times, then fails with
+    /// [`StoreError::MapChanged`].
     pub fn import_with_grid(
         &mut self,
         map: &str,
@@ -51,6 +52,7 @@ impl Store {
     ) -> Result<Imported, StoreError> {
         check_map_name(map)?;
         check_meta(&meta)?;
+        let grid = grid.map(super::grids::encode_grid).transpose()?;
         for _ in 0..MAX_IMPORT_ATTEMPTS {
             let prepared = self
                 .prepare_import(map, nrg)
@@ -60,7 +62,7 @@ impl Store {
                 hook();
             }
             let done = self
-                .commit_import(map, prepared, &meta, grid)
+                .commit_import(map, prepared, &meta, grid.as_ref())
                 .map_err(|e| e.in_file(&self.path))?;
             if let Some(imported) = done {
                 return Ok(imported);
@@ -117,7 +119,7 @@ impl Store {
         map: &str,
         prepared: PreparedImport,
         meta: &ImportMeta,
-        grid: Option<&crate::grid::OccupancyGrid>,
+        grid: Option<&super::grids::EncodedGrid<'_>>,
     ) -> Result<Option<Imported>, StoreError> {
         let tx = self
             .conn
