@@ -10,8 +10,9 @@
 //! each response, so the same bound drops idle keep-alive connections.
 //! Request bodies are bounded by [`ServerConfig::body_timeout`] where they
 //! are read (`server/body.rs`), the whole request by
-//! [`ServerConfig::timeout`] (`server/timeout.rs`). HTTP/1.1 only (hyper),
-//! as `axum::serve` built here served.
+//! [`ServerConfig::timeout`] (`server/timeout.rs`). HTTP/1.1 only, as
+//! before: `axum::serve`, which this replaces, was built without HTTP/2
+//! and sets no timer, so hyper's header timeout never ran.
 
 use std::future::Future;
 use std::pin::pin;
