@@ -196,6 +196,7 @@ impl From<StoreError> for ApiError {
             StoreError::BadMapName { .. } => ApiError::bad("map", e.to_string()),
             StoreError::TooLong { field, .. } => ApiError::bad(field, e.to_string()),
             StoreError::Model(m) => ApiError::BadUpload(m.to_string()),
+            StoreError::TooManyOverlaps { .. } => ApiError::BadUpload(e.to_string()),
             // Another writer kept adding revisions while this import was
             // matched: retrying later is the answer, as for a held lock.
             StoreError::Busy | StoreError::MapChanged { .. } => ApiError::Busy,

@@ -122,6 +122,16 @@ pub enum StoreError {
         /// How many times the import was matched.
         attempts: usize,
     },
+    /// The imported model's spaces overlap the parent revision's too much
+    /// to be matched in bounded time (spaces piled on each other).
+    #[error(
+        "cannot match this model to the map's latest revision: more than {limit} pairs of \
+         their spaces overlap (are spaces piled on each other?); nothing was stored"
+    )]
+    TooManyOverlaps {
+        /// The bound on overlapping pairs.
+        limit: usize,
+    },
     /// Any other SQLite error.
     #[error("sqlite: {0}")]
     Sqlite(rusqlite::Error),

@@ -12,7 +12,7 @@ use rusqlite::{Connection, OptionalExtension, TransactionBehavior, params};
 
 use super::read::{REVISION_COLUMNS, latest, load_at, map_id, revision_info};
 use super::{ImportMeta, Imported, RevisionInfo, Store, StoreError, geometry_blob};
-use crate::diff::{MatchParams, match_spaces};
+use crate::diff::{MatchParams, match_spaces_within};
 use crate::model::{Connection as Link, Nrg, Space, SpaceId};
 
 impl Store {
@@ -221,6 +221,12 @@ impl Store {
 /// [`StoreError::MapChanged`].
 pub const MAX_IMPORT_ATTEMPTS: usize = 3;
 
+/// Pairs of spaces (one of the parent revision, one of the import) whose
+/// boxes meet that an import measures at most to match them: a revision
+/// of 20 000 spaces meets about ten times as many; 20 000 piled over
+/// 20 000 would be 400 million (issue 21, defect 8).
+pub const MAX_MATCH_PAIRS: usize = 2_000_000;
+
 /// An import matched against its parent revision, ready to be written
 /// (made without the write lock).
 struct PreparedImport {
@@ -300,10 +306,12 @@ fn continue_identity(
     params: &MatchParams,
     mut next: u32,
 ) -> Result<(Nrg, BTreeMap<SpaceId, SpaceId>), StoreError> {
-    let mut ids: BTreeMap<SpaceId, SpaceId> = match_spaces(parent, new, params)
-        .into_iter()
-        .map(|m| (m.new, m.old))
-        .collect();
+    let matches = match_spaces_within(parent, new, params, MAX_MATCH_PAIRS).ok_or(
+        StoreError::TooManyOverlaps {
+            limit: MAX_MATCH_PAIRS,
+        },
+    )?;
+    let mut ids: BTreeMap<SpaceId, SpaceId> = matches.into_iter().map(|m| (m.new, m.old)).collect();
     for s in new.spaces() {
         if let std::collections::btree_map::Entry::Vacant(e) = ids.entry(s.id) {
             e.insert(SpaceId(next));
@@ -595,6 +603,29 @@ mod tests {
         let revs = store.revisions("m").unwrap();
         assert_eq!(revs.len(), 1 + MAX_IMPORT_ATTEMPTS);
         assert!(revs.iter().all(|r| r.message == "test"));
+    }
+
+    /// Issue 21, defect 8: 20 000 piled cells imported over a revision of
+    /// piled cells took 11 min and 4.5 GB to match; past
+    /// [`MAX_MATCH_PAIRS`] overlapping pairs the import is refused at once,
+    /// storing nothing.
+    #[test]
+    fn issue_21_defect_8_a_pile_over_a_pile_is_refused() {
+        let pile = |n: u32, dx: f64| {
+            let square = vec![[dx, 0.0], [dx + 2.0, 0.0], [dx + 2.0, 2.0], [dx, 2.0]];
+            let spaces = (1..=n)
+                .map(|k| Space::new(SpaceId(k), SpaceKind::Room, [dx + 1.0, 1.0], square.clone()))
+                .collect();
+            Nrg::new(spaces, vec![]).unwrap()
+        };
+        let mut store = Store::open_in_memory().unwrap();
+        store.import("piles", &pile(1_500, 0.0), meta()).unwrap();
+        let e = store
+            .import("piles", &pile(1_500, 0.1), meta())
+            .unwrap_err();
+        assert!(matches!(e, StoreError::TooManyOverlaps { .. }), "{e:?}");
+        assert!(e.to_string().contains("piled"), "{e}");
+        assert_eq!(store.revisions("piles").unwrap().len(), 1);
     }
 
     /// Issue 21, defect 10: a full disk said "Error code 4874: disk I/O
