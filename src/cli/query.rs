@@ -101,6 +101,7 @@ pub fn open_session(args: &SourceArgs) -> miette::Result<Session<Box<dyn Source>
     session.set_limits(Limits {
         timeout: Duration::from_millis(args.timeout_ms),
         max_rows: args.max_rows,
+        deadline: None,
     });
     Ok(session)
 }

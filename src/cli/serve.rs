@@ -39,6 +39,19 @@ pub struct Args {
     /// Revisions kept indexed in memory.
     #[arg(long, default_value_t = 64, value_name = "N")]
     pub cache_revisions: usize,
+    /// Time a client has to send a request's head, in milliseconds, from
+    /// when it connects or got its previous answer: slow and idle
+    /// connections are closed past it.
+    #[arg(long, default_value_t = 10_000, value_name = "MS")]
+    pub header_timeout_ms: u64,
+    /// Time a client has to send a request's body (uploads too), in
+    /// milliseconds (408 past it).
+    #[arg(long, default_value_t = 60_000, value_name = "MS")]
+    pub body_timeout_ms: u64,
+    /// Connections open at once at most; further clients wait to be
+    /// accepted.
+    #[arg(long, default_value_t = 512, value_name = "N")]
+    pub max_connections: usize,
 }
 
 /// Runs `nrgdb serve` until a signal stops it.
@@ -47,8 +60,19 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     use miette::IntoDiagnostic;
     use nrgdb::server::{AppState, ServerConfig, bind, serve_on, shutdown_signal};
 
-    if args.timeout_ms == 0 || args.max_upload_mb == 0 {
-        miette::bail!("--timeout-ms and --max-upload-mb must be at least 1");
+    if [
+        args.timeout_ms,
+        args.header_timeout_ms,
+        args.body_timeout_ms,
+    ]
+    .contains(&0)
+        || args.max_upload_mb == 0
+        || args.max_connections == 0
+    {
+        miette::bail!(
+            "--timeout-ms, --header-timeout-ms, --body-timeout-ms, --max-upload-mb and \
+             --max-connections must be at least 1"
+        );
     }
     let mut config = ServerConfig::new(args.db.db.clone());
     config.addr = args.addr;
@@ -57,6 +81,9 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     config.max_upload_bytes = args.max_upload_mb.saturating_mul(1 << 20);
     config.timeout = std::time::Duration::from_millis(args.timeout_ms);
     config.cache_revisions = args.cache_revisions;
+    config.header_timeout = std::time::Duration::from_millis(args.header_timeout_ms);
+    config.body_timeout = std::time::Duration::from_millis(args.body_timeout_ms);
+    config.max_connections = args.max_connections;
     let runtime = tokio::runtime::Runtime::new().into_diagnostic()?;
     runtime.block_on(async {
         let listener = bind(config.addr).await.into_diagnostic()?;

@@ -57,7 +57,10 @@ pub use change_set::{
 pub use compare::{Comparison, MODEL_GRID_M, Revision, compare, model_grid};
 pub use detect::diff;
 pub use error::DiffError;
-pub use matching::{SpaceMatch, match_overlaps, match_spaces, overlap_iou, overlaps};
+pub use matching::{
+    MAX_OPTIMAL_COMPONENT, SpaceMatch, match_overlaps, match_spaces, match_spaces_within,
+    overlap_iou, overlaps,
+};
 pub use overlaps::Overlaps;
 pub use params::{AlignMode, AlignParams, DiffOptions, DiffParams, MatchParams};
 pub use report::ChangeRow;

@@ -13,7 +13,7 @@ use crate::model::{Point, SpaceId};
 /// whose polygons share area, with both areas (holes excluded); and, for
 /// the doors, their doorway lines and how much of each lies inside the
 /// other model's non-door spaces.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct Overlaps {
     /// Ids of the old model's spaces (in its order).
     pub old_ids: Vec<SpaceId>,

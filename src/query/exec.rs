@@ -2,7 +2,7 @@
 //! LOCATE and REACHABLE, within the time and size bounds of [`Limits`].
 
 use std::collections::VecDeque;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use super::error::QueryError;
 use super::filter::{field_value, matches, order_values};
@@ -12,13 +12,19 @@ use super::result::{Cell, QueryResult, Table};
 use crate::model::{Doorway, Space, SpaceId, SpaceKind, doorway};
 use crate::route::{Budget, RouteError, no_route_reason, reachable_within, shortest_route};
 
-/// Bounds on one statement: wall-clock time and rows returned.
+/// Bounds on the work of statements: wall-clock time per statement, a
+/// deadline for all of them, and rows returned.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Limits {
     /// Time bound per statement (default 5 s).
     pub timeout: Duration,
     /// Most rows (or routes) a statement may return (default 10 000).
     pub max_rows: usize,
+    /// When all work stops (default none): statements not yet started
+    /// fail with [`QueryError::Timeout`] without running, and running ones
+    /// stop at their next check (a server request's deadline; issue 21,
+    /// defect 7: a request kept computing 24 s past its 503).
+    pub deadline: Option<Instant>,
 }
 
 impl Default for Limits {
@@ -26,7 +32,20 @@ impl Default for Limits {
         Limits {
             timeout: Duration::from_secs(5),
             max_rows: 10_000,
+            deadline: None,
         }
+    }
+}
+
+impl Limits {
+    /// Whether the deadline has passed.
+    pub fn past_deadline(&self) -> bool {
+        self.deadline.is_some_and(|d| Instant::now() >= d)
+    }
+
+    /// The time-bound error of these limits.
+    pub fn timeout_error(&self) -> QueryError {
+        QueryError::Timeout(self.timeout.as_millis())
     }
 }
 
@@ -67,7 +86,7 @@ pub fn execute(
     rev: &IndexedRevision,
     limits: &Limits,
 ) -> Result<QueryResult, QueryError> {
-    let budget = Budget::new(limits.timeout);
+    let budget = Budget::within(limits.timeout, limits.deadline);
     let result = match plan {
         Plan::Route(request) => {
             let routes = shortest_route(&rev.nav, request, &budget).map_err(|e| match e {

@@ -42,10 +42,16 @@ impl<S: Source> Session<S> {
     /// A session on the latest revision of the first map (by name), if any.
     pub fn with_default_map(source: S) -> Result<Session<S>, QueryError> {
         let mut session = Session::new(source);
-        if let Some(first) = session.source.maps()?.into_iter().next() {
-            session.use_map(&first.name, None)?;
-        }
+        session.use_default_map()?;
         Ok(session)
+    }
+
+    /// Selects the latest revision of the first map (by name), if any.
+    pub fn use_default_map(&mut self) -> Result<(), QueryError> {
+        if let Some(first) = self.source.maps()?.into_iter().next() {
+            self.use_map(&first.name, None)?;
+        }
+        Ok(())
     }
 
     /// Replaces the limits.
@@ -70,11 +76,18 @@ impl<S: Source> Session<S> {
 
     /// Selects `map` at `revision` (latest when `None`); returns a message.
     pub fn use_map(&mut self, map: &str, revision: Option<u64>) -> Result<String, QueryError> {
+        if self.limits.past_deadline() {
+            return Err(self.limits.timeout_error());
+        }
         let revision = match revision {
             Some(r) => r,
             None => self.source.revisions(map)?.last().map_or(1, |r| r.revision),
         };
         let nrg = self.source.load(map, revision)?;
+        // Indexing a large revision takes a while: not once the time is up.
+        if self.limits.past_deadline() {
+            return Err(self.limits.timeout_error());
+        }
         let rev = IndexedRevision::new(map, revision, nrg);
         let message = format!(
             "using map '{map}' at revision {revision} ({} spaces, {} connections)",
@@ -94,8 +107,12 @@ impl<S: Source> Session<S> {
         )
     }
 
-    /// Plans and runs one statement.
+    /// Plans and runs one statement; past the deadline of the limits it
+    /// fails with [`QueryError::Timeout`] without doing any work.
     pub fn execute_statement(&mut self, statement: &Statement) -> Result<QueryResult, QueryError> {
+        if self.limits.past_deadline() {
+            return Err(self.limits.timeout_error());
+        }
         let planned = self.plan(statement)?;
         self.execute_plan(&planned)
     }
@@ -160,7 +177,9 @@ impl<S: Source> Session<S> {
 
     /// Parses `text` and runs each statement in order. A syntax error fails
     /// the whole text (nothing runs); a statement's own error is kept in
-    /// its slot and the following statements still run.
+    /// its slot and the following statements still run. Once the deadline
+    /// of the limits has passed, the remaining slots hold
+    /// [`QueryError::Timeout`] and nothing more runs.
     pub fn execute(
         &mut self,
         text: &str,
@@ -223,4 +242,118 @@ fn table(names: &[&str], rows: Vec<Vec<Cell>>) -> QueryResult {
         columns: names.iter().map(|s| (*s).to_string()).collect(),
         rows,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use std::cell::Cell as Counter;
+    use std::time::{Duration, Instant};
+
+    use super::*;
+    use crate::grid::OccupancyGrid;
+    use crate::model::{Nrg, SpaceId};
+    use crate::query::{Limits, MapInfo, MemorySource, RevisionInfo, SourceError, demo};
+
+    /// A source counting every call that reaches it.
+    struct Counting {
+        inner: MemorySource,
+        calls: Counter<usize>,
+    }
+
+    impl Counting {
+        fn tick(&self) {
+            self.calls.set(self.calls.get() + 1);
+        }
+    }
+
+    impl Source for Counting {
+        fn maps(&self) -> Result<Vec<MapInfo>, SourceError> {
+            self.tick();
+            self.inner.maps()
+        }
+        fn revisions(&self, map: &str) -> Result<Vec<RevisionInfo>, SourceError> {
+            self.tick();
+            self.inner.revisions(map)
+        }
+        fn load(&self, map: &str, revision: u64) -> Result<Nrg, SourceError> {
+            self.tick();
+            self.inner.load(map, revision)
+        }
+        fn grid(&self, map: &str, revision: u64) -> Result<Option<OccupancyGrid>, SourceError> {
+            self.tick();
+            self.inner.grid(map, revision)
+        }
+        fn rename_space(
+            &mut self,
+            map: &str,
+            revision: u64,
+            id: SpaceId,
+            name: &str,
+        ) -> Result<u64, SourceError> {
+            self.tick();
+            self.inner.rename_space(map, revision, id, name)
+        }
+    }
+
+    fn session(segments: usize) -> Session<Counting> {
+        let mut inner = MemorySource::new();
+        inner.insert("demo", demo::building(segments));
+        let source = Counting {
+            inner,
+            calls: Counter::new(0),
+        };
+        Session::with_default_map(source).unwrap()
+    }
+
+    /// Issue 21, defect 7: a request of many statements kept computing
+    /// long after its deadline. Once the deadline has passed no statement
+    /// starts: every slot is a time-out and the source is never asked.
+    #[test]
+    fn issue_21_defect_7_no_statement_starts_after_the_deadline() {
+        let mut s = session(3);
+        s.set_limits(Limits {
+            deadline: Some(Instant::now()),
+            ..Limits::default()
+        });
+        let before = s.source().calls.get();
+        let text = "SHOW MAPS; USE demo; DIFF 1 1; NAME 3 AS \"x\"; FIND rooms; ROUTE FROM 3 TO 5;";
+        let results = s.execute(text).unwrap();
+        assert_eq!(results.len(), 6);
+        for r in results {
+            assert!(matches!(r, Err(QueryError::Timeout(5000))), "{r:?}");
+        }
+        assert_eq!(s.source().calls.get(), before);
+        assert!(s.use_map("demo", None).is_err());
+    }
+
+    /// Issue 21, defect 7: a statement running when the deadline passes
+    /// stops at its next check, even when its own bound is far away (FIND
+    /// over thousands of spaces, a walk over the whole building).
+    #[test]
+    fn issue_21_defect_7_running_statements_stop_at_the_deadline() {
+        let mut s = session(2_000);
+        let mut limits = Limits {
+            timeout: Duration::from_secs(3_600),
+            max_rows: usize::MAX,
+            deadline: None,
+        };
+        s.set_limits(limits);
+        assert!(
+            s.execute_statement(&parse("FIND spaces").unwrap()[0])
+                .is_ok()
+        );
+        limits.deadline = Some(Instant::now());
+        s.set_limits(limits);
+        for text in [
+            "FIND spaces",
+            "REACHABLE FROM 3 WITHIN 100000",
+            "NEIGHBOURS OF 3 DEPTH 100000",
+        ] {
+            let statement = parse(text).unwrap().remove(0);
+            let planned = s.plan(&statement).unwrap();
+            let current = s.current().unwrap();
+            let e = super::super::exec::execute(&planned, current, &limits).unwrap_err();
+            assert!(matches!(e, QueryError::Timeout(3_600_000)), "{text}: {e}");
+        }
+    }
 }

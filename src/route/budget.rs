@@ -25,12 +25,28 @@ impl Budget {
 
     /// A bound of `limit` from now.
     pub fn new(limit: Duration) -> Budget {
-        Budget {
-            deadline: Instant::now().checked_add(limit),
+        Budget::within(limit, None)
+    }
+
+    /// A bound of `limit` from now, cut short at `deadline` when that
+    /// comes first (a request's deadline over several statements). A
+    /// deadline already passed expires at the first check.
+    pub fn within(limit: Duration, deadline: Option<Instant>) -> Budget {
+        let own = Instant::now().checked_add(limit);
+        let deadline = match (own, deadline) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        };
+        let budget = Budget {
+            deadline,
             limit,
             calls: Cell::new(0),
             expired: Cell::new(false),
+        };
+        if budget.deadline.is_some_and(|d| Instant::now() >= d) {
+            budget.expired.set(true);
         }
+        budget
     }
 
     /// Whether the deadline has passed (sticky once true).
@@ -70,5 +86,17 @@ mod tests {
         let expired = (0..1000).any(|_| b.check());
         assert!(expired && b.is_expired());
         assert!(!(0..1000).any(|_| Budget::unlimited().check()));
+    }
+
+    /// Issue 21, defect 7: the earlier of the own bound and the request's
+    /// deadline wins; a passed deadline stops work at the first check.
+    #[test]
+    fn issue_21_defect_7_a_passed_deadline_expires_at_once() {
+        let passed = Some(Instant::now());
+        let b = Budget::within(Duration::from_secs(3600), passed);
+        assert!(b.check() && b.limit_ms() == 3_600_000);
+        let later = Instant::now().checked_add(Duration::from_secs(3600));
+        assert!(!Budget::within(Duration::from_secs(3600), later).check());
+        assert!(Budget::within(Duration::ZERO, later).check());
     }
 }

@@ -1,17 +1,22 @@
-//! Reading a request body with a size limit: a declared `Content-Length`
-//! above it is refused before reading, a body that grows past it while
-//! streaming too (413 either way).
+//! Reading a request body with a size limit and a time limit: a declared
+//! `Content-Length` above the size is refused before reading, a body that
+//! grows past it while streaming too (413 either way); a body that has not
+//! all arrived in time is a 408 (issue 21, defect 9: slow clients held
+//! connections for ever).
+
+use std::time::Duration;
 
 use axum::body::{Body, Bytes};
 use axum::http::{HeaderMap, header};
 
 use super::error::ApiError;
 
-/// The whole body, at most `limit` bytes.
+/// The whole body, at most `limit` bytes, arrived within `time`.
 pub async fn read_limited(
     headers: &HeaderMap,
     body: Body,
     limit: usize,
+    time: Duration,
 ) -> Result<Bytes, ApiError> {
     let declared = headers
         .get(header::CONTENT_LENGTH)
@@ -20,7 +25,9 @@ pub async fn read_limited(
     if declared.is_some_and(|n| n > limit as u64) {
         return Err(ApiError::TooLarge { limit });
     }
-    axum::body::to_bytes(body, limit).await.map_err(|e| {
+    let read = tokio::time::timeout(time, axum::body::to_bytes(body, limit)).await;
+    let read = read.map_err(|_| ApiError::BodyTimeout(time.as_millis()))?;
+    read.map_err(|e| {
         // axum wraps http-body-util's LengthLimitError ("length limit exceeded").
         if e.to_string().contains("length limit") {
             ApiError::TooLarge { limit }

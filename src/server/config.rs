@@ -6,7 +6,8 @@ use std::time::Duration;
 
 /// Everything [`super::serve`] needs. [`ServerConfig::new`] gives the safe
 /// defaults: loopback only, read-only, no CORS, 32 MiB uploads, 10 s per
-/// request.
+/// request, 10 s to send a request head, 60 s to send a body, 512
+/// connections.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ServerConfig {
     /// The nrgdb database (created if missing).
@@ -25,6 +26,15 @@ pub struct ServerConfig {
     pub timeout: Duration,
     /// Revisions kept indexed in memory at most.
     pub cache_revisions: usize,
+    /// Time a client has to send a request's head, counted from when the
+    /// connection opens or its previous response was sent: slow or idle
+    /// connections are closed past it.
+    pub header_timeout: Duration,
+    /// Time a client has to send a request's body (uploads included; 408
+    /// past it).
+    pub body_timeout: Duration,
+    /// Connections open at once at most; more wait to be accepted.
+    pub max_connections: usize,
 }
 
 /// The default listening address.
@@ -47,6 +57,9 @@ impl ServerConfig {
             max_body_bytes: 1 << 20,
             timeout: Duration::from_secs(10),
             cache_revisions: 64,
+            header_timeout: Duration::from_secs(10),
+            body_timeout: Duration::from_secs(60),
+            max_connections: 512,
         }
     }
 

@@ -87,6 +87,11 @@ pub enum ApiError {
     /// The request ran out of time (503).
     #[error("request exceeded its time bound of {0} ms (narrow the request or raise --timeout-ms)")]
     Timeout(u128),
+    /// The request body did not arrive in time (408).
+    #[error(
+        "the request body did not arrive within {0} ms (a slow connection? raise --body-timeout-ms)"
+    )]
+    BodyTimeout(u128),
     /// The database is locked by another writer (503).
     #[error("database is busy (another writer holds it); retry")]
     Busy,
@@ -123,6 +128,7 @@ impl ApiError {
             ApiError::Unauthorized => StatusCode::UNAUTHORIZED,
             ApiError::ReadOnly => StatusCode::FORBIDDEN,
             ApiError::TooLarge { .. } => StatusCode::PAYLOAD_TOO_LARGE,
+            ApiError::BodyTimeout(_) => StatusCode::REQUEST_TIMEOUT,
             ApiError::Timeout(_) | ApiError::Busy => StatusCode::SERVICE_UNAVAILABLE,
             ApiError::Internal(_) => StatusCode::INTERNAL_SERVER_ERROR,
         }
@@ -141,6 +147,7 @@ impl ApiError {
             ApiError::BadUpload(_) => "BadUpload",
             ApiError::BadQuery(_) => "BadQuery",
             ApiError::Timeout(_) => "Timeout",
+            ApiError::BodyTimeout(_) => "BodyTimeout",
             ApiError::Busy => "Busy",
             ApiError::Internal(_) => "Internal",
         }
@@ -189,7 +196,10 @@ impl From<StoreError> for ApiError {
             StoreError::BadMapName { .. } => ApiError::bad("map", e.to_string()),
             StoreError::TooLong { field, .. } => ApiError::bad(field, e.to_string()),
             StoreError::Model(m) => ApiError::BadUpload(m.to_string()),
-            StoreError::Busy => ApiError::Busy,
+            StoreError::TooManyOverlaps { .. } => ApiError::BadUpload(e.to_string()),
+            // Another writer kept adding revisions while this import was
+            // matched: retrying later is the answer, as for a held lock.
+            StoreError::Busy | StoreError::MapChanged { .. } => ApiError::Busy,
             other => ApiError::Internal(other.to_string()),
         }
     }

@@ -24,6 +24,7 @@ mod auth;
 mod body;
 mod cache;
 mod config;
+mod connections;
 mod endpoint;
 mod error;
 mod metrics;
@@ -122,15 +123,15 @@ pub async fn bind(addr: SocketAddr) -> Result<TcpListener, ServerError> {
 }
 
 /// Serves `state` on `listener` until `shutdown` resolves, then lets
-/// in-flight requests finish.
+/// in-flight requests finish. Connections are bounded by the header
+/// timeout and the connection cap of the configuration.
 pub async fn serve_on(
     listener: TcpListener,
     state: AppState,
     shutdown: impl Future<Output = ()> + Send + 'static,
 ) -> Result<(), ServerError> {
-    axum::serve(listener, router(state))
-        .with_graceful_shutdown(shutdown)
-        .await?;
+    let config = state.config().clone();
+    connections::serve_connections(listener, router(state), &config, shutdown).await;
     Ok(())
 }
 

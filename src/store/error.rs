@@ -1,6 +1,6 @@
 //! Errors of the store.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use crate::model::{ModelError, SpaceId};
 
@@ -103,9 +103,50 @@ pub enum StoreError {
         /// What is wrong with it.
         what: String,
     },
+    /// The disk holding the database is full (SQLite's `SQLITE_FULL`, or
+    /// `SQLITE_IOERR_SHMSIZE`: no room to grow the WAL index next to it);
+    /// the transaction was rolled back.
+    #[error("disk full: {} (nothing was stored; free some space and retry)", path.display())]
+    DiskFull {
+        /// The database file (empty until the store names it).
+        path: PathBuf,
+    },
+    /// Another writer added a revision to the map every time this import
+    /// had matched its spaces against the latest one; nothing was stored.
+    #[error(
+        "map '{map}' changed while this import was being matched, {attempts} times in a row; retry"
+    )]
+    MapChanged {
+        /// The map.
+        map: String,
+        /// How many times the import was matched.
+        attempts: usize,
+    },
+    /// The imported model's spaces overlap the parent revision's too much
+    /// to be matched in bounded time (spaces piled on each other).
+    #[error(
+        "cannot match this model to the map's latest revision: more than {limit} pairs of \
+         their spaces overlap (are spaces piled on each other?); nothing was stored"
+    )]
+    TooManyOverlaps {
+        /// The bound on overlapping pairs.
+        limit: usize,
+    },
     /// Any other SQLite error.
     #[error("sqlite: {0}")]
     Sqlite(rusqlite::Error),
+}
+
+impl StoreError {
+    /// Names the database file in errors that should name it (disk full).
+    pub(crate) fn in_file(self, file: &Path) -> StoreError {
+        match self {
+            StoreError::DiskFull { path } if path.as_os_str().is_empty() => StoreError::DiskFull {
+                path: file.to_path_buf(),
+            },
+            other => other,
+        }
+    }
 }
 
 impl From<rusqlite::Error> for StoreError {
@@ -114,7 +155,59 @@ impl From<rusqlite::Error> for StoreError {
             Some(rusqlite::ErrorCode::DatabaseBusy | rusqlite::ErrorCode::DatabaseLocked) => {
                 StoreError::Busy
             }
+            Some(rusqlite::ErrorCode::DiskFull) => StoreError::DiskFull {
+                path: PathBuf::new(),
+            },
+            // The unix VFS reports ENOSPC on the database or WAL file as
+            // SQLITE_FULL, but a failed write growing the `-shm` WAL index
+            // (the one-byte write that extends it) as SQLITE_IOERR_SHMSIZE,
+            // "Error code 4874: disk I/O error" (issue 21, defect 10).
+            _ if extended_code(&e) == Some(rusqlite::ffi::SQLITE_IOERR_SHMSIZE) => {
+                StoreError::DiskFull {
+                    path: PathBuf::new(),
+                }
+            }
             _ => StoreError::Sqlite(e),
         }
+    }
+}
+
+fn extended_code(e: &rusqlite::Error) -> Option<std::ffi::c_int> {
+    match e {
+        rusqlite::Error::SqliteFailure(f, _) => Some(f.extended_code),
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sqlite(extended_code: std::ffi::c_int) -> rusqlite::Error {
+        rusqlite::Error::SqliteFailure(rusqlite::ffi::Error::new(extended_code), None)
+    }
+
+    /// Issue 21, defect 10: a full disk said "Error code 4874: disk I/O
+    /// error"; SQLITE_FULL and SQLITE_IOERR_SHMSIZE now say "disk full"
+    /// and name the file, other I/O errors stay as SQLite put them.
+    #[test]
+    fn issue_21_defect_10_disk_full_is_named() {
+        for code in [
+            rusqlite::ffi::SQLITE_FULL,
+            rusqlite::ffi::SQLITE_IOERR_SHMSIZE,
+        ] {
+            let e = StoreError::from(sqlite(code)).in_file(Path::new("/data/x.sqlite"));
+            assert!(matches!(e, StoreError::DiskFull { .. }), "{code}: {e:?}");
+            assert!(
+                e.to_string().starts_with("disk full: /data/x.sqlite"),
+                "{e}"
+            );
+        }
+        let e = StoreError::from(sqlite(rusqlite::ffi::SQLITE_IOERR_READ));
+        assert!(matches!(e, StoreError::Sqlite(_)), "{e:?}");
+        assert!(matches!(
+            StoreError::from(sqlite(rusqlite::ffi::SQLITE_BUSY)),
+            StoreError::Busy
+        ));
     }
 }

@@ -87,14 +87,15 @@ impl Store {
     }
 }
 
-/// Stores `grid` as the source of revision `seq` (inside the import's
-/// transaction).
-pub(crate) fn insert_grid(
-    conn: &Connection,
-    map_id: i64,
-    seq: u32,
-    grid: &OccupancyGrid,
-) -> Result<(), StoreError> {
+/// A grid encoded as PNG, ready to be stored.
+pub(crate) struct EncodedGrid<'a> {
+    grid: &'a OccupancyGrid,
+    png: Vec<u8>,
+}
+
+/// Encodes `grid` (before the import takes the write lock: a large grid
+/// takes a while to compress).
+pub(crate) fn encode_grid(grid: &OccupancyGrid) -> Result<EncodedGrid<'_>, StoreError> {
     let grey: Vec<u8> = grid.cells.iter().map(|c| c.grey()).collect();
     let mut png = Vec::new();
     PngEncoder::new(&mut png)
@@ -102,8 +103,20 @@ pub(crate) fn insert_grid(
         .map_err(|e| StoreError::Corrupt {
             map: String::new(),
             row: 0,
-            what: format!("cannot encode the grid of revision {seq}: {e}"),
+            what: format!("cannot encode the occupancy grid: {e}"),
         })?;
+    Ok(EncodedGrid { grid, png })
+}
+
+/// Stores `encoded` as the source of revision `seq` (inside the import's
+/// transaction).
+pub(crate) fn insert_grid(
+    conn: &Connection,
+    map_id: i64,
+    seq: u32,
+    encoded: &EncodedGrid<'_>,
+) -> Result<(), StoreError> {
+    let EncodedGrid { grid, png } = encoded;
     conn.execute(
         "INSERT INTO revision_grids (map_id, seq, width, height, resolution, origin_x, origin_y, origin_yaw, png)
          VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9)",

@@ -56,6 +56,10 @@ pub struct Store {
     conn: Connection,
     path: PathBuf,
     match_params: MatchParams,
+    /// Called by an import between matching and taking the write lock
+    /// (tests make another writer get in first there).
+    #[cfg(test)]
+    before_write_lock: Option<Box<dyn FnMut() + Send>>,
 }
 
 impl std::fmt::Debug for Store {
@@ -184,7 +188,7 @@ impl Store {
             path: path.to_path_buf(),
             source,
         })?;
-        Store::setup(conn, path.to_path_buf())
+        Store::setup(conn, path.to_path_buf()).map_err(|e| e.in_file(path))
     }
 
     /// A fresh database in memory (tests, one-off conversions).
@@ -200,6 +204,8 @@ impl Store {
             conn,
             path,
             match_params: MatchParams::default(),
+            #[cfg(test)]
+            before_write_lock: None,
         })
     }
 

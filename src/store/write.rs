@@ -12,7 +12,7 @@ use rusqlite::{Connection, OptionalExtension, TransactionBehavior, params};
 
 use super::read::{REVISION_COLUMNS, latest, load_at, map_id, revision_info};
 use super::{ImportMeta, Imported, RevisionInfo, Store, StoreError, geometry_blob};
-use crate::diff::{MatchParams, match_spaces};
+use crate::diff::{MatchParams, match_spaces_within};
 use crate::model::{Connection as Link, Nrg, Space, SpaceId};
 
 impl Store {
@@ -34,6 +34,15 @@ impl Store {
 
     /// [`Store::import`], also keeping the occupancy grid the model was
     /// extracted from (see [`Store::grid`]), in the same transaction.
+    ///
+    /// Matching against the parent revision is the expensive part, so it
+    /// (like encoding the grid) runs before the write lock is taken, on a
+    /// snapshot of the map (issue 21, defect 3: it ran inside `BEGIN
+    /// IMMEDIATE` and every other writer got "busy"). Under the lock the
+    /// import checks that the revision it matched against is still the
+    /// latest; if another writer got in first it matches again, at most
+    /// [`MAX_IMPORT_ATTEMPTS`] times, then fails with
+    /// [`StoreError::MapChanged`].
     pub fn import_with_grid(
         &mut self,
         map: &str,
@@ -43,15 +52,91 @@ impl Store {
     ) -> Result<Imported, StoreError> {
         check_map_name(map)?;
         check_meta(&meta)?;
-        let params = self.match_params;
+        let grid = grid.map(super::grids::encode_grid).transpose()?;
+        for _ in 0..MAX_IMPORT_ATTEMPTS {
+            let prepared = self
+                .prepare_import(map, nrg)
+                .map_err(|e| e.in_file(&self.path))?;
+            #[cfg(test)]
+            if let Some(hook) = self.before_write_lock.as_mut() {
+                hook();
+            }
+            let done = self
+                .commit_import(map, prepared, &meta, grid.as_ref())
+                .map_err(|e| e.in_file(&self.path))?;
+            if let Some(imported) = done {
+                return Ok(imported);
+            }
+        }
+        Err(StoreError::MapChanged {
+            map: map.to_string(),
+            attempts: MAX_IMPORT_ATTEMPTS,
+        })
+    }
+
+    /// Reads the map's latest revision (one read transaction, no write
+    /// lock) and renumbers `nrg` to continue it.
+    fn prepare_import(&self, map: &str, nrg: &Nrg) -> Result<PreparedImport, StoreError> {
+        let tx = self.conn.unchecked_transaction()?;
+        let map_id: Option<i64> = tx
+            .query_row("SELECT id FROM maps WHERE name = ?1", [map], |r| r.get(0))
+            .optional()?;
+        let parent_seq = match map_id {
+            Some(id) => latest(&tx, id)?,
+            None => 0,
+        };
+        let prepared = match map_id {
+            Some(id) if parent_seq > 0 => {
+                let parent = load_at(&tx, id, map, parent_seq)?;
+                let next = next_space_id(&tx, id)?;
+                tx.finish()?;
+                let (stable, ids) = continue_identity(&parent, nrg, &self.match_params, next)?;
+                PreparedImport {
+                    map_id,
+                    stable,
+                    ids,
+                    parent: Some((parent_seq, parent)),
+                }
+            }
+            _ => {
+                tx.finish()?;
+                PreparedImport {
+                    map_id,
+                    stable: nrg.clone(),
+                    ids: nrg.spaces().iter().map(|s| (s.id, s.id)).collect(),
+                    parent: None,
+                }
+            }
+        };
+        Ok(prepared)
+    }
+
+    /// Takes the write lock and writes `prepared` if the revision it was
+    /// matched against is still the map's latest; `Ok(None)` (nothing
+    /// written) when another writer got in first.
+    fn commit_import(
+        &mut self,
+        map: &str,
+        prepared: PreparedImport,
+        meta: &ImportMeta,
+        grid: Option<&super::grids::EncodedGrid<'_>>,
+    ) -> Result<Option<Imported>, StoreError> {
         let tx = self
             .conn
             .transaction_with_behavior(TransactionBehavior::Immediate)?;
-        let existing = tx
+        let existing: Option<i64> = tx
             .query_row("SELECT id FROM maps WHERE name = ?1", [map], |r| r.get(0))
             .optional()?;
-        let map_id: i64 = match existing {
-            Some(id) => id,
+        let parent_seq = prepared.parent.as_ref().map_or(0, |p| p.0);
+        let map_id = match existing {
+            Some(id) => {
+                let same_map = prepared.map_id.is_none_or(|m| m == id);
+                if !same_map || latest(&tx, id)? != parent_seq {
+                    return Ok(None);
+                }
+                id
+            }
+            None if prepared.map_id.is_some() => return Ok(None),
             None => {
                 tx.execute(
                     "INSERT INTO maps (name, created_at) VALUES (?1, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'))",
@@ -60,22 +145,22 @@ impl Store {
                 tx.last_insert_rowid()
             }
         };
-        let parent_seq = latest(&tx, map_id)?;
-        let (stable, ids, parent) = if parent_seq == 0 {
-            let ids = nrg.spaces().iter().map(|s| (s.id, s.id)).collect();
-            (nrg.clone(), ids, None)
-        } else {
-            let parent = load_at(&tx, map_id, map, parent_seq)?;
-            let next = next_space_id(&tx, map_id)?;
-            let (stable, ids) = continue_identity(&parent, nrg, &params, next)?;
-            (stable, ids, Some((parent_seq, parent)))
-        };
-        let revision = commit_revision(&tx, map_id, map, parent.as_ref(), &stable, &meta)?;
+        let revision = commit_revision(
+            &tx,
+            map_id,
+            map,
+            prepared.parent.as_ref(),
+            &prepared.stable,
+            meta,
+        )?;
         if let Some(grid) = grid {
             super::grids::insert_grid(&tx, map_id, revision.seq, grid)?;
         }
         tx.commit()?;
-        Ok(Imported { revision, ids })
+        Ok(Some(Imported {
+            revision,
+            ids: prepared.ids,
+        }))
     }
 
     /// Gives space `id` of the latest revision of `map` the name `name`
@@ -86,6 +171,19 @@ impl Store {
         id: SpaceId,
         name: Option<&str>,
         meta: ImportMeta,
+    ) -> Result<RevisionInfo, StoreError> {
+        self.rename_in_lock(map, id, name, &meta)
+            .map_err(|e| e.in_file(&self.path))
+    }
+
+    /// [`Store::rename_space`] in one write transaction (renaming matches
+    /// nothing, so it is cheap enough to do under the lock).
+    fn rename_in_lock(
+        &mut self,
+        map: &str,
+        id: SpaceId,
+        name: Option<&str>,
+        meta: &ImportMeta,
     ) -> Result<RevisionInfo, StoreError> {
         let tx = self
             .conn
@@ -112,10 +210,34 @@ impl Store {
             s.name = name.map(str::to_string);
         }
         let renamed = Nrg::new(spaces, links)?;
-        let info = commit_revision(&tx, map_id, map, Some(&(seq, parent)), &renamed, &meta)?;
+        let info = commit_revision(&tx, map_id, map, Some(&(seq, parent)), &renamed, meta)?;
         tx.commit()?;
         Ok(info)
     }
+}
+
+/// How many times an import matches its spaces again when another writer
+/// added a revision meanwhile, before it gives up with
+/// [`StoreError::MapChanged`].
+pub const MAX_IMPORT_ATTEMPTS: usize = 3;
+
+/// Pairs of spaces (one of the parent revision, one of the import) whose
+/// boxes meet that an import measures at most to match them: a revision
+/// of 20 000 spaces meets about ten times as many; 20 000 piled over
+/// 20 000 would be 400 million (issue 21, defect 8).
+pub const MAX_MATCH_PAIRS: usize = 2_000_000;
+
+/// An import matched against its parent revision, ready to be written
+/// (made without the write lock).
+struct PreparedImport {
+    /// The map's row id when it existed.
+    map_id: Option<i64>,
+    /// The model renumbered to continue the parent's ids.
+    stable: Nrg,
+    /// Input id → stored id.
+    ids: BTreeMap<SpaceId, SpaceId>,
+    /// The revision matched against and its model.
+    parent: Option<(u32, Nrg)>,
 }
 
 /// Longest revision message kept, in characters (issue 21: a 20 MB
@@ -184,10 +306,12 @@ fn continue_identity(
     params: &MatchParams,
     mut next: u32,
 ) -> Result<(Nrg, BTreeMap<SpaceId, SpaceId>), StoreError> {
-    let mut ids: BTreeMap<SpaceId, SpaceId> = match_spaces(parent, new, params)
-        .into_iter()
-        .map(|m| (m.new, m.old))
-        .collect();
+    let matches = match_spaces_within(parent, new, params, MAX_MATCH_PAIRS).ok_or(
+        StoreError::TooManyOverlaps {
+            limit: MAX_MATCH_PAIRS,
+        },
+    )?;
+    let mut ids: BTreeMap<SpaceId, SpaceId> = matches.into_iter().map(|m| (m.new, m.old)).collect();
     for s in new.spaces() {
         if let std::collections::btree_map::Entry::Vacant(e) = ids.entry(s.id) {
             e.insert(SpaceId(next));
@@ -371,7 +495,163 @@ fn same_link(a: &Link, b: &Link) -> bool {
 
 #[cfg(test)]
 mod tests {
+    use std::sync::Arc;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+
     use super::*;
+    use crate::model::SpaceKind;
+
+    /// `n` square rooms of 2 m in a row, ids 1.., shifted `dx` metres.
+    fn rooms(n: u32, dx: f64) -> Nrg {
+        let spaces = (0..n)
+            .map(|i| {
+                let x = f64::from(i) * 3.0 + dx;
+                Space::new(
+                    SpaceId(i + 1),
+                    SpaceKind::Room,
+                    [x + 1.0, 1.0],
+                    vec![[x, 0.0], [x + 2.0, 0.0], [x + 2.0, 2.0], [x, 2.0]],
+                )
+            })
+            .collect();
+        Nrg::new(spaces, vec![]).unwrap()
+    }
+
+    fn meta() -> ImportMeta {
+        ImportMeta::new("test", "me")
+    }
+
+    /// A store on a file in a fresh directory, with map `m` at revision 1.
+    fn store_with_map() -> (tempfile::TempDir, std::path::PathBuf, Store) {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("db.sqlite");
+        let mut store = Store::open(&path).unwrap();
+        store.import("m", &rooms(4, 0.0), meta()).unwrap();
+        (dir, path, store)
+    }
+
+    /// A second writer on the same file that gives up at once when the
+    /// write lock is held.
+    fn impatient_writer(path: &std::path::Path) -> Store {
+        let mut other = Store::open(path).unwrap();
+        other.set_busy_timeout(std::time::Duration::ZERO).unwrap();
+        other
+    }
+
+    /// Issue 21, defect 3: identity matching ran inside `BEGIN IMMEDIATE`,
+    /// so every other writer got "busy" while a large import was matched.
+    /// Right after matching, another connection that refuses to wait for
+    /// the lock can still write.
+    #[test]
+    fn issue_21_defect_3_matching_runs_without_the_write_lock() {
+        let (_dir, path, mut store) = store_with_map();
+        let calls = Arc::new(AtomicUsize::new(0));
+        let seen = Arc::clone(&calls);
+        let mut other = impatient_writer(&path);
+        store.before_write_lock = Some(Box::new(move || {
+            seen.fetch_add(1, Ordering::SeqCst);
+            other
+                .import("elsewhere", &rooms(2, 0.0), meta())
+                .expect("the write lock is free while matching");
+        }));
+        let done = store.import("m", &rooms(4, 0.5), meta()).unwrap();
+        assert_eq!(calls.load(Ordering::SeqCst), 1);
+        assert_eq!((done.revision.seq, done.revision.parent), (2, Some(1)));
+        assert_eq!(store.revision("elsewhere", None).unwrap().seq, 1);
+    }
+
+    /// Issue 21, defect 3: when another writer adds a revision between
+    /// matching and the lock, the import is matched again against the new
+    /// latest revision instead of being written over a stale parent.
+    #[test]
+    fn issue_21_defect_3_stale_parent_is_matched_again() {
+        let (_dir, path, mut store) = store_with_map();
+        let mut other = impatient_writer(&path);
+        let calls = Arc::new(AtomicUsize::new(0));
+        let seen = Arc::clone(&calls);
+        store.before_write_lock = Some(Box::new(move || {
+            if seen.fetch_add(1, Ordering::SeqCst) == 0 {
+                // A fifth room: the next import must continue this one.
+                other.import("m", &rooms(5, 0.0), meta()).unwrap();
+            }
+        }));
+        let done = store.import("m", &rooms(5, 0.25), meta()).unwrap();
+        assert_eq!(calls.load(Ordering::SeqCst), 2);
+        assert_eq!((done.revision.seq, done.revision.parent), (3, Some(2)));
+        // Matched against revision 2, the fifth room continues room 5
+        // (matched against revision 1 it would count as added).
+        assert_eq!(done.revision.spaces_added, 0);
+        assert_eq!(done.revision.spaces_changed, 5);
+    }
+
+    /// Issue 21, defect 3: a map that changes before every attempt fails
+    /// with a clear "retry" after a bounded number of attempts, storing
+    /// nothing.
+    #[test]
+    fn issue_21_defect_3_a_map_that_keeps_changing_fails_clearly() {
+        let (_dir, path, mut store) = store_with_map();
+        let mut other = impatient_writer(&path);
+        store.before_write_lock = Some(Box::new(move || {
+            other.import("m", &rooms(4, 0.1), meta()).unwrap();
+        }));
+        let e = store.import("m", &rooms(4, 0.5), meta()).unwrap_err();
+        assert!(
+            matches!(e, StoreError::MapChanged { attempts, .. } if attempts == MAX_IMPORT_ATTEMPTS),
+            "{e:?}"
+        );
+        assert!(e.to_string().contains("retry"), "{e}");
+        let revs = store.revisions("m").unwrap();
+        assert_eq!(revs.len(), 1 + MAX_IMPORT_ATTEMPTS);
+        assert!(revs.iter().all(|r| r.message == "test"));
+    }
+
+    /// Issue 21, defect 8: 20 000 piled cells imported over a revision of
+    /// piled cells took 11 min and 4.5 GB to match; past
+    /// [`MAX_MATCH_PAIRS`] overlapping pairs the import is refused at once,
+    /// storing nothing.
+    #[test]
+    fn issue_21_defect_8_a_pile_over_a_pile_is_refused() {
+        let pile = |n: u32, dx: f64| {
+            let square = vec![[dx, 0.0], [dx + 2.0, 0.0], [dx + 2.0, 2.0], [dx, 2.0]];
+            let spaces = (1..=n)
+                .map(|k| Space::new(SpaceId(k), SpaceKind::Room, [dx + 1.0, 1.0], square.clone()))
+                .collect();
+            Nrg::new(spaces, vec![]).unwrap()
+        };
+        let mut store = Store::open_in_memory().unwrap();
+        store.import("piles", &pile(1_500, 0.0), meta()).unwrap();
+        let e = store
+            .import("piles", &pile(1_500, 0.1), meta())
+            .unwrap_err();
+        assert!(matches!(e, StoreError::TooManyOverlaps { .. }), "{e:?}");
+        assert!(e.to_string().contains("piled"), "{e}");
+        assert_eq!(store.revisions("piles").unwrap().len(), 1);
+    }
+
+    /// Issue 21, defect 10: a full disk said "Error code 4874: disk I/O
+    /// error". A database that may not grow (`max_page_count`) gives
+    /// SQLITE_FULL for real; the error says "disk full" and names the
+    /// file, and the import stored nothing.
+    #[test]
+    fn issue_21_defect_10_a_full_database_says_disk_full() {
+        let (_dir, path, mut store) = store_with_map();
+        let pages: i64 = store
+            .conn
+            .query_row("PRAGMA page_count", [], |r| r.get(0))
+            .unwrap();
+        store
+            .conn
+            .pragma_update(None, "max_page_count", pages + 1)
+            .unwrap();
+        let e = store.import("big", &rooms(2_000, 0.0), meta()).unwrap_err();
+        assert!(
+            matches!(&e, StoreError::DiskFull { path: p } if *p == path),
+            "{e:?}"
+        );
+        assert!(e.to_string().starts_with("disk full: "), "{e}");
+        assert!(store.revisions("big").is_err());
+        assert_eq!(store.revisions("m").unwrap().len(), 1);
+    }
 
     /// Issue 21, defect 6: a 20 MB message was stored and returned in
     /// every revisions listing; now it is refused, naming the field.

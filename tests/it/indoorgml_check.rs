@@ -125,3 +125,50 @@ fn cli_check_exit_codes() {
     let out = nrgdb(dir.path(), &["check", "missing.gml"]);
     assert_eq!(out.status.code(), Some(2));
 }
+
+/// `n`×`n` square rooms of 1.5 m on a 2 m grid (none overlapping), then
+/// `piled` more rooms all on the first one.
+fn many_rooms(n: u32, piled: u32) -> nrgdb::model::Nrg {
+    use nrgdb::model::{Nrg, Space, SpaceId, SpaceKind};
+    let square = |x: f64, y: f64| vec![[x, y], [x + 1.5, y], [x + 1.5, y + 1.5], [x, y + 1.5]];
+    let mut spaces = Vec::new();
+    for k in 0..n * n {
+        let (x, y) = (f64::from(k % n) * 2.0, f64::from(k / n) * 2.0);
+        spaces.push(Space::new(
+            SpaceId(k + 1),
+            SpaceKind::Room,
+            [x + 0.7, y + 0.7],
+            square(x, y),
+        ));
+    }
+    for k in 0..piled {
+        let id = SpaceId(n * n + k + 1);
+        spaces.push(Space::new(
+            id,
+            SpaceKind::Room,
+            [0.7, 0.7],
+            square(0.0, 0.0),
+        ));
+    }
+    Nrg::new(spaces, vec![]).unwrap()
+}
+
+/// Issue 21, defect 8: `check` compared every pair of cells (20 000 cells:
+/// 200 million pairs). Cells are paired through an R-tree of their boxes:
+/// 22 500 side by side give no finding; a pile of 1 000 cells on one spot
+/// (half a million overlapping pairs) stops at the bound with one finding
+/// saying so, instead of computing every intersection.
+#[test]
+fn issue_21_defect_8_overlaps_of_many_cells_are_bounded() {
+    let doc = from_nrg(&many_rooms(150, 0));
+    let found = indoorgml::check(&doc);
+    assert!(found.is_empty(), "{:?}", &found[..found.len().min(3)]);
+    let doc = from_nrg(&many_rooms(10, 1_000));
+    let c = codes(&doc);
+    assert_eq!(
+        c.iter().filter(|&&c| c == "overlap-check-stopped").count(),
+        1
+    );
+    let overlaps = c.iter().filter(|&&c| c == "cells-overlap").count();
+    assert!((1_000..=100_000).contains(&overlaps), "{overlaps}");
+}

@@ -45,6 +45,7 @@ mod store_cli;
 
 mod server_cli;
 mod server_client;
+mod server_connections;
 mod server_diff;
 mod server_openapi;
 mod server_read;

@@ -135,6 +135,12 @@ impl Reply {
             .map(|(_, v)| v.as_str())
     }
 
+    /// Asserts a JSON error with `status` and `code`.
+    pub fn assert_error_code(&self, status: u16, code: &str) {
+        assert_eq!(self.status, status, "{}", self.text());
+        assert_eq!(self.json()["code"], code, "{}", self.text());
+    }
+
     /// Asserts a JSON error with `status` naming `parameter`.
     pub fn assert_error(&self, status: u16, parameter: &str) {
         assert_eq!(self.status, status, "{}", self.text());

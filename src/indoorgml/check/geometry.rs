@@ -3,9 +3,10 @@
 //! counter-clockwise and holes clockwise, 3D shells facing outwards, and
 //! every solid with surfaces (OGC ETS Req 1).
 
-use geo::{Coord, LineString as GeoLine, Polygon as GeoPolygon, Validation};
+use geo::{Coord, LineString as GeoLine, Polygon as GeoPolygon};
 
 use super::super::document::{BoundaryGeometry, CellGeometry, Coords, Document, Polygon, Solid};
+use super::validity::{PolygonError, polygon_errors};
 use super::{Finding, finding};
 use crate::model::polygon_area;
 
@@ -109,11 +110,10 @@ fn check_polygon(p: &Polygon, planar_2d: bool, id: &str, line: usize, out: &mut 
         ring2d(&p.exterior),
         p.interiors.iter().map(ring2d).collect(),
     );
-    for err in poly.validation_errors() {
-        let code = if err.to_string().contains("self-intersection") {
-            "self-intersection"
-        } else {
-            "invalid-polygon"
+    for err in polygon_errors(&poly) {
+        let (code, err) = match err {
+            PolygonError::SelfIntersection(m) => ("self-intersection", m),
+            PolygonError::Invalid(m) => ("invalid-polygon", m),
         };
         out.push(finding(code, id, line, format!("{name}: {err}")));
     }

@@ -11,6 +11,7 @@ mod geometry;
 mod overlap;
 mod refs;
 pub mod schema;
+mod validity;
 
 use std::fmt;
 

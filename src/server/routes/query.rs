@@ -100,8 +100,12 @@ pub async fn query(
     headers: HeaderMap,
     body: Body,
 ) -> Result<Json<Value>, ApiError> {
+    // The deadline of the whole request: past it the client has had its
+    // 503 (`server::timeout`), so the statements stop too.
+    let deadline = std::time::Instant::now().checked_add(state.config().timeout);
     let p = Params::parse(&uri, &["map", "rev"])?;
-    let bytes = read_limited(&headers, body, state.config().max_body_bytes).await?;
+    let config = state.config();
+    let bytes = read_limited(&headers, body, config.max_body_bytes, config.body_timeout).await?;
     let is_json = headers
         .get(header::CONTENT_TYPE)
         .and_then(|v| v.to_str().ok())
@@ -149,6 +153,7 @@ pub async fn query(
     let writable = has_token(state.config(), &headers);
     let limits = Limits {
         timeout: state.config().timeout,
+        deadline,
         ..Limits::default()
     };
     state
@@ -157,28 +162,33 @@ pub async fn query(
                 store: ctx.store(),
                 writable,
             };
-            let mut session = match &map {
-                Some(m) => {
-                    let mut s = Session::new(source);
-                    s.use_map(m, rev.map(u64::from)).map_err(|e| match e {
-                        QueryError::Source(SourceError::NoMap { .. }) => {
-                            ApiError::not_found("map", e.to_string())
-                        }
-                        QueryError::Source(SourceError::NoRevision { .. }) => {
-                            ApiError::not_found("rev", e.to_string())
-                        }
-                        other => ApiError::from(other),
-                    })?;
-                    s
-                }
-                None => Session::with_default_map(source)?,
-            };
+            // Limits first: selecting the map indexes a revision, which
+            // must not start past the deadline either.
+            let mut session = Session::new(source);
             session.set_limits(limits);
-            let results: Vec<Value> = session
-                .execute(&text)?
-                .into_iter()
-                .map(result_json)
-                .collect();
+            match &map {
+                Some(m) => {
+                    session
+                        .use_map(m, rev.map(u64::from))
+                        .map_err(|e| match e {
+                            QueryError::Source(SourceError::NoMap { .. }) => {
+                                ApiError::not_found("map", e.to_string())
+                            }
+                            QueryError::Source(SourceError::NoRevision { .. }) => {
+                                ApiError::not_found("rev", e.to_string())
+                            }
+                            other => ApiError::from(other),
+                        })?;
+                }
+                None => session.use_default_map()?,
+            }
+            let results = session.execute(&text)?;
+            // Past the deadline the client has its 503: rendering the
+            // finished statements' rows would be work for nobody.
+            if limits.past_deadline() {
+                return Err(ApiError::Timeout(limits.timeout.as_millis()));
+            }
+            let results: Vec<Value> = results.into_iter().map(result_json).collect();
             let current = session
                 .current()
                 .map(|c| json!({"map": c.map, "revision": c.revision}));

@@ -213,6 +213,9 @@ pub async fn route(
     }
     let rev = p.rev()?;
     let timeout = state.config().timeout;
+    // The search stops when the client gets its 503, even when it started
+    // late (waiting for a blocking thread).
+    let deadline = std::time::Instant::now().checked_add(timeout);
     let work = move |ctx: &mut Ctx<'_>| {
         let r = ctx.revision(&map, rev)?;
         let request = RouteRequest {
@@ -223,7 +226,7 @@ pub async fn route(
             alternatives: k,
             profile: walker,
         };
-        let routes = shortest_route(&r.nav, &request, &Budget::new(timeout))?;
+        let routes = shortest_route(&r.nav, &request, &Budget::within(timeout, deadline))?;
         let reason = routes.is_empty().then(|| no_route_reason(&r.nav, &request));
         let mut stops = vec![request.from];
         stops.extend(&request.via);

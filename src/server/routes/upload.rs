@@ -104,7 +104,8 @@ pub async fn upload(
 ) -> Result<Response, ApiError> {
     require_write(state.config(), &headers)?;
     let p = Params::parse(&uri, &["message", "author"])?;
-    let bytes = read_limited(&headers, body, state.config().max_upload_bytes).await?;
+    let config = state.config();
+    let bytes = read_limited(&headers, body, config.max_upload_bytes, config.body_timeout).await?;
     let content_type = headers
         .get(header::CONTENT_TYPE)
         .and_then(|v| v.to_str().ok())

@@ -91,6 +91,9 @@ pub async fn svg(
     let diff: Option<u32> = p.opt("diff", "a revision number")?;
     let with_map = p.opt::<bool>("map", "true or false")?.unwrap_or(true);
     let timeout = state.config().timeout;
+    // The search stops when the client gets its 503, even when it started
+    // late (waiting for a blocking thread).
+    let deadline = std::time::Instant::now().checked_add(timeout);
     let body = state
         .blocking(move |ctx| {
             let r = ctx.revision(&map, rev)?;
@@ -104,7 +107,8 @@ pub async fn svg(
                         )
                     })?;
                     let request = RouteRequest::new(space(from, &r)?, space(to, &r)?);
-                    let routes = shortest_route(&r.nav, &request, &Budget::new(timeout))?;
+                    let routes =
+                        shortest_route(&r.nav, &request, &Budget::within(timeout, deadline))?;
                     routes.first().map(|x| {
                         RouteOverlay::along(&r.nrg, &x.spaces, x.waypoints.clone(), x.length_m)
                     })
