@@ -26,6 +26,11 @@ use super::{ModelError, Nrg, Space, SpaceId};
 /// modelling. The one tolerance of the checker and of these repairs.
 pub const MIN_OVERLAP_M2: f64 = 1e-4;
 
+/// Exact intersections computed at most (pairs of cells whose boxes
+/// overlap), by the checker per document and by [`repair_geometry`]: a
+/// model of many cells piled on each other stops there (issue 21).
+pub const MAX_OVERLAP_TESTS: usize = 100_000;
+
 /// An overlap at most this share of the smaller cell is a sliver (drawing
 /// noise along a shared wall): it is cut from the larger cell.
 const SLIVER_SHARE: f64 = 0.05;
@@ -128,7 +133,8 @@ pub fn repair_geometry(nrg: &Nrg) -> Result<(Nrg, Vec<Repair>), ModelError> {
             changed[i] = true;
         }
     }
-    for (i, j) in overlapping_pairs(&shapes) {
+    // Past the bound, overlaps are left for the caller's check to refuse.
+    for (i, j) in overlapping_pairs(&shapes).into_iter().take(MAX_OVERLAP_TESTS) {
         let overlap = shapes[i].intersection(&shapes[j]);
         let shared = overlap.unsigned_area();
         if shared <= MIN_OVERLAP_M2 {
@@ -249,7 +255,8 @@ impl RTreeObject for Boxed {
     }
 }
 
-/// Pairs `(i, j)`, `i < j`, whose bounding boxes overlap, in order.
+/// Pairs `(i, j)`, `i < j`, whose bounding boxes overlap, in order; at
+/// most [`MAX_OVERLAP_TESTS`] + 1 are collected.
 fn overlapping_pairs(shapes: &[Polygon]) -> Vec<(usize, usize)> {
     let boxes: Vec<Boxed> = shapes
         .iter()
@@ -270,6 +277,7 @@ fn overlapping_pairs(shapes: &[Polygon]) -> Vec<(usize, usize)> {
                 .filter(move |b| b.index > a.index)
                 .map(move |b| (a.index, b.index))
         })
+        .take(MAX_OVERLAP_TESTS + 1)
         .collect();
     pairs.sort_unstable();
     pairs

@@ -18,11 +18,7 @@ use super::super::convert::footprint;
 use super::super::document::{CellGeometry, Document, Target};
 use super::{Finding, finding};
 
-use crate::model::MIN_OVERLAP_M2;
-
-/// Exact intersections computed per document at most (pairs of cells whose
-/// boxes overlap); a document of many cells piled on each other stops here.
-pub(crate) const MAX_OVERLAP_TESTS: usize = 100_000;
+use crate::model::{MAX_OVERLAP_TESTS, MIN_OVERLAP_M2};
 
 struct Footprint<'a> {
     id: &'a str,
