@@ -8,15 +8,16 @@
 //! is that line's length, unless the space declares a `width_m` attribute
 //! (a door leaf narrower than its frame, a width taken from a plan). The
 //! extractor measures the line from the map and stores it in
-//! [`Space::doorway`]; a door that comes without one (a hand-made or
+//! [`Space::doorway`](super::Space::doorway); a door that comes without one (a hand-made or
 //! imported model) gets the midline, along its long side, of its polygon's
 //! minimum-area rectangle (Freeman & Shapira 1975, "Determining the
 //! minimum-area encasing rectangle"; [`geo::MinimumRotatedRect`]).
 
 use geo::{ConvexHull, Coord, MinimumRotatedRect, MultiPoint};
 
+use serde_json::{Map, Value};
+
 use super::geometry::Point;
-use super::space::{Space, SpaceKind};
 
 /// A door's doorway line and width (see the module doc).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -43,36 +44,23 @@ impl Doorway {
     }
 }
 
-/// The doorway of a door space (see the module doc): its stored
-/// [`Space::doorway`] line when it has a finite one, else the midline of
-/// its polygon's minimum-area rectangle along the long side; its width is
-/// the `width_m` attribute when that is a positive finite number, else the
-/// line's length. `None` for other kinds and for doors without points.
-///
-/// ```
-/// use nrgdb::model::{Space, SpaceId, SpaceKind, doorway};
-/// // A 0.9 m wide doorway through a 0.3 m wall, turned 30°.
-/// let (s, c) = 30f64.to_radians().sin_cos();
-/// let turn = |[x, y]: [f64; 2]| [c * x - s * y, s * x + c * y];
-/// let ring = [[0.0, 0.0], [0.9, 0.0], [0.9, 0.3], [0.0, 0.3]].map(turn).to_vec();
-/// let door = Space::new(SpaceId(1), SpaceKind::Door, turn([0.45, 0.15]), ring);
-/// let d = doorway(&door).unwrap();
-/// assert!((d.width_m - 0.9).abs() < 1e-9);
-/// let m = d.middle();
-/// assert!((m[0] - door.anchor[0]).hypot(m[1] - door.anchor[1]) < 1e-9);
-/// ```
-pub fn doorway(space: &Space) -> Option<Doorway> {
-    if space.kind != SpaceKind::Door {
-        return None;
-    }
+/// The doorway of a door with the `stored` doorway line, `polygon` and
+/// `attributes` (see [`doorway`](super::doorway()), which calls this for a
+/// door space): the stored line when finite, else the polygon's midline;
+/// the `width_m` attribute when positive and finite, else the line's
+/// length. `None` for a polygon without points.
+pub(super) fn door_doorway(
+    stored: Option<[Point; 2]>,
+    polygon: &[Point],
+    attributes: &Map<String, Value>,
+) -> Option<Doorway> {
     let finite = |l: &[Point; 2]| l.iter().flatten().all(|c| c.is_finite());
-    let line = match space.doorway.filter(finite) {
+    let line = match stored.filter(finite) {
         Some(line) => line,
-        None => polygon_doorway(&space.polygon)?,
+        None => polygon_doorway(polygon)?,
     };
     let length = (line[1][0] - line[0][0]).hypot(line[1][1] - line[0][1]);
-    let declared = space
-        .attributes
+    let declared = attributes
         .get("width_m")
         .and_then(serde_json::Value::as_f64)
         .filter(|w| w.is_finite() && *w > 0.0);
@@ -178,10 +166,9 @@ fn finite_points(points: &[Point]) -> Vec<Point> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::SpaceId;
 
-    fn door(ring: Vec<Point>) -> Space {
-        Space::new(SpaceId(1), SpaceKind::Door, [0.0, 0.0], ring)
+    fn of(ring: &[Point]) -> Option<Doorway> {
+        door_doorway(None, ring, &Map::new())
     }
 
     #[test]
@@ -194,9 +181,9 @@ mod tests {
             [0.2, 0.5],
             [0.0, 0.5],
         ];
-        let d = doorway(&door(l)).unwrap();
+        let d = of(&l).unwrap();
         assert!((d.width_m - 1.0).abs() < 1e-9, "{d:?}");
-        assert_eq!(doorway(&door(vec![])), None);
+        assert_eq!(of(&[]), None);
     }
 
     #[test]
@@ -224,19 +211,17 @@ mod tests {
 
     #[test]
     fn stored_line_and_declared_width_win() {
-        let mut d = door(vec![[0.0, 0.0], [1.0, 0.0], [1.0, 0.3], [0.0, 0.3]]);
+        let ring = [[0.0, 0.0], [1.0, 0.0], [1.0, 0.3], [0.0, 0.3]];
         // A 0.3 m wall with a doorway 0.4 m wide: the stored line says
         // which side is the opening, whatever the rectangle's long side.
-        d.doorway = Some([[0.5, 0.0], [0.5, 0.4]]);
-        assert!((doorway(&d).unwrap().width_m - 0.4).abs() < 1e-12);
-        d.attributes
-            .insert("width_m".into(), serde_json::json!(0.35));
-        assert_eq!(doorway(&d).unwrap().width_m, 0.35);
-        d.attributes
-            .insert("width_m".into(), serde_json::json!("wide"));
-        assert!((doorway(&d).unwrap().width_m - 0.4).abs() < 1e-12);
-        d.kind = SpaceKind::Room;
-        assert_eq!(doorway(&d), None);
+        let line = Some([[0.5, 0.0], [0.5, 0.4]]);
+        let mut attributes = Map::new();
+        let width = |a: &Map<String, Value>| door_doorway(line, &ring, a).unwrap().width_m;
+        assert!((width(&attributes) - 0.4).abs() < 1e-12);
+        attributes.insert("width_m".into(), serde_json::json!(0.35));
+        assert_eq!(width(&attributes), 0.35);
+        attributes.insert("width_m".into(), serde_json::json!("wide"));
+        assert!((width(&attributes) - 0.4).abs() < 1e-12);
     }
 
     #[test]

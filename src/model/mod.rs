@@ -19,7 +19,7 @@ mod repair;
 mod space;
 
 pub use connection::{Connection, ConnectionKind, ConnectionPaths};
-pub use doorway::{Doorway, convex_hull, doorway, polygon_doorway};
+pub use doorway::{Doorway, convex_hull, polygon_doorway};
 pub use error::ModelError;
 pub use geometry::{
     Point, Ring, point_in_ring, polygon_area, polygon_centroid, ring_is_ccw, segment_distance,
@@ -28,4 +28,4 @@ pub use graph::ConnectivityGraph;
 pub use interior_point::pole_of_inaccessibility;
 pub use nrg::{MAX_COORD_M, MAX_NAME_CHARS, Nrg};
 pub use repair::{MAX_OVERLAP_TESTS, MIN_OVERLAP_M2, Repair, RepairKind, repair_geometry};
-pub use space::{Space, SpaceId, SpaceKind};
+pub use space::{Space, SpaceId, SpaceKind, doorway};

@@ -6,7 +6,7 @@ use std::str::FromStr;
 use serde::{Deserialize, Serialize};
 use serde_json::{Map, Value};
 
-use super::doorway::doorway;
+use super::doorway::{Doorway, door_doorway};
 use super::geometry::{Point, Ring, polygon_area};
 
 /// Stable integer identity of a space within one map.
@@ -219,4 +219,32 @@ impl Space {
             None => format!("{} {}", self.kind, self.id),
         }
     }
+}
+
+/// The doorway of a door space ([`Doorway`]: the line across its opening
+/// from jamb to jamb, through the middle of the wall, and its width): its stored
+/// [`Space::doorway`] line when it has a finite one, else the midline of
+/// its polygon's minimum-area rectangle along the long side; its width is
+/// the `width_m` attribute when that is a positive finite number, else the
+/// line's length. `None` for other kinds and for doors without points.
+///
+/// ```
+/// use nrgdb::model::{Space, SpaceId, SpaceKind, doorway};
+/// // A 0.9 m wide doorway through a 0.3 m wall, turned 30°.
+/// let (s, c) = 30f64.to_radians().sin_cos();
+/// let turn = |[x, y]: [f64; 2]| [c * x - s * y, s * x + c * y];
+/// let ring = [[0.0, 0.0], [0.9, 0.0], [0.9, 0.3], [0.0, 0.3]].map(turn).to_vec();
+/// let door = Space::new(SpaceId(1), SpaceKind::Door, turn([0.45, 0.15]), ring);
+/// let d = doorway(&door).unwrap();
+/// assert!((d.width_m - 0.9).abs() < 1e-9);
+/// let m = d.middle();
+/// assert!((m[0] - door.anchor[0]).hypot(m[1] - door.anchor[1]) < 1e-9);
+/// let room = Space::new(SpaceId(2), SpaceKind::Room, [0.0, 0.0], door.polygon.clone());
+/// assert_eq!(doorway(&room), None);
+/// ```
+pub fn doorway(space: &Space) -> Option<Doorway> {
+    if space.kind != SpaceKind::Door {
+        return None;
+    }
+    door_doorway(space.doorway, &space.polygon, &space.attributes)
 }
