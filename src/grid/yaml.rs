@@ -48,6 +48,36 @@ struct RawYaml {
     mode: Option<String>,
 }
 
+/// Deepest `[`/`{` nesting accepted in a map YAML.
+const MAX_FLOW_DEPTH: usize = 16;
+
+/// The deepest nesting of flow brackets in `text`, outside quotes and
+/// comments (stops counting past [`MAX_FLOW_DEPTH`]).
+fn flow_depth(text: &str) -> usize {
+    let (mut depth, mut deepest) = (0usize, 0usize);
+    let mut quote: Option<char> = None;
+    let mut comment = false;
+    for c in text.chars() {
+        match (quote, c) {
+            _ if comment => comment = c != '\n',
+            (Some(q), c) if c == q => quote = None,
+            (Some(_), _) => {}
+            (None, '\'' | '"') => quote = Some(c),
+            (None, '#') => comment = true,
+            (None, '[' | '{') => {
+                depth += 1;
+                deepest = deepest.max(depth);
+                if deepest > MAX_FLOW_DEPTH {
+                    break;
+                }
+            }
+            (None, ']' | '}') => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    deepest
+}
+
 impl MapYaml {
     /// Reads and validates a map YAML file (at most
     /// [`MAX_YAML_BYTES`](super::MAX_YAML_BYTES)).
@@ -71,6 +101,17 @@ impl MapYaml {
     /// Parses YAML text; `path` names the file in errors and resolves `image`.
     pub fn parse(text: &str, path: &Path) -> Result<MapYaml, GridError> {
         let p = || path.to_path_buf();
+        // The YAML parser's time grows steeply with flow nesting (100 000
+        // brackets took 30 s; issue 21, defect 8); a map YAML has one level.
+        let depth = flow_depth(text);
+        if depth > MAX_FLOW_DEPTH {
+            return Err(GridError::Yaml {
+                path: p(),
+                message: format!(
+                    "brackets nested {depth} deep, more than {MAX_FLOW_DEPTH} (a map yaml has one list: origin)"
+                ),
+            });
+        }
         let raw: RawYaml = serde_yaml_ng::from_str(text).map_err(|e| GridError::Yaml {
             path: p(),
             message: e.to_string(),
@@ -166,6 +207,22 @@ impl MapYaml {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn issue_21_defect_8_deeply_nested_yaml_is_refused_at_once() {
+        let text = format!(
+            "image: a.pgm\nfoo: {}{}\n",
+            "[".repeat(100_000),
+            "]".repeat(100_000)
+        );
+        let e = MapYaml::parse(&text, Path::new("deep.yaml"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("deep.yaml") && e.contains("nested"), "{e}");
+        // Brackets in quotes and comments are text.
+        let ok = "image: '[[[[[[[[[[[[[[[[[[[[.pgm'\nresolution: 0.05 # [[[[[[[[[[[[[[[[[[[[\norigin: [0, 0, 0]\n";
+        assert!(MapYaml::parse(ok, Path::new("ok.yaml")).is_ok());
+    }
 
     #[test]
     fn parses_a_ros_yaml() {
