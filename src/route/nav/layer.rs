@@ -11,6 +11,7 @@ use std::sync::OnceLock;
 use super::clearance::{clear_walk, edge_open, traversal_open};
 use super::dead_ends::DeadEnds;
 use super::funnel::{dist, funnel, polyline_length};
+use super::hierarchy::Hierarchy;
 use super::mesh::{Across, Mesh, NONE};
 use crate::model::{Nrg, Point};
 
@@ -190,6 +191,9 @@ pub(crate) struct Layer {
     /// it: a revision that is only listed, located or diffed never pays
     /// for them.
     tables: Vec<OnceLock<SpaceTable>>,
+    /// The contracted crossing graph, built (with every table) when a
+    /// route first needs it; `None` when the level is too dense for it.
+    hierarchy: OnceLock<Option<Hierarchy>>,
 }
 
 impl Layer {
@@ -221,7 +225,15 @@ impl Layer {
             local,
             anchors,
             tables: (0..mesh.space_ids.len()).map(|_| OnceLock::new()).collect(),
+            hierarchy: OnceLock::new(),
         }
+    }
+
+    /// The contraction hierarchy of this level, built on first use.
+    pub fn hierarchy(&self, mesh: &Mesh) -> Option<&Hierarchy> {
+        self.hierarchy
+            .get_or_init(|| Hierarchy::new(mesh, self))
+            .as_ref()
     }
 
     /// The table of space `s`, built on first use.

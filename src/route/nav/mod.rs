@@ -18,6 +18,7 @@ mod clearance;
 mod dead_ends;
 mod funnel;
 mod gate;
+mod hierarchy;
 pub(crate) mod layer;
 pub(crate) mod mesh;
 mod openings;

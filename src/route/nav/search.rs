@@ -135,7 +135,9 @@ pub(crate) struct Walk {
 
 /// The shortest walk from `from` to `to` not entering spaces marked in
 /// `banned` (the ends' own spaces are allowed). `None` when there is none
-/// or the budget ran out (the caller checks the budget).
+/// or the budget ran out (the caller checks the budget). With nothing
+/// banned the level's contraction hierarchy answers; else (or when the
+/// level has none) A* over the openings.
 pub(crate) fn shortest_walk(
     mesh: &Mesh,
     layer: &Layer,
@@ -143,6 +145,42 @@ pub(crate) fn shortest_walk(
     to: &End,
     banned: &[bool],
     budget: &Budget,
+) -> Option<Walk> {
+    let direct = direct_length(mesh, layer, from, to);
+    if !banned.contains(&true)
+        && let Some(hierarchy) = layer.hierarchy(mesh)
+    {
+        let found = hierarchy.shortest(&seeds(mesh, from), &seeds(mesh, to), direct, budget);
+        if budget.is_expired() || (found.is_none() && !direct.is_finite()) {
+            return None;
+        }
+        let chain = found.map(|(_, chain)| chain).unwrap_or_default();
+        return assemble(mesh, layer, from, to, &chain);
+    }
+    search_openings(mesh, layer, from, to, banned, budget, direct)
+}
+
+/// The walked length between two ends in one space without leaving it
+/// (infinite for ends in different spaces).
+fn direct_length(mesh: &Mesh, layer: &Layer, from: &End, to: &End) -> f64 {
+    if from.space != to.space {
+        return f64::INFINITY;
+    }
+    from.direct(mesh, layer, to).map_or(f64::INFINITY, |c| {
+        polyline_length(&walk(mesh, from.at, to.at, &c, layer.clearance_m))
+    })
+}
+
+/// [`shortest_walk`] by A* over the openings, beating `direct` (the
+/// walk inside one space, when the ends share it).
+pub(crate) fn search_openings(
+    mesh: &Mesh,
+    layer: &Layer,
+    from: &End,
+    to: &End,
+    banned: &[bool],
+    budget: &Budget,
+    direct: f64,
 ) -> Option<Walk> {
     // Nodes are opening crossings: opening o, sample k is node
     // o * SAMPLES + k.
@@ -156,14 +194,9 @@ pub(crate) fn shortest_walk(
     let mut heap: BinaryHeap<Reverse<(u64, u32)>> = BinaryHeap::new();
     let point = |n: u32| layer.samples[n as usize / SAMPLES][n as usize % SAMPLES].1;
     let h = |n: u32| dist(point(n), to.at);
-    let mut best = f64::INFINITY;
+    let mut best = direct;
     // The goal's predecessor node (NONE: direct, inside one space).
     let mut best_pred = NONE;
-    if from.space == to.space
-        && let Some(c) = from.direct(mesh, layer, to)
-    {
-        best = polyline_length(&walk(mesh, from.at, to.at, &c, layer.clearance_m));
-    }
     let scope = Scope::new(mesh, &layer.dead_ends, &[from.space, to.space]);
     let from_openings = &openings.of_space[from.space as usize];
     scope.for_each_slot(mesh, from.space, |j| {
@@ -241,17 +274,35 @@ pub(crate) fn shortest_walk(
         }
     }
     chain.reverse();
-    assemble(mesh, layer, from, to, &chain, &pred)
+    let chain: Vec<(u32, u32)> = chain.iter().map(|n| (*n, pred[*n as usize].1)).collect();
+    assemble(mesh, layer, from, to, &chain)
 }
 
-/// The triangles of the whole walk through `chain`, then the funnel.
+/// The crossings of an end's space with the walked length to each
+/// (unreachable ones left out), as hierarchy seeds.
+fn seeds(mesh: &Mesh, end: &End) -> Vec<(u32, f64)> {
+    let openings = &mesh.openings.of_space[end.space as usize];
+    let mut out = Vec::with_capacity(openings.len() * SAMPLES);
+    for (j, o) in openings.iter().enumerate() {
+        for k in 0..SAMPLES {
+            let c = end.to_crossings[j * SAMPLES + k];
+            if c.is_finite() {
+                out.push((o * SAMPLES as u32 + k as u32, c));
+            }
+        }
+    }
+    out
+}
+
+/// The triangles of the whole walk through `chain` (crossing nodes, each
+/// with the space walked through to reach it from the one before; the
+/// first's is ignored), then the funnel.
 fn assemble(
     mesh: &Mesh,
     layer: &Layer,
     from: &End,
     to: &End,
-    chain: &[u32],
-    pred: &[(u32, u32)],
+    chain: &[(u32, u32)],
 ) -> Option<Walk> {
     // The source index of node `n` in space `s`'s table.
     let index_in = |s: u32, n: u32| {
@@ -263,17 +314,16 @@ fn assemble(
     if chain.is_empty() {
         tris = from.direct(mesh, layer, to)?;
     } else {
-        let first = chain[0];
+        let first = chain[0].0;
         tris.extend(from.channel(mesh, layer, index_in(from.space, first)?, true)?);
         for w in chain.windows(2) {
-            let (g, h) = (w[0], w[1]);
-            let t = pred[h as usize].1;
+            let (g, (h, t)) = (w[0].0, w[1]);
             spaces.push(t);
             let table = layer.table(mesh, t);
             let c = table.channel(mesh, &layer.local, index_in(t, g)?, index_in(t, h)?)?;
             tris.extend(c);
         }
-        let last = *chain.last()?;
+        let last = chain.last()?.0;
         spaces.push(to.space);
         tris.extend(to.channel(mesh, layer, index_in(to.space, last)?, false)?);
     }
@@ -286,7 +336,7 @@ fn assemble(
         spaces,
         gates: chain
             .iter()
-            .map(|n| layer.samples[*n as usize / SAMPLES][*n as usize % SAMPLES].0)
+            .map(|(n, _)| layer.samples[*n as usize / SAMPLES][*n as usize % SAMPLES].0)
             .collect(),
     })
 }
@@ -429,5 +479,68 @@ impl<'a> Scope<'a> {
                 f(*j as usize);
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::Arc;
+
+    use super::*;
+    use crate::query::demo;
+    use crate::route::{Endpoint, NavMesh, Profile};
+
+    /// The hierarchy and the A* over openings find walks of the same
+    /// length between every pair of spaces (and from points).
+    fn agree(nav: &NavMesh, profile: Profile) {
+        let level = nav.level(&profile);
+        let (mesh, layer) = (&level.mesh, &level.layer);
+        assert!(layer.hierarchy(mesh).is_some());
+        let none = vec![false; mesh.space_ids.len()];
+        let budget = Budget::unlimited();
+        let mut ends: Vec<Endpoint> = mesh
+            .space_ids
+            .iter()
+            .map(|id| Endpoint::Space(*id))
+            .collect();
+        ends.push(Endpoint::Point([3.3, 6.1]));
+        ends.push(Endpoint::Point([17.9, 5.2]));
+        let mut compared = 0;
+        for a in &ends {
+            for b in &ends {
+                let (Ok(from), Ok(to)) = (nav.end(&level, a), nav.end(&level, b)) else {
+                    continue;
+                };
+                let fast = shortest_walk(mesh, layer, &from, &to, &none, &budget);
+                let direct = direct_length(mesh, layer, &from, &to);
+                let slow = search_openings(mesh, layer, &from, &to, &none, &budget, direct);
+                match (fast, slow) {
+                    (Some(f), Some(s)) => assert!(
+                        (f.length_m - s.length_m).abs() < 1e-6,
+                        "{a:?} -> {b:?}: hierarchy {} m, A* {} m",
+                        f.length_m,
+                        s.length_m
+                    ),
+                    (None, None) => {}
+                    (f, s) => panic!("{a:?} -> {b:?}: hierarchy {f:?}, A* {s:?}"),
+                }
+                compared += 1;
+            }
+        }
+        assert!(compared > 100, "{compared} pairs");
+    }
+
+    #[test]
+    fn hierarchy_and_astar_agree_on_the_demo_building() {
+        let nav = NavMesh::new(Arc::new(demo::building(7)));
+        agree(&nav, Profile::default());
+        agree(&nav, Profile::exact());
+        agree(
+            &nav,
+            Profile {
+                clearance_m: 0.5,
+                ..Profile::default()
+            },
+        );
     }
 }
