@@ -61,12 +61,18 @@ impl SpaceTable {
         self.sources.len().saturating_sub(1)
     }
 
-    /// The triangles from source `i` to source `j`, both included.
-    pub fn channel(&self, mesh: &Mesh, local: &[u32], i: usize, j: usize) -> Option<Vec<u32>> {
+    /// Appends the triangles from source `i` to source `j`, both included,
+    /// to `out`.
+    pub fn channel_into(
+        &self,
+        mesh: &Mesh,
+        local: &[u32],
+        i: usize,
+        j: usize,
+        out: &mut Vec<u32>,
+    ) -> Option<()> {
         let target = self.sources.get(j)?.0;
-        let mut c = self.trees.get(i)?.walk(mesh, local, target)?;
-        c.reverse();
-        Some(c)
+        self.trees.get(i)?.walk_into(mesh, local, target, true, out)
     }
 }
 
@@ -133,20 +139,40 @@ impl Tree {
     /// The triangles from `target` back to the root, or `None` when the
     /// tree does not reach it.
     pub fn walk(&self, mesh: &Mesh, local: &[u32], target: u32) -> Option<Vec<u32>> {
+        let mut out = Vec::new();
+        self.walk_into(mesh, local, target, false, &mut out)?;
+        Some(out)
+    }
+
+    /// Appends the triangles between the root and `target` to `out`, from
+    /// the root when `from_root`, else from `target`; `None` when the tree
+    /// does not reach it.
+    pub fn walk_into(
+        &self,
+        mesh: &Mesh,
+        local: &[u32],
+        target: u32,
+        from_root: bool,
+        out: &mut Vec<u32>,
+    ) -> Option<()> {
         let lt = *local.get(target as usize)? as usize;
         if !self.cost.get(lt)?.is_finite() {
             return None;
         }
-        let mut out = vec![target];
+        let start = out.len();
+        out.push(target);
         let mut t = target;
         while self.pred[local[t as usize] as usize] != NONE {
             t = self.pred[local[t as usize] as usize];
             out.push(t);
-            if out.len() > mesh.tris.len() {
+            if out.len() - start > mesh.tris.len() {
                 return None;
             }
         }
-        Some(out)
+        if from_root {
+            out[start..].reverse();
+        }
+        Some(())
     }
 }
 
@@ -164,10 +190,12 @@ pub(crate) fn walk(mesh: &Mesh, from: Point, to: Point, channel: &[u32], r: f64)
     if r <= 0.0 {
         return funnel(from, to, &portals(mesh, channel));
     }
-    let ends: Vec<(u32, u32)> = channel
-        .windows(2)
-        .filter_map(|w| mesh.portal_vertices(w[0], w[1]))
-        .collect();
+    let mut ends: Vec<(u32, u32)> = Vec::with_capacity(channel.len());
+    ends.extend(
+        channel
+            .windows(2)
+            .filter_map(|w| mesh.portal_vertices(w[0], w[1])),
+    );
     clear_walk(mesh, from, to, &ends, r)
 }
 

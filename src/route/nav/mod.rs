@@ -29,6 +29,7 @@ use std::sync::{Arc, Mutex};
 
 use serde::Serialize;
 
+pub(crate) use self::funnel::dist;
 use self::layer::Layer;
 use self::mesh::Mesh;
 pub(crate) use self::search::Walk;

@@ -82,25 +82,26 @@ impl End {
         }
     }
 
-    /// Triangles from this end to source `j` (an opening crossing) of its space
-    /// (`outbound`) or from there to this end.
-    fn channel(&self, mesh: &Mesh, layer: &Layer, j: usize, outbound: bool) -> Option<Vec<u32>> {
+    /// Appends the triangles from this end to source `j` (an opening
+    /// crossing) of its space (`outbound`) or from there to this end.
+    fn channel_into(
+        &self,
+        mesh: &Mesh,
+        layer: &Layer,
+        j: usize,
+        outbound: bool,
+        out: &mut Vec<u32>,
+    ) -> Option<()> {
         let table = layer.table(mesh, self.space);
         match &self.kind {
             EndKind::Anchor => {
                 let a = table.anchor();
-                if outbound {
-                    table.channel(mesh, &layer.local, a, j)
-                } else {
-                    table.channel(mesh, &layer.local, j, a)
-                }
+                let (i, j) = if outbound { (a, j) } else { (j, a) };
+                table.channel_into(mesh, &layer.local, i, j, out)
             }
             EndKind::Point(tree) => {
-                let mut c = tree.walk(mesh, &layer.local, table.sources.get(j)?.0)?;
-                if outbound {
-                    c.reverse();
-                }
-                Some(c)
+                let target = table.sources.get(j)?.0;
+                tree.walk_into(mesh, &layer.local, target, outbound, out)
             }
         }
     }
@@ -310,22 +311,24 @@ fn assemble(
         mesh.openings.slot(o, s).map(|j| j * SAMPLES + k)
     };
     let mut tris: Vec<u32> = Vec::new();
-    let mut spaces = vec![from.space];
+    let mut spaces = Vec::with_capacity(chain.len() + 2);
+    spaces.push(from.space);
     if chain.is_empty() {
         tris = from.direct(mesh, layer, to)?;
     } else {
+        tris.reserve(8 * chain.len() + 16);
         let first = chain[0].0;
-        tris.extend(from.channel(mesh, layer, index_in(from.space, first)?, true)?);
+        from.channel_into(mesh, layer, index_in(from.space, first)?, true, &mut tris)?;
         for w in chain.windows(2) {
             let (g, (h, t)) = (w[0].0, w[1]);
             spaces.push(t);
             let table = layer.table(mesh, t);
-            let c = table.channel(mesh, &layer.local, index_in(t, g)?, index_in(t, h)?)?;
-            tris.extend(c);
+            let (i, j) = (index_in(t, g)?, index_in(t, h)?);
+            table.channel_into(mesh, &layer.local, i, j, &mut tris)?;
         }
         let last = chain.last()?.0;
         spaces.push(to.space);
-        tris.extend(to.channel(mesh, layer, index_in(to.space, last)?, false)?);
+        to.channel_into(mesh, layer, index_in(to.space, last)?, false, &mut tris)?;
     }
     tris.dedup();
     let points = walk(mesh, from.at, to.at, &tris, layer.clearance_m);
