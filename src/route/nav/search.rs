@@ -493,9 +493,11 @@ mod tests {
     use crate::query::demo;
     use crate::route::{Endpoint, NavMesh, Profile};
 
-    /// The hierarchy and the A* over openings find walks of the same
-    /// length between every pair of spaces (and from points).
-    fn agree(nav: &NavMesh, profile: Profile) {
+    /// The hierarchy never finds a longer walk than the A* over openings
+    /// between every `stride`-th pair of spaces (and points): it is exact
+    /// on the crossing graph, which the A* prunes (dead ends, no step back
+    /// into the space just left), so now and then it finds a shorter one.
+    fn agree(nav: &NavMesh, profile: Profile, stride: usize) {
         let level = nav.level(&profile);
         let (mesh, layer) = (&level.mesh, &level.layer);
         assert!(layer.hierarchy(mesh).is_some());
@@ -508,9 +510,12 @@ mod tests {
             .collect();
         ends.push(Endpoint::Point([3.3, 6.1]));
         ends.push(Endpoint::Point([17.9, 5.2]));
-        let mut compared = 0;
-        for a in &ends {
-            for b in &ends {
+        let (mut compared, mut shorter, mut longer) = (0, 0, Vec::new());
+        for (i, a) in ends.iter().enumerate() {
+            for (j, b) in ends.iter().enumerate() {
+                if (i * ends.len() + j) % stride != 0 {
+                    continue;
+                }
                 let (Ok(from), Ok(to)) = (nav.end(&level, a), nav.end(&level, b)) else {
                     continue;
                 };
@@ -518,32 +523,53 @@ mod tests {
                 let direct = direct_length(mesh, layer, &from, &to);
                 let slow = search_openings(mesh, layer, &from, &to, &none, &budget, direct);
                 match (fast, slow) {
-                    (Some(f), Some(s)) => assert!(
-                        (f.length_m - s.length_m).abs() < 1e-6,
-                        "{a:?} -> {b:?}: hierarchy {} m, A* {} m",
-                        f.length_m,
-                        s.length_m
-                    ),
+                    (Some(f), Some(s)) => {
+                        let d = f.length_m - s.length_m;
+                        if d > 1e-6 {
+                            longer.push((*a, *b, f.length_m, s.length_m));
+                        } else if d < -1e-6 {
+                            shorter += 1;
+                        }
+                    }
                     (None, None) => {}
                     (f, s) => panic!("{a:?} -> {b:?}: hierarchy {f:?}, A* {s:?}"),
                 }
                 compared += 1;
             }
         }
+        eprintln!(
+            "clearance {}: {compared} pairs, hierarchy shorter on {shorter}, longer on {}: {:?}",
+            profile.clearance_m,
+            longer.len(),
+            &longer[..longer.len().min(5)]
+        );
         assert!(compared > 100, "{compared} pairs");
+        assert!(longer.is_empty());
+    }
+
+    #[test]
+    fn hierarchy_and_astar_agree_on_willow_full() {
+        let Some(nrg) = crate::fixtures::shared_map_nrg("willow-full") else {
+            eprintln!("notice: willow-full not found (NRGDB_SHARED); skipped");
+            return;
+        };
+        let nav = NavMesh::new(Arc::new(nrg));
+        agree(&nav, Profile::default(), 7);
+        agree(&nav, Profile::exact(), 7);
     }
 
     #[test]
     fn hierarchy_and_astar_agree_on_the_demo_building() {
         let nav = NavMesh::new(Arc::new(demo::building(7)));
-        agree(&nav, Profile::default());
-        agree(&nav, Profile::exact());
+        agree(&nav, Profile::default(), 1);
+        agree(&nav, Profile::exact(), 1);
         agree(
             &nav,
             Profile {
                 clearance_m: 0.5,
                 ..Profile::default()
             },
+            1,
         );
     }
 }
