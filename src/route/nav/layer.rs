@@ -178,10 +178,9 @@ impl Tree {
 
 /// The portals of a channel of triangles, `(right, left)` in walking order.
 pub(crate) fn portals(mesh: &Mesh, channel: &[u32]) -> Vec<(Point, Point)> {
-    channel
-        .windows(2)
-        .filter_map(|w| mesh.portal(w[0], w[1]))
-        .collect()
+    let mut out = Vec::with_capacity(channel.len());
+    out.extend(channel.windows(2).filter_map(|w| mesh.portal(w[0], w[1])));
+    out
 }
 
 /// The walked polyline from `from` to `to` through a channel, keeping
