@@ -115,11 +115,16 @@ fn generated(c: &mut Criterion) {
     });
     let nav = NavMesh::new(nrg);
     let request = RouteRequest::new(SpaceId(3), SpaceId(9375));
+    let first = std::time::Instant::now();
     assert_eq!(
         shortest_route(&nav, &request, &Budget::unlimited())
             .unwrap()
             .len(),
         1
+    );
+    eprintln!(
+        "generated-{spaces}: first route (tables and hierarchy) {:?}",
+        first.elapsed()
     );
     c.bench_function(&format!("route/shortest/generated-{spaces}"), |b| {
         b.iter(|| shortest_route(&nav, black_box(&request), &Budget::unlimited()).unwrap())
