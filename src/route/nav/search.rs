@@ -513,7 +513,7 @@ mod tests {
         let (mut compared, mut shorter, mut longer) = (0, 0, Vec::new());
         for (i, a) in ends.iter().enumerate() {
             for (j, b) in ends.iter().enumerate() {
-                if (i * ends.len() + j) % stride != 0 {
+                if !(i * ends.len() + j).is_multiple_of(stride) {
                     continue;
                 }
                 let (Ok(from), Ok(to)) = (nav.end(&level, a), nav.end(&level, b)) else {
