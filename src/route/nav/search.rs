@@ -311,8 +311,6 @@ fn assemble(
         mesh.openings.slot(o, s).map(|j| j * SAMPLES + k)
     };
     let mut tris: Vec<u32> = Vec::new();
-    let mut spaces = Vec::with_capacity(chain.len() + 2);
-    spaces.push(from.space);
     if chain.is_empty() {
         tris = from.direct(mesh, layer, to)?;
     } else {
@@ -321,27 +319,41 @@ fn assemble(
         from.channel_into(mesh, layer, index_in(from.space, first)?, true, &mut tris)?;
         for w in chain.windows(2) {
             let (g, (h, t)) = (w[0].0, w[1]);
-            spaces.push(t);
             let table = layer.table(mesh, t);
             let (i, j) = (index_in(t, g)?, index_in(t, h)?);
             table.channel_into(mesh, &layer.local, i, j, &mut tris)?;
         }
         let last = chain.last()?.0;
-        spaces.push(to.space);
         to.channel_into(mesh, layer, index_in(to.space, last)?, false, &mut tris)?;
     }
     tris.dedup();
+    let (spaces, gates) = crossed(layer, from, to, chain);
     let points = walk(mesh, from.at, to.at, &tris, layer.clearance_m);
     let length_m = polyline_length(&points);
     Some(Walk {
         points,
         length_m,
         spaces,
-        gates: chain
-            .iter()
-            .map(|(n, _)| layer.samples[*n as usize / SAMPLES][*n as usize % SAMPLES].0)
-            .collect(),
+        gates,
     })
+}
+
+/// The spaces a walk through `chain` enters (start and goal included) and
+/// the gate edges it crosses between them. A node walked to and from
+/// through the same space is touched, not crossed (the hierarchy may route
+/// along a doorway's edge without going through): it adds neither.
+fn crossed(layer: &Layer, from: &End, to: &End, chain: &[(u32, u32)]) -> (Vec<u32>, Vec<u32>) {
+    let mut spaces = Vec::with_capacity(chain.len() + 1);
+    let mut gates = Vec::with_capacity(chain.len());
+    spaces.push(from.space);
+    for (i, (n, _)) in chain.iter().enumerate() {
+        let after = chain.get(i + 1).map_or(to.space, |c| c.1);
+        if spaces.last() != Some(&after) {
+            gates.push(layer.samples[*n as usize / SAMPLES][*n as usize % SAMPLES].0);
+            spaces.push(after);
+        }
+    }
+    (spaces, gates)
 }
 
 /// Walked length from `from` to the anchor of every space (dense index),
@@ -524,6 +536,12 @@ mod tests {
                 let slow = search_openings(mesh, layer, &from, &to, &none, &budget, direct);
                 match (fast, slow) {
                     (Some(f), Some(s)) => {
+                        assert!(
+                            f.spaces.windows(2).all(|w| w[0] != w[1]),
+                            "{a:?} -> {b:?}: a space entered twice in a row: {:?}",
+                            f.spaces
+                        );
+                        assert_eq!(f.spaces.len(), f.gates.len() + 1);
                         let d = f.length_m - s.length_m;
                         if d > 1e-6 {
                             longer.push((*a, *b, f.length_m, s.length_m));
