@@ -3,7 +3,9 @@
 //! NRGDB_SHARED or ../shared has it) and corner to corner on the generated
 //! 10 001-space building; building the layer next to extracting the map.
 //! Targets (issue 18): ≤ 30 µs median on willow-full, ≤ 2 ms on 10 000
-//! spaces, building the layer ≤ 20 % of extraction time.
+//! spaces, building the layer ≤ 20 % of extraction time. The layer's
+//! tables and contraction hierarchy are built by the first route of a
+//! clearance (`nav-build-and-first-route` measures that).
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use std::hint::black_box;
@@ -57,11 +59,19 @@ fn willow(c: &mut Criterion) {
     c.bench_function("route/nav-build/willow-full", |b| {
         b.iter(|| NavMesh::new(black_box(nrg.clone())))
     });
-    let nav = NavMesh::new(nrg.clone());
     let requests: Vec<RouteRequest> = pairs(&nrg)
         .into_iter()
         .map(|(a, b)| RouteRequest::new(a, b))
         .collect();
+    // What the first route of a revision pays on top: every space's table
+    // and the contraction hierarchy of its clearance.
+    c.bench_function("route/nav-build-and-first-route/willow-full", |b| {
+        b.iter(|| {
+            let nav = NavMesh::new(black_box(nrg.clone()));
+            shortest_route(&nav, &requests[0], &Budget::unlimited()).unwrap()
+        })
+    });
+    let nav = NavMesh::new(nrg.clone());
     for (name, profile) in [
         ("clearance-0.2", Profile::default()),
         ("exact", Profile::exact()),
@@ -105,11 +115,16 @@ fn generated(c: &mut Criterion) {
     });
     let nav = NavMesh::new(nrg);
     let request = RouteRequest::new(SpaceId(3), SpaceId(9375));
+    let first = std::time::Instant::now();
     assert_eq!(
         shortest_route(&nav, &request, &Budget::unlimited())
             .unwrap()
             .len(),
         1
+    );
+    eprintln!(
+        "generated-{spaces}: first route (tables and hierarchy) {:?}",
+        first.elapsed()
     );
     c.bench_function(&format!("route/shortest/generated-{spaces}"), |b| {
         b.iter(|| shortest_route(&nav, black_box(&request), &Budget::unlimited()).unwrap())

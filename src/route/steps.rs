@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use super::Route;
-use super::nav::{Profile, Walk, mesh::Mesh};
+use super::nav::{Profile, Walk, dist, mesh::Mesh};
 use crate::model::{Nrg, Point, SpaceId, SpaceKind};
 
 /// The manoeuvre at the end of a step.
@@ -107,7 +107,7 @@ fn crossing(points: &[Point], from: usize, a: Point, b: Point, offset: f64) -> (
     );
     for i in from..points.len().saturating_sub(1) {
         let (p, q) = (points[i], points[i + 1]);
-        let len = (q[0] - p[0]).hypot(q[1] - p[1]);
+        let len = dist(p, q);
         // Closest approach of the segments, by sampling the path segment's
         // intersection with the gate's line.
         let (dx, dy) = (q[0] - p[0], q[1] - p[1]);
@@ -175,7 +175,7 @@ pub(crate) fn describe(nrg: &Nrg, mesh: &Mesh, legs: &[Walk], profile: &Profile)
             let (i, s, x) = crossing(&points, seg, a, b, at);
             at += points[seg..=i.min(points.len().saturating_sub(1))]
                 .windows(2)
-                .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]))
+                .map(|w| dist(w[0], w[1]))
                 .sum::<f64>();
             seg = i;
             crossings.push((s, x));
@@ -183,19 +183,24 @@ pub(crate) fn describe(nrg: &Nrg, mesh: &Mesh, legs: &[Walk], profile: &Profile)
     }
     let length_m: f64 = legs.iter().map(|l| l.length_m).sum();
     let ids: Vec<SpaceId> = spaces.iter().map(|s| mesh.space_ids[*s as usize]).collect();
-    let kind = |id: SpaceId| nrg.space(id).map(|s| s.kind);
+    // Each space's kind, looked up once (a long route passes thousands).
+    let kinds: Vec<Option<SpaceKind>> = ids
+        .iter()
+        .map(|id| nrg.space(*id).map(|s| s.kind))
+        .collect();
     let label = |id: SpaceId| {
         nrg.space(id)
             .map_or_else(|| format!("space {id}"), |s| s.label())
     };
     let doors: Vec<SpaceId> = ids
         .iter()
-        .filter(|id| kind(**id) == Some(SpaceKind::Door))
-        .copied()
+        .zip(&kinds)
+        .filter(|(_, k)| **k == Some(SpaceKind::Door))
+        .map(|(id, _)| *id)
         .collect();
     let cumulative: Vec<f64> = std::iter::once(0.0)
         .chain(points.windows(2).scan(0.0, |acc, w| {
-            *acc += (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]);
+            *acc += dist(w[0], w[1]);
             Some(*acc)
         }))
         .collect();
@@ -217,7 +222,7 @@ pub(crate) fn describe(nrg: &Nrg, mesh: &Mesh, legs: &[Walk], profile: &Profile)
         // The next space that is not a door, and the doors on the way.
         let mut j = i + 1;
         let mut through = Vec::new();
-        while j + 1 < ids.len() && kind(ids[j]) == Some(SpaceKind::Door) {
+        while j + 1 < ids.len() && kinds[j] == Some(SpaceKind::Door) {
             through.push(ids[j]);
             j += 1;
         }
@@ -229,7 +234,7 @@ pub(crate) fn describe(nrg: &Nrg, mesh: &Mesh, legs: &[Walk], profile: &Profile)
                 format!(
                     "walk {} {} {} and arrive",
                     metres(distance_m),
-                    preposition(kind(here)),
+                    preposition(kinds[i]),
                     along.join(" and ")
                 )
             };
@@ -252,8 +257,8 @@ pub(crate) fn describe(nrg: &Nrg, mesh: &Mesh, legs: &[Walk], profile: &Profile)
         let next = ids[j];
         let merge = through.is_empty()
             && turn == Turn::Straight
-            && kind(here) == Some(SpaceKind::Corridor)
-            && kind(next) == Some(SpaceKind::Corridor);
+            && kinds[i] == Some(SpaceKind::Corridor)
+            && kinds[j] == Some(SpaceKind::Corridor);
         if merge {
             i = j;
             continue;
@@ -270,7 +275,7 @@ pub(crate) fn describe(nrg: &Nrg, mesh: &Mesh, legs: &[Walk], profile: &Profile)
             instruction: format!(
                 "walk {} {} {}, {} {}into {}",
                 metres(distance_m),
-                preposition(kind(here)),
+                preposition(kinds[i]),
                 along.join(" and "),
                 turn.phrase(),
                 via,
@@ -305,11 +310,7 @@ fn first_of(ids: &[SpaceId], i: usize, merged: usize) -> SpaceId {
 }
 
 fn cumulative_at(points: &[Point], seg: usize) -> f64 {
-    points
-        .windows(2)
-        .take(seg)
-        .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]))
-        .sum()
+    points.windows(2).take(seg).map(|w| dist(w[0], w[1])).sum()
 }
 
 fn preposition(kind: Option<SpaceKind>) -> &'static str {

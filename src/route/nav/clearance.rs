@@ -102,11 +102,14 @@ pub(crate) fn clear_walk(
 /// Moves an obstacle end of a portal `r` towards the other end.
 fn shrink(mesh: &Mesh, a: u32, b: u32, r: f64) -> (Point, Point) {
     let (pa, pb) = (mesh.point(a), mesh.point(b));
+    let (oa, ob) = (mesh.obstacle[a as usize], mesh.obstacle[b as usize]);
+    if !(oa || ob) {
+        return (pa, pb);
+    }
     let len = dist(pa, pb);
     if len <= 0.0 {
         return (pa, pb);
     }
-    let (oa, ob) = (mesh.obstacle[a as usize], mesh.obstacle[b as usize]);
     let room = if oa && ob { len / 2.0 } else { len };
     let t = (r / len).min(room / len);
     let toward = |p: Point, q: Point| [p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])];

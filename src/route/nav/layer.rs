@@ -11,6 +11,7 @@ use std::sync::OnceLock;
 use super::clearance::{clear_walk, edge_open, traversal_open};
 use super::dead_ends::DeadEnds;
 use super::funnel::{dist, funnel, polyline_length};
+use super::hierarchy::Hierarchy;
 use super::mesh::{Across, Mesh, NONE};
 use crate::model::{Nrg, Point};
 
@@ -60,12 +61,18 @@ impl SpaceTable {
         self.sources.len().saturating_sub(1)
     }
 
-    /// The triangles from source `i` to source `j`, both included.
-    pub fn channel(&self, mesh: &Mesh, local: &[u32], i: usize, j: usize) -> Option<Vec<u32>> {
+    /// Appends the triangles from source `i` to source `j`, both included,
+    /// to `out`.
+    pub fn channel_into(
+        &self,
+        mesh: &Mesh,
+        local: &[u32],
+        i: usize,
+        j: usize,
+        out: &mut Vec<u32>,
+    ) -> Option<()> {
         let target = self.sources.get(j)?.0;
-        let mut c = self.trees.get(i)?.walk(mesh, local, target)?;
-        c.reverse();
-        Some(c)
+        self.trees.get(i)?.walk_into(mesh, local, target, true, out)
     }
 }
 
@@ -132,29 +139,48 @@ impl Tree {
     /// The triangles from `target` back to the root, or `None` when the
     /// tree does not reach it.
     pub fn walk(&self, mesh: &Mesh, local: &[u32], target: u32) -> Option<Vec<u32>> {
+        let mut out = Vec::new();
+        self.walk_into(mesh, local, target, false, &mut out)?;
+        Some(out)
+    }
+
+    /// Appends the triangles between the root and `target` to `out`, from
+    /// the root when `from_root`, else from `target`; `None` when the tree
+    /// does not reach it.
+    pub fn walk_into(
+        &self,
+        mesh: &Mesh,
+        local: &[u32],
+        target: u32,
+        from_root: bool,
+        out: &mut Vec<u32>,
+    ) -> Option<()> {
         let lt = *local.get(target as usize)? as usize;
         if !self.cost.get(lt)?.is_finite() {
             return None;
         }
-        let mut out = vec![target];
+        let start = out.len();
+        out.push(target);
         let mut t = target;
         while self.pred[local[t as usize] as usize] != NONE {
             t = self.pred[local[t as usize] as usize];
             out.push(t);
-            if out.len() > mesh.tris.len() {
+            if out.len() - start > mesh.tris.len() {
                 return None;
             }
         }
-        Some(out)
+        if from_root {
+            out[start..].reverse();
+        }
+        Some(())
     }
 }
 
 /// The portals of a channel of triangles, `(right, left)` in walking order.
 pub(crate) fn portals(mesh: &Mesh, channel: &[u32]) -> Vec<(Point, Point)> {
-    channel
-        .windows(2)
-        .filter_map(|w| mesh.portal(w[0], w[1]))
-        .collect()
+    let mut out = Vec::with_capacity(channel.len());
+    out.extend(channel.windows(2).filter_map(|w| mesh.portal(w[0], w[1])));
+    out
 }
 
 /// The walked polyline from `from` to `to` through a channel, keeping
@@ -163,10 +189,12 @@ pub(crate) fn walk(mesh: &Mesh, from: Point, to: Point, channel: &[u32], r: f64)
     if r <= 0.0 {
         return funnel(from, to, &portals(mesh, channel));
     }
-    let ends: Vec<(u32, u32)> = channel
-        .windows(2)
-        .filter_map(|w| mesh.portal_vertices(w[0], w[1]))
-        .collect();
+    let mut ends: Vec<(u32, u32)> = Vec::with_capacity(channel.len());
+    ends.extend(
+        channel
+            .windows(2)
+            .filter_map(|w| mesh.portal_vertices(w[0], w[1])),
+    );
     clear_walk(mesh, from, to, &ends, r)
 }
 
@@ -190,6 +218,9 @@ pub(crate) struct Layer {
     /// it: a revision that is only listed, located or diffed never pays
     /// for them.
     tables: Vec<OnceLock<SpaceTable>>,
+    /// The contracted crossing graph, built (with every table) when a
+    /// route first needs it; `None` when the level is too dense for it.
+    hierarchy: OnceLock<Option<Hierarchy>>,
 }
 
 impl Layer {
@@ -221,7 +252,15 @@ impl Layer {
             local,
             anchors,
             tables: (0..mesh.space_ids.len()).map(|_| OnceLock::new()).collect(),
+            hierarchy: OnceLock::new(),
         }
+    }
+
+    /// The contraction hierarchy of this level, built on first use.
+    pub fn hierarchy(&self, mesh: &Mesh) -> Option<&Hierarchy> {
+        self.hierarchy
+            .get_or_init(|| Hierarchy::new(mesh, self))
+            .as_ref()
     }
 
     /// The table of space `s`, built on first use.

@@ -4,10 +4,14 @@
 //! triangulation (`spade`); each triangle is tagged with its space, and a
 //! triangle edge between two spaces is a *gate* only when the model connects
 //! them navigably (a door or an open boundary), else it is a wall. A walked
-//! path is found by A* over the gates, with the in-space lengths between
-//! gates precomputed per revision ([`layer`]), and straightened through its
-//! channel of triangles by the funnel algorithm, so its length is the
-//! length actually walked, exact for the channel chosen. Clearance from
+//! path is found over the crossing points of the openings (gates joined
+//! into doorways), with the in-space lengths between them precomputed per
+//! revision ([`layer`]): by a contraction hierarchy of that graph
+//! ([`hierarchy`], built with the tables on the first route) or, when
+//! spaces are avoided or doors too narrow, by A* ([`search`]); then it is
+//! straightened through its channel of triangles by the funnel algorithm,
+//! so its length is the length actually walked, exact for the channel
+//! chosen. Clearance from
 //! walls is kept by closing passages narrower than twice it and by wrapping
 //! the path around obstacle corners at that distance.
 //!
@@ -18,6 +22,7 @@ mod clearance;
 mod dead_ends;
 mod funnel;
 mod gate;
+mod hierarchy;
 pub(crate) mod layer;
 pub(crate) mod mesh;
 mod noding;
@@ -29,6 +34,7 @@ use std::sync::{Arc, Mutex};
 
 use serde::Serialize;
 
+pub(crate) use self::funnel::dist;
 use self::layer::Layer;
 use self::mesh::Mesh;
 pub(crate) use self::search::Walk;

@@ -82,25 +82,26 @@ impl End {
         }
     }
 
-    /// Triangles from this end to source `j` (an opening crossing) of its space
-    /// (`outbound`) or from there to this end.
-    fn channel(&self, mesh: &Mesh, layer: &Layer, j: usize, outbound: bool) -> Option<Vec<u32>> {
+    /// Appends the triangles from this end to source `j` (an opening
+    /// crossing) of its space (`outbound`) or from there to this end.
+    fn channel_into(
+        &self,
+        mesh: &Mesh,
+        layer: &Layer,
+        j: usize,
+        outbound: bool,
+        out: &mut Vec<u32>,
+    ) -> Option<()> {
         let table = layer.table(mesh, self.space);
         match &self.kind {
             EndKind::Anchor => {
                 let a = table.anchor();
-                if outbound {
-                    table.channel(mesh, &layer.local, a, j)
-                } else {
-                    table.channel(mesh, &layer.local, j, a)
-                }
+                let (i, j) = if outbound { (a, j) } else { (j, a) };
+                table.channel_into(mesh, &layer.local, i, j, out)
             }
             EndKind::Point(tree) => {
-                let mut c = tree.walk(mesh, &layer.local, table.sources.get(j)?.0)?;
-                if outbound {
-                    c.reverse();
-                }
-                Some(c)
+                let target = table.sources.get(j)?.0;
+                tree.walk_into(mesh, &layer.local, target, outbound, out)
             }
         }
     }
@@ -135,7 +136,9 @@ pub(crate) struct Walk {
 
 /// The shortest walk from `from` to `to` not entering spaces marked in
 /// `banned` (the ends' own spaces are allowed). `None` when there is none
-/// or the budget ran out (the caller checks the budget).
+/// or the budget ran out (the caller checks the budget). With nothing
+/// banned the level's contraction hierarchy answers; else (or when the
+/// level has none) A* over the openings.
 pub(crate) fn shortest_walk(
     mesh: &Mesh,
     layer: &Layer,
@@ -143,6 +146,42 @@ pub(crate) fn shortest_walk(
     to: &End,
     banned: &[bool],
     budget: &Budget,
+) -> Option<Walk> {
+    let direct = direct_length(mesh, layer, from, to);
+    if !banned.contains(&true)
+        && let Some(hierarchy) = layer.hierarchy(mesh)
+    {
+        let found = hierarchy.shortest(&seeds(mesh, from), &seeds(mesh, to), direct, budget);
+        if budget.is_expired() || (found.is_none() && !direct.is_finite()) {
+            return None;
+        }
+        let chain = found.map(|(_, chain)| chain).unwrap_or_default();
+        return assemble(mesh, layer, from, to, &chain);
+    }
+    search_openings(mesh, layer, from, to, banned, budget, direct)
+}
+
+/// The walked length between two ends in one space without leaving it
+/// (infinite for ends in different spaces).
+fn direct_length(mesh: &Mesh, layer: &Layer, from: &End, to: &End) -> f64 {
+    if from.space != to.space {
+        return f64::INFINITY;
+    }
+    from.direct(mesh, layer, to).map_or(f64::INFINITY, |c| {
+        polyline_length(&walk(mesh, from.at, to.at, &c, layer.clearance_m))
+    })
+}
+
+/// [`shortest_walk`] by A* over the openings, beating `direct` (the
+/// walk inside one space, when the ends share it).
+pub(crate) fn search_openings(
+    mesh: &Mesh,
+    layer: &Layer,
+    from: &End,
+    to: &End,
+    banned: &[bool],
+    budget: &Budget,
+    direct: f64,
 ) -> Option<Walk> {
     // Nodes are opening crossings: opening o, sample k is node
     // o * SAMPLES + k.
@@ -156,14 +195,9 @@ pub(crate) fn shortest_walk(
     let mut heap: BinaryHeap<Reverse<(u64, u32)>> = BinaryHeap::new();
     let point = |n: u32| layer.samples[n as usize / SAMPLES][n as usize % SAMPLES].1;
     let h = |n: u32| dist(point(n), to.at);
-    let mut best = f64::INFINITY;
+    let mut best = direct;
     // The goal's predecessor node (NONE: direct, inside one space).
     let mut best_pred = NONE;
-    if from.space == to.space
-        && let Some(c) = from.direct(mesh, layer, to)
-    {
-        best = polyline_length(&walk(mesh, from.at, to.at, &c, layer.clearance_m));
-    }
     let scope = Scope::new(mesh, &layer.dead_ends, &[from.space, to.space]);
     let from_openings = &openings.of_space[from.space as usize];
     scope.for_each_slot(mesh, from.space, |j| {
@@ -241,17 +275,35 @@ pub(crate) fn shortest_walk(
         }
     }
     chain.reverse();
-    assemble(mesh, layer, from, to, &chain, &pred)
+    let chain: Vec<(u32, u32)> = chain.iter().map(|n| (*n, pred[*n as usize].1)).collect();
+    assemble(mesh, layer, from, to, &chain)
 }
 
-/// The triangles of the whole walk through `chain`, then the funnel.
+/// The crossings of an end's space with the walked length to each
+/// (unreachable ones left out), as hierarchy seeds.
+fn seeds(mesh: &Mesh, end: &End) -> Vec<(u32, f64)> {
+    let openings = &mesh.openings.of_space[end.space as usize];
+    let mut out = Vec::with_capacity(openings.len() * SAMPLES);
+    for (j, o) in openings.iter().enumerate() {
+        for k in 0..SAMPLES {
+            let c = end.to_crossings[j * SAMPLES + k];
+            if c.is_finite() {
+                out.push((o * SAMPLES as u32 + k as u32, c));
+            }
+        }
+    }
+    out
+}
+
+/// The triangles of the whole walk through `chain` (crossing nodes, each
+/// with the space walked through to reach it from the one before; the
+/// first's is ignored), then the funnel.
 fn assemble(
     mesh: &Mesh,
     layer: &Layer,
     from: &End,
     to: &End,
-    chain: &[u32],
-    pred: &[(u32, u32)],
+    chain: &[(u32, u32)],
 ) -> Option<Walk> {
     // The source index of node `n` in space `s`'s table.
     let index_in = |s: u32, n: u32| {
@@ -259,36 +311,49 @@ fn assemble(
         mesh.openings.slot(o, s).map(|j| j * SAMPLES + k)
     };
     let mut tris: Vec<u32> = Vec::new();
-    let mut spaces = vec![from.space];
     if chain.is_empty() {
         tris = from.direct(mesh, layer, to)?;
     } else {
-        let first = chain[0];
-        tris.extend(from.channel(mesh, layer, index_in(from.space, first)?, true)?);
+        tris.reserve(8 * chain.len() + 16);
+        let first = chain[0].0;
+        from.channel_into(mesh, layer, index_in(from.space, first)?, true, &mut tris)?;
         for w in chain.windows(2) {
-            let (g, h) = (w[0], w[1]);
-            let t = pred[h as usize].1;
-            spaces.push(t);
+            let (g, (h, t)) = (w[0].0, w[1]);
             let table = layer.table(mesh, t);
-            let c = table.channel(mesh, &layer.local, index_in(t, g)?, index_in(t, h)?)?;
-            tris.extend(c);
+            let (i, j) = (index_in(t, g)?, index_in(t, h)?);
+            table.channel_into(mesh, &layer.local, i, j, &mut tris)?;
         }
-        let last = *chain.last()?;
-        spaces.push(to.space);
-        tris.extend(to.channel(mesh, layer, index_in(to.space, last)?, false)?);
+        let last = chain.last()?.0;
+        to.channel_into(mesh, layer, index_in(to.space, last)?, false, &mut tris)?;
     }
     tris.dedup();
+    let (spaces, gates) = crossed(layer, from, to, chain);
     let points = walk(mesh, from.at, to.at, &tris, layer.clearance_m);
     let length_m = polyline_length(&points);
     Some(Walk {
         points,
         length_m,
         spaces,
-        gates: chain
-            .iter()
-            .map(|n| layer.samples[*n as usize / SAMPLES][*n as usize % SAMPLES].0)
-            .collect(),
+        gates,
     })
+}
+
+/// The spaces a walk through `chain` enters (start and goal included) and
+/// the gate edges it crosses between them. A node walked to and from
+/// through the same space is touched, not crossed (the hierarchy may route
+/// along a doorway's edge without going through): it adds neither.
+fn crossed(layer: &Layer, from: &End, to: &End, chain: &[(u32, u32)]) -> (Vec<u32>, Vec<u32>) {
+    let mut spaces = Vec::with_capacity(chain.len() + 1);
+    let mut gates = Vec::with_capacity(chain.len());
+    spaces.push(from.space);
+    for (i, (n, _)) in chain.iter().enumerate() {
+        let after = chain.get(i + 1).map_or(to.space, |c| c.1);
+        if spaces.last() != Some(&after) {
+            gates.push(layer.samples[*n as usize / SAMPLES][*n as usize % SAMPLES].0);
+            spaces.push(after);
+        }
+    }
+    (spaces, gates)
 }
 
 /// Walked length from `from` to the anchor of every space (dense index),
@@ -429,5 +494,100 @@ impl<'a> Scope<'a> {
                 f(*j as usize);
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::sync::Arc;
+
+    use super::*;
+    use crate::query::demo;
+    use crate::route::{Endpoint, NavMesh, Profile};
+
+    /// The hierarchy never finds a longer walk than the A* over openings
+    /// between every `stride`-th pair of spaces (and points): it is exact
+    /// on the crossing graph, which the A* prunes (dead ends, no step back
+    /// into the space just left), so now and then it finds a shorter one.
+    fn agree(nav: &NavMesh, profile: Profile, stride: usize) {
+        let level = nav.level(&profile);
+        let (mesh, layer) = (&level.mesh, &level.layer);
+        assert!(layer.hierarchy(mesh).is_some());
+        let none = vec![false; mesh.space_ids.len()];
+        let budget = Budget::unlimited();
+        let mut ends: Vec<Endpoint> = mesh
+            .space_ids
+            .iter()
+            .map(|id| Endpoint::Space(*id))
+            .collect();
+        ends.push(Endpoint::Point([3.3, 6.1]));
+        ends.push(Endpoint::Point([17.9, 5.2]));
+        let (mut compared, mut shorter, mut longer) = (0, 0, Vec::new());
+        for (i, a) in ends.iter().enumerate() {
+            for (j, b) in ends.iter().enumerate() {
+                if !(i * ends.len() + j).is_multiple_of(stride) {
+                    continue;
+                }
+                let (Ok(from), Ok(to)) = (nav.end(&level, a), nav.end(&level, b)) else {
+                    continue;
+                };
+                let fast = shortest_walk(mesh, layer, &from, &to, &none, &budget);
+                let direct = direct_length(mesh, layer, &from, &to);
+                let slow = search_openings(mesh, layer, &from, &to, &none, &budget, direct);
+                match (fast, slow) {
+                    (Some(f), Some(s)) => {
+                        assert!(
+                            f.spaces.windows(2).all(|w| w[0] != w[1]),
+                            "{a:?} -> {b:?}: a space entered twice in a row: {:?}",
+                            f.spaces
+                        );
+                        assert_eq!(f.spaces.len(), f.gates.len() + 1);
+                        let d = f.length_m - s.length_m;
+                        if d > 1e-6 {
+                            longer.push((*a, *b, f.length_m, s.length_m));
+                        } else if d < -1e-6 {
+                            shorter += 1;
+                        }
+                    }
+                    (None, None) => {}
+                    (f, s) => panic!("{a:?} -> {b:?}: hierarchy {f:?}, A* {s:?}"),
+                }
+                compared += 1;
+            }
+        }
+        eprintln!(
+            "clearance {}: {compared} pairs, hierarchy shorter on {shorter}, longer on {}: {:?}",
+            profile.clearance_m,
+            longer.len(),
+            &longer[..longer.len().min(5)]
+        );
+        assert!(compared > 100, "{compared} pairs");
+        assert!(longer.is_empty());
+    }
+
+    #[test]
+    fn hierarchy_and_astar_agree_on_willow_full() {
+        let Some(nrg) = crate::fixtures::shared_map_nrg("willow-full") else {
+            eprintln!("notice: willow-full not found (NRGDB_SHARED); skipped");
+            return;
+        };
+        let nav = NavMesh::new(Arc::new(nrg));
+        agree(&nav, Profile::default(), 7);
+        agree(&nav, Profile::exact(), 7);
+    }
+
+    #[test]
+    fn hierarchy_and_astar_agree_on_the_demo_building() {
+        let nav = NavMesh::new(Arc::new(demo::building(7)));
+        agree(&nav, Profile::default(), 1);
+        agree(&nav, Profile::exact(), 1);
+        agree(
+            &nav,
+            Profile {
+                clearance_m: 0.5,
+                ..Profile::default()
+            },
+            1,
+        );
     }
 }
