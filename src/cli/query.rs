@@ -101,6 +101,8 @@ pub fn open_session(args: &SourceArgs) -> miette::Result<Session<Box<dyn Source>
     session.set_limits(Limits {
         timeout: Duration::from_millis(args.timeout_ms),
         max_rows: args.max_rows,
+        // At least one statement's worth, whatever --max-rows says.
+        max_total_rows: Limits::default().max_total_rows.max(args.max_rows),
         deadline: None,
     });
     Ok(session)

@@ -119,6 +119,12 @@ pub enum QueryError {
     /// The result is larger than the size bound.
     #[error("result has more than {0} rows (add LIMIT or raise the row bound)")]
     TooManyRows(usize),
+    /// The statements run so far returned this many rows in all, the
+    /// bound for one run (see `Limits::max_total_rows`).
+    #[error(
+        "the statements so far returned {0} rows in all, the bound for one request; this statement did not run (ask with LIMIT, or in several requests)"
+    )]
+    TooManyRowsInAll(usize),
     /// Storage failed or lacks the map/revision.
     #[error(transparent)]
     Source(#[from] SourceError),

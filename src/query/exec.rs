@@ -20,6 +20,12 @@ pub struct Limits {
     pub timeout: Duration,
     /// Most rows (or routes) a statement may return (default 10 000).
     pub max_rows: usize,
+    /// Most rows all statements of one [`execute`](super::Session::execute)
+    /// may return together (default 100 000): a request of 1 000
+    /// statements of 10 000 rows each would otherwise hold 10 M rows
+    /// (issue 21). Statements after the bound is reached fail without
+    /// running.
+    pub max_total_rows: usize,
     /// When all work stops (default none): statements not yet started
     /// fail with [`QueryError::Timeout`] without running, and running ones
     /// stop at their next check (a server request's deadline; issue 21,
@@ -32,6 +38,7 @@ impl Default for Limits {
         Limits {
             timeout: Duration::from_secs(5),
             max_rows: 10_000,
+            max_total_rows: 100_000,
             deadline: None,
         }
     }

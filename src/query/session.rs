@@ -185,9 +185,19 @@ impl<S: Source> Session<S> {
         text: &str,
     ) -> Result<Vec<Result<QueryResult, QueryError>>, QueryError> {
         let statements = parse(text)?;
+        let mut total = 0usize;
         Ok(statements
             .iter()
-            .map(|s| self.execute_statement(s))
+            .map(|s| {
+                if total >= self.limits.max_total_rows {
+                    return Err(QueryError::TooManyRowsInAll(total));
+                }
+                let result = self.execute_statement(s);
+                if let Ok(r) = &result {
+                    total = total.saturating_add(r.row_count());
+                }
+                result
+            })
             .collect())
     }
 
@@ -329,12 +339,44 @@ mod tests {
     /// Issue 21, defect 7: a statement running when the deadline passes
     /// stops at its next check, even when its own bound is far away (FIND
     /// over thousands of spaces, a walk over the whole building).
+    /// Issue 21: a request of many big statements is bounded in all, not
+    /// only per statement; the statements after the bound do not run.
+    #[test]
+    fn issue_21_rows_are_bounded_per_request() {
+        let mut s = session(1_000);
+        s.set_limits(Limits {
+            max_rows: 10_000,
+            max_total_rows: 12_000,
+            ..Limits::default()
+        });
+        let results = s.execute(&"FIND spaces;".repeat(6)).unwrap();
+        let rows: Vec<usize> = results
+            .iter()
+            .map(|r| r.as_ref().map_or(0, QueryResult::row_count))
+            .collect();
+        let one = rows[0];
+        assert!(
+            (4_000..6_000).contains(&one),
+            "{one} spaces: {:?}",
+            results[0]
+        );
+        // 3 × one ≥ 12 000: the fourth statement and the rest fail unrun.
+        assert_eq!(rows[..3], [one, one, one]);
+        for r in &results[3..] {
+            assert!(
+                matches!(r, Err(QueryError::TooManyRowsInAll(n)) if *n == 3 * one),
+                "{r:?}"
+            );
+        }
+    }
+
     #[test]
     fn issue_21_defect_7_running_statements_stop_at_the_deadline() {
         let mut s = session(2_000);
         let mut limits = Limits {
             timeout: Duration::from_secs(3_600),
             max_rows: usize::MAX,
+            max_total_rows: usize::MAX,
             deadline: None,
         };
         s.set_limits(limits);
