@@ -134,7 +134,10 @@ pub fn repair_geometry(nrg: &Nrg) -> Result<(Nrg, Vec<Repair>), ModelError> {
         }
     }
     // Past the bound, overlaps are left for the caller's check to refuse.
-    for (i, j) in overlapping_pairs(&shapes).into_iter().take(MAX_OVERLAP_TESTS) {
+    for (i, j) in overlapping_pairs(&shapes)
+        .into_iter()
+        .take(MAX_OVERLAP_TESTS)
+    {
         let overlap = shapes[i].intersection(&shapes[j]);
         let shared = overlap.unsigned_area();
         if shared <= MIN_OVERLAP_M2 {

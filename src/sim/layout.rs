@@ -5,8 +5,8 @@
 
 use std::f64::consts::FRAC_PI_2;
 
-use super::floor_plan::{Door, FloorPlan, FloorPlanParams, Opening, SpaceRef};
 use super::SimError;
+use super::floor_plan::{Door, FloorPlan, FloorPlanParams, Opening, SpaceRef};
 use super::prng::SplitMix64;
 use super::separation::separation_gap;
 use crate::model::{Point, Ring};
