@@ -6,6 +6,7 @@
 //! Uses sim, grid, extract, ingest, store, query, route, format and render:
 //! everything it prints comes from those modules, nothing is canned.
 
+use crate::wording::count;
 use std::collections::BTreeSet;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -193,15 +194,34 @@ pub fn run(opts: &DemoOptions, out: &mut dyn Write) -> Result<(), DemoError> {
     let gml = opts.dir.join("building.gml");
     let text = crate::format::render_model(&new, crate::format::ModelFormat::IndoorGml);
     crate::atomic::write(&gml, text.as_bytes()).map_err(io(&gml))?;
-    let picture = opts.dir.join("building.png");
+    // A picture of each revision with its route, so the shut door shows.
+    let picture_a = opts.dir.join(format!("building-rev{a}.png"));
     let png = crate::render::kind_picture_png(&grid, &first.labels, &first.nrg, &route.waypoints)?;
-    crate::atomic::write(&picture, &png).map_err(io(&picture))?;
+    crate::atomic::write(&picture_a, &png).map_err(io(&picture_a))?;
+    let picture_b = opts.dir.join(format!("building-rev{b}.png"));
+    let in_b = |id: SpaceId| {
+        let stable_id = stable(id);
+        rev_b
+            .ids
+            .iter()
+            .find(|(_, s)| **s == stable_id)
+            .map(|(input, _)| *input)
+    };
+    let route_b = match (in_b(from), in_b(to)) {
+        (Some(f), Some(t)) => route_between(&second.nrg, f, t),
+        _ => None,
+    };
+    let waypoints_b = route_b.map(|r| r.waypoints).unwrap_or_default();
+    let png = crate::render::kind_picture_png(&shut, &second.labels, &second.nrg, &waypoints_b)?;
+    crate::atomic::write(&picture_b, &png).map_err(io(&picture_b))?;
     say(
         out,
         format!(
-            "6. wrote {} (IndoorGML 1.0.3 of revision {b}) and {} (rooms blue, corridors orange, doors green, the route in red); ground truth in {} and {}",
+            "6. wrote {} (IndoorGML 1.0.3 of revision {b}), {} (revision {a}, as mapped) and {} (revision {b}, door {} shut); rooms blue, corridors orange, doors green, the route in red; ground truth in {} and {}",
             gml.display(),
-            picture.display(),
+            picture_a.display(),
+            picture_b.display(),
+            stable(door),
             files.gt_png.display(),
             files.truth_json.display()
         ),
@@ -231,14 +251,22 @@ fn indent(text: &str) -> String {
 }
 
 fn census(nrg: &Nrg) -> String {
-    let count = |k: SpaceKind| nrg.spaces().iter().filter(|s| s.kind == k).count();
+    let of = |k: SpaceKind| nrg.spaces().iter().filter(|s| s.kind == k).count();
     format!(
-        "{} rooms, {} corridors, {} doors, {} connections",
-        count(SpaceKind::Room),
-        count(SpaceKind::Corridor),
-        count(SpaceKind::Door),
-        nrg.connections().len()
+        "{}, {}, {}, {}",
+        count(of(SpaceKind::Room), "room", "rooms"),
+        count(of(SpaceKind::Corridor), "corridor", "corridors"),
+        count(of(SpaceKind::Door), "door", "doors"),
+        count(nrg.connections().len(), "connection", "connections")
     )
+}
+
+/// The shortest route from `from` to `to`, if there is one.
+fn route_between(nrg: &Nrg, from: SpaceId, to: SpaceId) -> Option<crate::route::Route> {
+    let nav = NavMesh::new(std::sync::Arc::new(nrg.clone()));
+    let budget = Budget::new(Duration::from_secs(5));
+    let routes = shortest_route(&nav, &RouteRequest::new(from, to), &budget).ok()?;
+    routes.into_iter().next()
 }
 
 /// The route between two rooms with the most doors on it (ties: longer).

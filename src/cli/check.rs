@@ -59,7 +59,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
             SchemaVerdict::Unavailable(why) => notes.push(format!("schema: not checked: {why}")),
         }
     }
-    findings.sort_by_key(|f| f.line);
+    let findings = indoorgml::tidy(findings);
     if args.json {
         let report = serde_json::json!({
             "file": args.file,
@@ -75,7 +75,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         .into_diagnostic()?;
     } else {
         for f in &findings {
-            writeln!(out, "{}:{f}", args.file.display()).into_diagnostic()?;
+            writeln!(out, "{}: {f}", args.file.display()).into_diagnostic()?;
         }
         for n in &notes {
             writeln!(out, "{n}").into_diagnostic()?;
@@ -83,7 +83,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         let verdict = if findings.is_empty() {
             "clean".to_string()
         } else {
-            format!("{} finding(s)", findings.len())
+            nrgdb::wording::count(findings.len(), "finding", "findings")
         };
         writeln!(out, "{}: {verdict}", args.file.display()).into_diagnostic()?;
     }

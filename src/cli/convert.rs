@@ -84,15 +84,15 @@ fn refuse_findings(args: &Args, findings: &[indoorgml::Finding]) -> miette::Resu
     let input = args.input.display();
     if args.allow_invalid {
         eprintln!(
-            "warning: {input}: copied with {} finding(s) of `nrgdb check` (--allow-invalid); the first: {first}",
-            findings.len()
+            "warning: {input}: copied with {} of `nrgdb check` (--allow-invalid); the first: {first}",
+            nrgdb::wording::count(findings.len(), "finding", "findings")
         );
         return Ok(());
     }
     miette::bail!(
         help = "`nrgdb check {input}` lists them; convert to .json for a repaired 2D model, \
                 or give --allow-invalid to copy the document as it is",
-        "{input}: {} finding(s) of `nrgdb check`, the first: {first}; not written",
-        findings.len()
+        "{input}: {} of `nrgdb check`, the first: {first}; not written",
+        nrgdb::wording::count(findings.len(), "finding", "findings")
     )
 }

@@ -9,7 +9,7 @@ use nrgdb::store::Store;
 /// Where the database is.
 #[derive(Debug, Clone, clap::Args)]
 pub struct DbArg {
-    /// The database file; created on first import.
+    /// The database file; created by `import`, `apply` or `name`.
     #[arg(
         long,
         env = "NRGDB_DB",
@@ -20,11 +20,18 @@ pub struct DbArg {
 }
 
 impl DbArg {
-    /// Opens the database (creating it and its schema if needed).
+    /// Opens the database (creating it and its schema if needed): for the
+    /// commands that write (`import`, `apply`, `name`).
     pub fn open(&self) -> miette::Result<Store> {
         Store::open(&self.db)
             .into_diagnostic()
             .wrap_err_with(|| format!("opening database {}", self.db.display()))
+    }
+
+    /// Opens an existing database, refusing a path with no file: for the
+    /// commands that only read.
+    pub fn open_existing(&self) -> miette::Result<Store> {
+        Store::open_existing(&self.db).into_diagnostic()
     }
 }
 

@@ -55,7 +55,7 @@ pub struct Args {
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     let (a, b) = match args.targets.as_slice() {
         [name, ra, rb] => {
-            let store = args.db.open()?;
+            let store = args.db.open_existing()?;
             let load = |rev: &str| -> miette::Result<LoadedRevision> {
                 let seq: u64 = rev.trim_start_matches('@').parse().map_err(|_| {
                     miette!("bad revision '{rev}': expected a revision number (see `nrgdb revisions {name}`)")

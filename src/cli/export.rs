@@ -25,7 +25,7 @@ pub struct Args {
 /// Runs `nrgdb export`.
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     let (map, rev) = parse_map_rev(&args.map)?;
-    let store = args.db.open()?;
+    let store = args.db.open_existing()?;
     let nrg = store
         .load(&map, rev)
         .into_diagnostic()

@@ -1,5 +1,6 @@
 //! `nrgdb extract`: occupancy grid map → NRG (graph JSON, label PNG, timings).
 
+use nrgdb::wording::count;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -440,7 +441,7 @@ fn write_out(path: &Path, bytes: &[u8]) -> miette::Result<()> {
 }
 
 fn summary(x: &Extraction, out: &mut dyn Write) -> std::io::Result<()> {
-    let count = |k: &str| {
+    let of = |k: &str| {
         x.nrg
             .spaces()
             .iter()
@@ -449,11 +450,11 @@ fn summary(x: &Extraction, out: &mut dyn Write) -> std::io::Result<()> {
     };
     writeln!(
         out,
-        "{} spaces: {} rooms, {} corridors, {} doors; {} connections",
-        x.nrg.spaces().len(),
-        count("room"),
-        count("corridor"),
-        count("door"),
-        x.nrg.connections().len()
+        "{}: {}, {}, {}; {}",
+        count(x.nrg.spaces().len(), "space", "spaces"),
+        count(of("room"), "room", "rooms"),
+        count(of("corridor"), "corridor", "corridors"),
+        count(of("door"), "door", "doors"),
+        count(x.nrg.connections().len(), "connection", "connections")
     )
 }

@@ -35,7 +35,7 @@ pub struct LogArgs {
 
 /// Runs `nrgdb maps`; exit 1 when the database holds no map.
 pub fn run_maps(args: MapsArgs, out: &mut dyn Write) -> miette::Result<ExitCode> {
-    let maps = args.db.open()?.maps().into_diagnostic()?;
+    let maps = args.db.open_existing()?.maps().into_diagnostic()?;
     if maps.is_empty() {
         writeln!(out, "no maps in {}", args.db.db.display()).into_diagnostic()?;
         return Ok(ExitCode::from(1));
@@ -49,7 +49,11 @@ pub fn run_maps(args: MapsArgs, out: &mut dyn Write) -> miette::Result<ExitCode>
 
 /// Runs `nrgdb revisions`.
 pub fn run_revisions(args: RevisionsArgs, out: &mut dyn Write) -> miette::Result<ExitCode> {
-    let revs = args.db.open()?.revisions(&args.map).into_diagnostic()?;
+    let revs = args
+        .db
+        .open_existing()?
+        .revisions(&args.map)
+        .into_diagnostic()?;
     writeln!(
         out,
         "{:>4} {:>6}  {:<24} {:>6} {:>5}  {:<20} message",
@@ -77,7 +81,7 @@ pub fn run_revisions(args: RevisionsArgs, out: &mut dyn Write) -> miette::Result
 
 /// Runs `nrgdb log`.
 pub fn run_log(args: LogArgs, out: &mut dyn Write) -> miette::Result<ExitCode> {
-    let revs = args.db.open()?.log(&args.map).into_diagnostic()?;
+    let revs = args.db.open_existing()?.log(&args.map).into_diagnostic()?;
     for r in revs {
         write_entry(&r, out).into_diagnostic()?;
     }

@@ -36,8 +36,8 @@ pub fn report_repairs(source: &str, repairs: &[Repair], kept: &[Finding]) {
     }
     if !kept.is_empty() {
         eprintln!(
-            "warning: {source}: kept with {} finding(s) of `nrgdb check` (--allow-invalid); the first: {}",
-            kept.len(),
+            "warning: {source}: kept with {} of `nrgdb check` (--allow-invalid); the first: {}",
+            nrgdb::wording::count(kept.len(), "finding", "findings"),
             kept[0]
         );
     }

@@ -6,14 +6,16 @@ use std::process::ExitCode;
 use std::time::Duration;
 
 use miette::{IntoDiagnostic, LabeledSpan, NamedSource, WrapErr, miette};
-use nrgdb::query::{Format, Limits, MemorySource, QueryError, QueryResult, Session, Source, demo};
+use nrgdb::query::{
+    Format, Limits, MemorySource, OnError, QueryError, QueryResult, Session, Source, demo,
+};
 
 /// Where the model comes from, shared by `query` and `repl`.
 #[derive(Debug, Clone, clap::Args)]
 pub struct SourceArgs {
     /// SQLite database of map revisions (`nrgdb import` fills it; default
     /// `$NRGDB_DB`, else ./nrgdb.sqlite when it exists).
-    #[arg(long, value_name = "DB", env = "NRGDB_DB")]
+    #[arg(long, value_name = "DB")]
     pub db: Option<PathBuf>,
     /// A model file (.json, .gml or .geojson), queried in memory as map
     /// `model` (or the name given with --map).
@@ -58,25 +60,32 @@ pub struct Args {
     /// Print CSV with a header row.
     #[arg(long)]
     pub csv: bool,
+    /// Run every statement even when some fail (each error is reported
+    /// with its file:line; the exit status is still 2). By default the
+    /// first failed statement stops the run, like psql's ON_ERROR_STOP.
+    #[arg(long)]
+    pub keep_going: bool,
 }
 
 /// Builds the source the arguments name. The one place that knows which
 /// storage backs a session.
 pub fn open_source(args: &SourceArgs) -> miette::Result<Box<dyn Source>> {
+    // $NRGDB_DB is read here rather than by clap, so that a set variable
+    // does not conflict with --model or --demo (only --db does).
+    let chosen = args.model.is_some() || args.demo.is_some();
+    let from_env = std::env::var_os("NRGDB_DB")
+        .filter(|v| !v.is_empty())
+        .map(PathBuf::from);
     let default_db = PathBuf::from("nrgdb.sqlite");
     let db = args.db.clone().or_else(|| {
-        (args.model.is_none() && args.demo.is_none() && default_db.exists()).then_some(default_db)
+        if chosen {
+            None
+        } else {
+            from_env.or_else(|| default_db.exists().then_some(default_db))
+        }
     });
     if let Some(db) = db {
-        if !db.exists() {
-            return Err(miette!(
-                "no database at {} (create one with `nrgdb import`)",
-                db.display()
-            ));
-        }
-        let store = nrgdb::store::Store::open(&db)
-            .into_diagnostic()
-            .wrap_err_with(|| format!("opening database {}", db.display()))?;
+        let store = nrgdb::store::Store::open_existing(&db).into_diagnostic()?;
         return Ok(Box::new(store));
     }
     let mut source = MemorySource::new();
@@ -166,19 +175,47 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         Format::Table
     };
     let mut session = open_session(&args.source)?;
-    let results = session
-        .execute(&text)
-        .map_err(|e| query_report(e, &name, &text))?;
-    let mut any = false;
-    for result in results {
-        let result = result.map_err(|e| miette!("{e}"))?;
-        any |= match &result {
-            QueryResult::Table(t) => !t.rows.is_empty(),
-            QueryResult::Routes(r) => !r.is_empty(),
-            _ => true,
-        };
-        out.write_all(result.render(format).as_bytes())
-            .into_diagnostic()?;
+    let on_error = if args.keep_going {
+        OnError::KeepGoing
+    } else {
+        OnError::Stop
+    };
+    let (mut any, mut ran) = (false, 0usize);
+    let mut written = Ok(());
+    let mut first_error = None;
+    let failed = session.run_script(&text, on_error, |step| {
+        ran += 1;
+        match step.result {
+            Ok(result) => {
+                any |= match &result {
+                    QueryResult::Table(t) => !t.rows.is_empty(),
+                    QueryResult::Routes(r) => !r.is_empty(),
+                    _ => true,
+                };
+                if written.is_ok() {
+                    written = out.write_all(result.render(format).as_bytes());
+                }
+            }
+            Err(e) => {
+                let report = query_report(e, &name, &text)
+                    .wrap_err(format!("{name}:{}: statement failed", step.line));
+                if args.keep_going {
+                    eprintln!("{report:?}");
+                } else {
+                    first_error = Some(report);
+                }
+            }
+        }
+    });
+    written.into_diagnostic()?;
+    if let Some(report) = first_error {
+        return Err(report);
+    }
+    if failed > 0 {
+        return Err(miette!(
+            "{failed} of {} failed (see above)",
+            nrgdb::wording::count(ran, "statement", "statements")
+        ));
     }
     Ok(if any {
         ExitCode::SUCCESS

@@ -192,7 +192,7 @@ fn resolve(spec: &str, base: Option<&Resolved>, db: &DbArg) -> miette::Result<Re
             db.db.display()
         );
     }
-    let store = db.open()?;
+    let store = db.open_existing()?;
     let info = store
         .revision(&name, rev)
         .into_diagnostic()

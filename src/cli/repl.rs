@@ -8,7 +8,9 @@ use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
 use miette::IntoDiagnostic;
-use nrgdb::query::{Format, KEYWORDS, Session, Source, TokenKind, lex};
+use nrgdb::query::{
+    Format, HELP, KEYWORDS, ShellCommand, TokenKind, Vocabulary, format_message, lex,
+};
 use nu_ansi_term::{Color, Style};
 use reedline::{
     ColumnarMenu, Completer, CompletionResult, DefaultHinter, DefaultPrompt, DefaultPromptSegment,
@@ -32,18 +34,6 @@ pub struct Args {
     pub history: Option<PathBuf>,
 }
 
-const HELP: &str = "\
-statements end with ';' and may span lines; -- starts a comment
-  ROUTE FROM a TO b [VIA c, ...] [AVOID d, ...] [ALTERNATIVES k]
-  NEIGHBOURS OF a [DEPTH n]
-  FIND rooms|corridors|doors|others|spaces [WHERE ...] [ORDER BY ...] [LIMIT n]
-  LOCATE (x, y)            REACHABLE FROM a WITHIN metres
-  SHOW MAPS                SHOW REVISIONS [OF m]
-  USE m [AT REVISION n]    NAME a AS \"Kitchen\"
-  EXPLAIN <statement>
-a reference is an id (12, room 12), a \"name\" or a point (x, y) in metres
-commands: \\help  \\timing (toggle)  \\json  \\csv  \\table  \\quit";
-
 /// The history file: the argument, the data dir, or ~/.nrgdb_history.
 fn history_path(arg: Option<PathBuf>) -> Option<PathBuf> {
     if arg.is_some() {
@@ -63,31 +53,25 @@ fn history_path(arg: Option<PathBuf>) -> Option<PathBuf> {
     nonempty("HOME").map(|h| h.join(".nrgdb_history"))
 }
 
-/// Completes keywords, space names (quoted) and ids from the current map.
+/// Offers what [`Vocabulary::complete`] finds (map names after `USE`).
 struct QueryCompleter {
-    words: Arc<Mutex<Vec<String>>>,
+    words: Arc<Mutex<Vocabulary>>,
 }
 
 impl Completer for QueryCompleter {
     fn complete(&mut self, line: &str, pos: usize) -> CompletionResult {
-        let pos = pos.min(line.len());
-        let start = line[..pos]
-            .rfind(|c: char| c.is_whitespace() || c == ',' || c == '(')
-            .map_or(0, |i| i + 1);
-        let prefix = line[start..pos].trim_start_matches('"').to_lowercase();
-        let mut out: Vec<Suggestion> = Vec::new();
-        let dynamic = self.words.lock().map(|w| w.clone()).unwrap_or_default();
-        for word in KEYWORDS.iter().map(|k| k.to_string()).chain(dynamic) {
-            let bare = word.trim_matches('"').to_lowercase();
-            if !prefix.is_empty() && bare.starts_with(&prefix) {
-                out.push(Suggestion {
-                    value: word,
-                    span: Span::new(start, pos),
-                    append_whitespace: true,
-                    ..Suggestion::default()
-                });
-            }
-        }
+        let vocabulary = self.words.lock().map(|w| w.clone()).unwrap_or_default();
+        let (start, words) = vocabulary.complete(line, pos);
+        let end = pos.min(line.len()).max(start);
+        let out: Vec<Suggestion> = words
+            .into_iter()
+            .map(|value| Suggestion {
+                value,
+                span: Span::new(start, end),
+                append_whitespace: true,
+                ..Suggestion::default()
+            })
+            .collect();
         CompletionResult::fresh(out)
     }
 }
@@ -146,25 +130,10 @@ impl Validator for StatementValidator {
     }
 }
 
-/// Names and ids of the selected revision, for completion.
-fn space_words(session: &Session<Box<dyn Source>>) -> Vec<String> {
-    let Some(rev) = session.current() else {
-        return Vec::new();
-    };
-    let mut words: Vec<String> = rev
-        .nrg
-        .spaces()
-        .iter()
-        .filter_map(|s| s.name.as_ref().map(|n| nrgdb::query::quote(n)))
-        .collect();
-    words.extend(rev.nrg.spaces().iter().map(|s| s.id.to_string()));
-    words
-}
-
 /// Runs `nrgdb repl`.
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     let mut session = open_session(&args.source)?;
-    let words = Arc::new(Mutex::new(space_words(&session)));
+    let words = Arc::new(Mutex::new(Vocabulary::of(&session)));
     let mut keybindings = default_emacs_keybindings();
     keybindings.add_binding(
         KeyModifiers::NONE,
@@ -209,18 +178,19 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
             _ => break,
         };
         let text = line.trim();
-        match text {
-            "" => continue,
-            "\\q" | "\\quit" | "\\exit" => break,
-            "\\help" | "\\h" | "\\?" => writeln!(out, "{HELP}").into_diagnostic()?,
-            "\\timing" => {
+        match (text, ShellCommand::parse(text)) {
+            ("", _) => continue,
+            (_, Some(ShellCommand::Quit)) => break,
+            (_, Some(ShellCommand::Help)) => writeln!(out, "{HELP}").into_diagnostic()?,
+            (_, Some(ShellCommand::Timing)) => {
                 timing = !timing;
                 writeln!(out, "timing {}", if timing { "on" } else { "off" }).into_diagnostic()?;
             }
-            "\\json" => format = Format::Json,
-            "\\csv" => format = Format::Csv,
-            "\\table" => format = Format::Table,
-            t if t.starts_with('\\') => {
+            (_, Some(ShellCommand::Format(f))) => {
+                format = f;
+                writeln!(out, "{}", format_message(f)).into_diagnostic()?;
+            }
+            (t, None) if t.starts_with('\\') => {
                 writeln!(out, "unknown command {t} (\\help lists them)").into_diagnostic()?;
             }
             _ => {
@@ -234,7 +204,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
                         .into_diagnostic()?;
                 }
                 if let Ok(mut w) = words.lock() {
-                    *w = space_words(&session);
+                    *w = Vocabulary::of(&session);
                 }
             }
         }

@@ -1,6 +1,7 @@
 //! `nrgdb simulate`: generate a building, drive a simulated LiDAR robot
 //! through it, map it, and write the map with its ground truth.
 
+use nrgdb::wording::count;
 use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -47,12 +48,12 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     let p = &sim.plan;
     writeln!(
         out,
-        "simulated seed {}: {} corridors, {} rooms, {} doors, {} furniture boxes",
+        "simulated seed {}: {}, {}, {}, {}",
         args.seed,
-        p.corridors.len(),
-        p.rooms.len(),
-        p.doors.len(),
-        p.furniture.len()
+        count(p.corridors.len(), "corridor", "corridors"),
+        count(p.rooms.len(), "room", "rooms"),
+        count(p.doors.len(), "door", "doors"),
+        count(p.furniture.len(), "furniture box", "furniture boxes")
     )
     .into_diagnostic()?;
     writeln!(

@@ -14,6 +14,19 @@ pub enum GridError {
         /// The cause.
         source: std::io::Error,
     },
+    /// The image a map YAML names cannot be read.
+    #[error(
+        "{yaml}: cannot read its image {image}: {source} (`image:` is resolved against the \
+         YAML's folder)"
+    )]
+    MapImage {
+        /// The map YAML.
+        yaml: PathBuf,
+        /// The image path, resolved.
+        image: PathBuf,
+        /// The cause.
+        source: std::io::Error,
+    },
     /// The YAML does not parse.
     #[error("{path}: invalid map yaml: {message}")]
     Yaml {

@@ -39,7 +39,14 @@ impl Default for LoadOptions {
 /// Loads a map from its ROS map_server YAML.
 pub fn load_map(yaml_path: &Path, options: &LoadOptions) -> Result<OccupancyGrid, GridError> {
     let yaml = MapYaml::read(yaml_path)?;
-    let img = decode_image(&yaml.image, options)?;
+    let img = decode_image(&yaml.image, options).map_err(|e| match e {
+        GridError::Io { path, source } if path == yaml.image => GridError::MapImage {
+            yaml: yaml_path.to_path_buf(),
+            image: path,
+            source,
+        },
+        other => other,
+    })?;
     check_resolution(yaml_path, yaml.resolution, options)?;
     classify(img, &yaml, options)
 }
@@ -233,12 +240,25 @@ fn classify(
 ) -> Result<OccupancyGrid, GridError> {
     let (width, height) = (img.width(), img.height());
     let (mut grey, alpha) = grey_and_alpha(&img);
-    drop(img);
     if yaml.negate {
         grey.iter_mut().for_each(|g| *g = 255 - *g);
     }
     // ROS: p = (255 - grey) / 255 is the occupancy probability.
     let occ_max_grey = ((1.0 - yaml.occupied_thresh) * 255.0).floor() as i32;
+    if yaml.mode != MapMode::Raw {
+        let warnings = super::image_warnings(
+            &yaml.image,
+            &img,
+            &grey,
+            alpha.as_deref(),
+            options.free_min_grey,
+            occ_max_grey,
+        );
+        for w in warnings {
+            tracing::warn!("{w}");
+        }
+    }
+    drop(img);
     let mut cells = Vec::with_capacity(grey.len());
     for (i, g) in grey.iter_mut().enumerate() {
         let transparent = alpha.as_ref().is_some_and(|a| a[i] == 0);

@@ -10,11 +10,13 @@
 //! `serde_yaml_ng`; must not use imaging, extract or anything above.
 
 mod error;
+mod image_check;
 mod load;
 mod occupancy;
 mod yaml;
 
 pub use error::GridError;
+pub use image_check::image_warnings;
 pub use load::{
     LoadOptions, MAX_YAML_BYTES, decode_image, decode_image_bytes, grey_and_alpha, load_image,
     load_map, load_map_bytes,

@@ -19,6 +19,10 @@ pub struct Document {
     pub primal: Option<PrimalSpace>,
     /// `MultiLayeredGraph`: the dual graph(s).
     pub graph: Option<LayeredGraph>,
+    /// What the reader accepted although the schema does not (a misspelt
+    /// element that real files share, as browsers accept sloppy HTML),
+    /// each with its line; empty for a schema-valid file. Never written.
+    pub warnings: Vec<String>,
 }
 
 /// The common properties of every GML feature nrgdb keeps.

@@ -24,7 +24,7 @@ mod xml_out;
 
 use std::path::Path;
 
-pub use check::{Finding, check};
+pub use check::{Finding, check, tidy};
 pub use convert::{WeightFixes, from_nrg, from_nrg_with_paths, to_nrg, to_nrg_fixing};
 pub use document::Document;
 pub use dom::{NS_CORE, NS_GML, NS_NAVI};

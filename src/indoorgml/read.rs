@@ -33,10 +33,12 @@ pub fn document(root: &Element) -> Result<Document, IndoorGmlError> {
             (Ns::Core, "PrimalSpaceFeatures") => doc.primal = Some(primal(child, &geo)?),
             (Ns::Core, "multiLayeredGraph") => {
                 if let Some(g) = only_child(child, "MultiLayeredGraph")? {
-                    doc.graph = Some(graph(g, &geo)?);
+                    doc.graph = Some(graph(g, &geo, &mut doc.warnings)?);
                 }
             }
-            (Ns::Core, "MultiLayeredGraph") => doc.graph = Some(graph(child, &geo)?),
+            (Ns::Core, "MultiLayeredGraph") => {
+                doc.graph = Some(graph(child, &geo, &mut doc.warnings)?)
+            }
             (Ns::Core, _) => {
                 return Err(unexpected(
                     child,
@@ -201,7 +203,7 @@ fn cell_geometry(el: &Element, geo: &GeometryReader) -> Result<CellGeometry, Ind
         (Ns::Core, "Geometry3D" | "Geometry2D", None) => Err(IndoorGmlError::Missing {
             line: el.line,
             element: el.qualified_name(),
-            missing: "a geometry".into(),
+            missing: "geometry".into(),
         }),
         _ => Err(unexpected_in(
             el,
@@ -262,7 +264,7 @@ fn boundary_geometry(
     let shape = first_gml_child(el).ok_or_else(|| IndoorGmlError::Missing {
         line: el.line,
         element: el.qualified_name(),
-        missing: "a geometry".into(),
+        missing: "geometry".into(),
     })?;
     match (&*el.name, &*shape.name) {
         ("geometry2D", "LineString") => Ok(BoundaryGeometry::Curve(geo.line_string(shape)?)),
@@ -291,7 +293,11 @@ fn external(el: &Element) -> ExternalReference {
     }
 }
 
-fn graph(el: &Element, geo: &GeometryReader) -> Result<LayeredGraph, IndoorGmlError> {
+fn graph(
+    el: &Element,
+    geo: &GeometryReader,
+    warnings: &mut Vec<String>,
+) -> Result<LayeredGraph, IndoorGmlError> {
     let mut out = LayeredGraph {
         info: info(el),
         ..LayeredGraph::default()
@@ -307,7 +313,22 @@ fn graph(el: &Element, geo: &GeometryReader) -> Result<LayeredGraph, IndoorGmlEr
                     if !member.is(&Ns::Core, "spaceLayerMember") {
                         return Err(unexpected(member, child, "core:spaceLayerMember"));
                     }
-                    if let Some(layer_el) = only_child(member, "SpaceLayer")? {
+                    if let Some(misspelt) = member
+                        .children
+                        .iter()
+                        .find(|c| c.is(&Ns::Core, "spaceLayer"))
+                    {
+                        // Two independent real files (FZK-Haus among them)
+                        // write the property's name for the feature's.
+                        let w = format!(
+                            "line {}: core:spaceLayer read as core:SpaceLayer (the schema \
+                             spells the feature with a capital S)",
+                            misspelt.line
+                        );
+                        tracing::warn!("{w}");
+                        warnings.push(w);
+                        group.layers.push(layer(misspelt, geo)?);
+                    } else if let Some(layer_el) = only_child(member, "SpaceLayer")? {
                         group.layers.push(layer(layer_el, geo)?);
                     }
                 }

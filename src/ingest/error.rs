@@ -72,12 +72,13 @@ pub enum IngestError {
     /// The model is geometrically invalid and the repairs that keep its
     /// meaning could not fix it (see [`validate`](super::validate)).
     #[error(
-        "{source_name}: {} geometric problem(s) that `nrgdb check` reports remain{}: {}{}; \
+        "{source_name}: {} that `nrgdb check` reports {}{}: {}{}; \
          nrgdb does not store or write such a model (cells that overlap by more than a sliver \
          without one lying inside the other, e.g. several floors drawn on one plane, cannot be \
          repaired without guessing; --allow-invalid keeps the model as it is)",
-        findings.len(),
-        if *repaired > 0 { format!(" after {repaired} repair(s)") } else { String::new() },
+        crate::wording::count(findings.len(), "geometric problem", "geometric problems"),
+        if findings.len() == 1 { "remains" } else { "remain" },
+        if *repaired > 0 { format!(" after {}", crate::wording::count(*repaired, "repair", "repairs")) } else { String::new() },
         first_findings(findings),
         if findings.len() > SHOWN { format!("; and {} more", findings.len() - SHOWN) } else { String::new() }
     )]

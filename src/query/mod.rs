@@ -36,7 +36,9 @@ mod lexer;
 mod parser;
 mod plan;
 mod result;
+mod script;
 mod session;
+mod shell;
 mod source;
 mod suggest;
 
@@ -53,6 +55,8 @@ pub use lexer::{Token, TokenKind, lex};
 pub use parser::{KEYWORDS, STATEMENT_KEYWORDS, parse, parse_statement};
 pub use plan::{Plan, plan};
 pub use result::{Cell, Format, QueryResult, Table};
+pub use script::{OnError, ScriptStep, StatementText, split_statements};
 pub use session::Session;
+pub use shell::{HELP, ShellCommand, Vocabulary, format_message};
 pub use source::{MapInfo, MemorySource, RevisionInfo, Source};
 pub use suggest::{edit_distance, suggest};

@@ -188,7 +188,11 @@ impl fmt::Display for Plan {
                         r.alternatives
                     )?;
                 } else {
-                    writeln!(f, "AStar {} leg(s) {from} -> {to}", r.via.len() + 1)?;
+                    writeln!(
+                        f,
+                        "AStar {} {from} -> {to}",
+                        crate::wording::count(r.via.len() + 1, "leg", "legs")
+                    )?;
                 }
                 if !r.via.is_empty() {
                     writeln!(f, "  via [{}]", endpoints(&r.via))?;

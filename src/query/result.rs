@@ -114,11 +114,11 @@ impl QueryResult {
                     let doors: Vec<String> = r.doors.iter().map(ToString::to_string).collect();
                     let _ = writeln!(
                         out,
-                        "route {}: {:.2} m walked ({:.0} s), {} spaces, doors [{}]",
+                        "route {}: {:.2} m walked ({:.0} s), {}, doors [{}]",
                         i + 1,
                         r.length_m,
                         r.duration_s,
-                        r.spaces.len(),
+                        crate::wording::count(r.spaces.len(), "space", "spaces"),
                         doors.join(", ")
                     );
                     for step in &r.steps {

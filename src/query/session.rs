@@ -90,9 +90,9 @@ impl<S: Source> Session<S> {
         }
         let rev = IndexedRevision::new(map, revision, nrg);
         let message = format!(
-            "using map '{map}' at revision {revision} ({} spaces, {} connections)",
-            rev.nrg.spaces().len(),
-            rev.nrg.connections().len()
+            "using map '{map}' at revision {revision} ({}, {})",
+            crate::wording::count(rev.nrg.spaces().len(), "space", "spaces"),
+            crate::wording::count(rev.nrg.connections().len(), "connection", "connections")
         );
         self.current = Some(rev);
         Ok(message)

@@ -35,13 +35,21 @@ pub fn edit_distance(a: &str, b: &str) -> usize {
 }
 
 /// The candidate closest to `word`, if it is close enough to be a typo
-/// (distance at most 2 and less than half the word's length, rounded up).
+/// (distance at most 2, at most half the word's length rounded up, and
+/// less than the word's length: 'x' suggests nothing).
+///
+/// ```
+/// use nrgdb::query::suggest;
+/// assert_eq!(suggest("ofice_g", ["office_g", "lab"]), Some("office_g"));
+/// assert_eq!(suggest("x", ["a", "b"]), None);
+/// ```
 pub fn suggest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
-    let limit = 2.min(word.chars().count().div_ceil(2));
+    let len = word.chars().count();
+    let limit = 2.min(len.div_ceil(2));
     candidates
         .into_iter()
         .map(|c| (edit_distance(word, c), c))
-        .filter(|(d, _)| *d <= limit)
+        .filter(|(d, _)| *d <= limit && *d < len)
         .min_by_key(|(d, _)| *d)
         .map(|(_, c)| c)
 }

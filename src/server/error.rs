@@ -266,6 +266,7 @@ mod tests {
         let e: ApiError = StoreError::NoSuchMap {
             name: "x".into(),
             known: "(none)".into(),
+            suggestion: None,
         }
         .into();
         assert_eq!(

@@ -143,8 +143,16 @@ pub struct Ctx<'a> {
 }
 
 impl AppState {
-    /// Opens the store at `config.db` and builds empty caches.
+    /// Opens the store at `config.db` and builds empty caches. Without a
+    /// token (read-only) the database must exist; with one, uploads may
+    /// create it.
     pub fn new(config: ServerConfig) -> Result<AppState, StoreError> {
+        if config.token.is_none() && !config.db.exists() {
+            // Read-only: nothing could ever fill a database created now.
+            return Err(StoreError::NoDatabase {
+                path: config.db.clone(),
+            });
+        }
         let pool = StorePool::open(&config.db, 16)?;
         Ok(AppState {
             inner: Arc::new(Shared {

@@ -8,6 +8,13 @@ use crate::model::{ModelError, SpaceId};
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
 pub enum StoreError {
+    /// A command that only reads was pointed at a database file that does
+    /// not exist (it is not created: a typo would leave an empty one).
+    #[error("no database at {}; `nrgdb import` creates one", path.display())]
+    NoDatabase {
+        /// The path given.
+        path: PathBuf,
+    },
     /// The file could not be opened as an SQLite database.
     #[error("cannot open database {path}: {source} (is it an nrgdb database?)")]
     Open {
@@ -43,12 +50,18 @@ pub enum StoreError {
     #[error("database is busy (another nrgdb is writing); retry")]
     Busy,
     /// No map of that name.
-    #[error("no map named '{name}'; maps are: {known} (see `nrgdb maps`)")]
+    #[error(
+        "no map named '{name}'; {}maps are: {known} (see `nrgdb maps`)",
+        suggestion.as_ref().map_or_else(String::new, |s| format!("did you mean '{s}'? "))
+    )]
     NoSuchMap {
         /// The name asked for.
         name: String,
         /// The maps there are, comma separated, or "(none)".
         known: String,
+        /// The known map closest to `name` when it looks like a typo
+        /// (see [`crate::query::suggest`]).
+        suggestion: Option<String>,
     },
     /// No revision of that number.
     #[error("revision {rev} of map '{map}' does not exist (latest is {latest})")]

@@ -191,6 +191,18 @@ impl Store {
         Store::setup(conn, path.to_path_buf()).map_err(|e| e.in_file(path))
     }
 
+    /// Opens an existing database, refusing with [`StoreError::NoDatabase`]
+    /// when there is no file at `path` (for commands that only read, so a
+    /// mistyped path does not leave an empty database behind).
+    pub fn open_existing(path: &Path) -> Result<Store, StoreError> {
+        if !path.exists() {
+            return Err(StoreError::NoDatabase {
+                path: path.to_path_buf(),
+            });
+        }
+        Store::open(path)
+    }
+
     /// A fresh database in memory (tests, one-off conversions).
     pub fn open_in_memory() -> Result<Store, StoreError> {
         let conn = Connection::open_in_memory()?;

@@ -159,6 +159,8 @@ pub(crate) fn map_id(conn: &Connection, name: &str) -> Result<i64, StoreError> {
             Err(StoreError::NoSuchMap {
                 name: name.to_string(),
                 known,
+                suggestion: crate::query::suggest(name, names.iter().map(String::as_str))
+                    .map(str::to_string),
             })
         }
     }

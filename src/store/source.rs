@@ -8,13 +8,9 @@ use crate::query::{MapInfo, RevisionInfo, Source, SourceError};
 
 fn to_source(e: StoreError) -> SourceError {
     match e {
-        StoreError::NoSuchMap { name, known } => {
-            let suggestion = known
-                .split(", ")
-                .find(|k| k.eq_ignore_ascii_case(&name))
-                .map(str::to_string);
-            SourceError::NoMap { name, suggestion }
-        }
+        StoreError::NoSuchMap {
+            name, suggestion, ..
+        } => SourceError::NoMap { name, suggestion },
         StoreError::NoSuchRevision { map, rev, .. } => SourceError::NoRevision {
             map,
             revision: u64::from(rev),

@@ -31,7 +31,8 @@ fn demo_runs_end_to_end_and_writes_valid_indoorgml() {
         "map_gt.png",
         "truth.json",
         "building.gml",
-        "building.png",
+        "building-rev1.png",
+        "building-rev2.png",
     ] {
         assert!(demo.join(file).is_file(), "{file} not written");
     }
@@ -63,4 +64,24 @@ fn demo_runs_end_to_end_and_writes_valid_indoorgml() {
         "{}",
         String::from_utf8_lossy(&q.stdout)
     );
+}
+
+/// Issue 21: the demo drew revision 1 only (and called it `building.png`
+/// beside the `building.gml` of revision 2), so no picture showed the
+/// shut door.
+#[test]
+fn issue_21_paper_cut_demo_draws_each_revision_and_says_which() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = nrgdb(dir.path(), &["demo"]);
+    assert!(out.status.success());
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        stdout.contains("building-rev1.png (revision 1, as mapped)")
+            && stdout.contains("building-rev2.png (revision 2, door"),
+        "{stdout}"
+    );
+    let demo = dir.path().join("nrgdb-demo");
+    let a = std::fs::read(demo.join("building-rev1.png")).unwrap();
+    let b = std::fs::read(demo.join("building-rev2.png")).unwrap();
+    assert_ne!(a, b, "the two revisions look the same");
 }

@@ -19,6 +19,7 @@ mod extract_tiling;
 mod extract_valid_props;
 mod ingest;
 mod ingest_gate;
+mod paper_cuts;
 mod query;
 mod query_cli;
 mod query_golden;

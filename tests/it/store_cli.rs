@@ -114,11 +114,14 @@ fn issue_4_cli_errors_are_clear() {
     std::fs::write(d.join("bad.json"), "{\"spaces\": [").unwrap();
     let out = nrgdb(d, &["import", "bad.json", "--map", "lab", "--db", db]);
     assert_eq!(out.status.code(), Some(2));
+    // Issue 21: a database that does not exist is an error (and is not
+    // created), not an empty one.
     let out = nrgdb(
         d,
         &["maps", "--db", d.join("empty.sqlite").to_str().unwrap()],
     );
-    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(out.status.code(), Some(2));
+    assert!(!d.join("empty.sqlite").exists());
 }
 
 /// Kills `nrgdb import` of a large model at several moments; after each

@@ -326,3 +326,35 @@ async fn viewer_svg_endpoint_draws_routes_and_diffs_and_names_bad_parameters() {
         .assert_error(400, "map");
     server.stop().await;
 }
+
+/// Issue 21: `/?map=nosuch&rev=99` showed the first map without a word.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn issue_21_paper_cut_viewer_says_the_map_or_revision_does_not_exist() {
+    let Some(chromium) = chromium_or_skip() else {
+        return;
+    };
+    let server = TestServer::read_only().await;
+    for (query, says) in [
+        (
+            "map=buildng&rev=99",
+            "no map named 'buildng'; did you mean 'building'?",
+        ),
+        (
+            "map=building&rev=99",
+            "revision 99 of map 'building' does not exist",
+        ),
+    ] {
+        let url = format!("http://{}/?{query}", server.addr);
+        let dom = tokio::task::spawn_blocking({
+            let chromium = chromium.to_string();
+            move || dump_dom(&chromium, &url)
+        })
+        .await
+        .unwrap();
+        let head = &dom[..dom.len().min(3000)];
+        assert!(dom.contains("data-state=\"not-found\""), "{query}: {head}");
+        assert!(dom.contains(says), "{query}: {head}");
+        assert!(!dom.contains("class=\"space"), "{query}: drew a map anyway");
+    }
+    server.stop().await;
+}

@@ -18,7 +18,7 @@ use std::fmt;
 use super::Document;
 
 /// One problem found in a document.
-#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+#[derive(Debug, Clone, PartialEq, Eq, Hash, serde::Serialize)]
 pub struct Finding {
     /// Short machine-readable code, e.g. `dangling-href`.
     pub code: &'static str,
@@ -32,12 +32,26 @@ pub struct Finding {
 
 impl fmt::Display for Finding {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "line {}: {} [{}]: {}",
-            self.line, self.element, self.code, self.message
-        )
+        if self.line > 0 {
+            write!(f, "line {}: ", self.line)?;
+        }
+        if !self.element.is_empty() {
+            write!(f, "{} ", self.element)?;
+        }
+        write!(f, "[{}]: {}", self.code, self.message)
     }
+}
+
+/// Puts findings from several checks (the checks, the schema validator)
+/// in one report: ordered by line, each distinct finding once.
+pub fn tidy(findings: Vec<Finding>) -> Vec<Finding> {
+    let mut seen = std::collections::HashSet::new();
+    let mut out: Vec<Finding> = findings
+        .into_iter()
+        .filter(|f| seen.insert(f.clone()))
+        .collect();
+    out.sort_by(|a, b| (a.line, &a.element, a.code).cmp(&(b.line, &b.element, b.code)));
+    out
 }
 
 /// Every finding for `doc`, sorted by line.
@@ -48,8 +62,7 @@ pub fn check(doc: &Document) -> Vec<Finding> {
     refs::check_doors(doc, &mut out);
     geometry::check_geometry(doc, &mut out);
     overlap::check_overlaps(doc, &mut out);
-    out.sort_by(|a, b| (a.line, &a.element, a.code).cmp(&(b.line, &b.element, b.code)));
-    out
+    tidy(out)
 }
 
 fn finding(code: &'static str, element: &str, line: usize, message: String) -> Finding {
