@@ -183,15 +183,19 @@ pub(crate) fn describe(nrg: &Nrg, mesh: &Mesh, legs: &[Walk], profile: &Profile)
     }
     let length_m: f64 = legs.iter().map(|l| l.length_m).sum();
     let ids: Vec<SpaceId> = spaces.iter().map(|s| mesh.space_ids[*s as usize]).collect();
-    // Each space's kind, looked up once (a long route passes thousands).
-    let kinds: Vec<Option<SpaceKind>> = ids
-        .iter()
-        .map(|id| nrg.space(*id).map(|s| s.kind))
-        .collect();
-    let label = |id: SpaceId| {
-        nrg.space(id)
-            .map_or_else(|| format!("space {id}"), |s| s.label())
+    // The mesh's dense index is the position in `nrg.spaces()`: a long
+    // route passes thousands of spaces, so no search per space.
+    let space_at = |i: usize| {
+        let id = ids[i];
+        nrg.spaces()
+            .get(spaces[i] as usize)
+            .filter(|s| s.id == id)
+            .or_else(|| nrg.space(id))
     };
+    let kinds: Vec<Option<SpaceKind>> = (0..ids.len())
+        .map(|i| space_at(i).map(|s| s.kind))
+        .collect();
+    let label = |i: usize| space_at(i).map_or_else(|| format!("space {}", ids[i]), |s| s.label());
     let doors: Vec<SpaceId> = ids
         .iter()
         .zip(&kinds)
@@ -215,27 +219,26 @@ pub(crate) fn describe(nrg: &Nrg, mesh: &Mesh, legs: &[Walk], profile: &Profile)
     let mut start = 0.0;
     let mut i = 0;
     // Merge corridor segments passed straight through open boundaries.
-    let mut along: Vec<String> = Vec::new();
+    let mut along: Vec<usize> = Vec::new();
     while i < ids.len() {
-        let here = ids[i];
-        along.push(label(here));
+        along.push(i);
         // The next space that is not a door, and the doors on the way.
         let mut j = i + 1;
         let mut through = Vec::new();
         while j + 1 < ids.len() && kinds[j] == Some(SpaceKind::Door) {
-            through.push(ids[j]);
+            through.push(j);
             j += 1;
         }
         if j >= ids.len() {
             let distance_m = length_m - start;
             let instruction = if ids.len() == 1 && length_m < 1e-9 {
-                format!("you are at {}", label(here))
+                format!("you are at {}", label(i))
             } else {
                 format!(
                     "walk {} {} {} and arrive",
                     metres(distance_m),
                     preposition(kinds[i]),
-                    along.join(" and ")
+                    names(&along, &label)
                 )
             };
             steps.push(Step {
@@ -254,7 +257,6 @@ pub(crate) fn describe(nrg: &Nrg, mesh: &Mesh, legs: &[Walk], profile: &Profile)
         let before = heading((leave - 1.0).max(start), leave);
         let after = heading(enter, (enter + 1.0).min(length_m));
         let turn = Turn::between(before, after);
-        let next = ids[j];
         let merge = through.is_empty()
             && turn == Turn::Straight
             && kinds[i] == Some(SpaceKind::Corridor)
@@ -263,12 +265,11 @@ pub(crate) fn describe(nrg: &Nrg, mesh: &Mesh, legs: &[Walk], profile: &Profile)
             i = j;
             continue;
         }
-        let door = through.first().copied();
+        let door = through.first().map(|d| ids[*d]);
         let via = if through.is_empty() {
             String::new()
         } else {
-            let names: Vec<String> = through.iter().map(|d| label(*d)).collect();
-            format!("through {} ", names.join(" and "))
+            format!("through {} ", names(&through, &label))
         };
         let distance_m = leave - start;
         steps.push(Step {
@@ -276,16 +277,16 @@ pub(crate) fn describe(nrg: &Nrg, mesh: &Mesh, legs: &[Walk], profile: &Profile)
                 "walk {} {} {}, {} {}into {}",
                 metres(distance_m),
                 preposition(kinds[i]),
-                along.join(" and "),
+                names(&along, &label),
                 turn.phrase(),
                 via,
-                label(next)
+                label(j)
             ),
             distance_m,
             space: first_of(&ids, i, along.len()),
             turn,
             door,
-            into: Some(next),
+            into: Some(ids[j]),
             at,
         });
         along.clear();
@@ -303,6 +304,31 @@ pub(crate) fn describe(nrg: &Nrg, mesh: &Mesh, legs: &[Walk], profile: &Profile)
     }
 }
 
+/// The spaces at route positions `at` as said in a step: "corridor 1",
+/// "corridor 1 and corridor 6", "corridor 1, corridor 6 and corridor 11";
+/// past [`NAMED_IN_A_STEP`] the first two, the count and the last
+/// ("corridor 1, corridor 6, … and corridor 96 (20 spaces)").
+fn names(at: &[usize], label: &impl Fn(usize) -> String) -> String {
+    let said: Vec<String> = if at.len() <= NAMED_IN_A_STEP {
+        at.iter().map(|i| label(*i)).collect()
+    } else {
+        vec![label(at[0]), label(at[1]), "…".to_string()]
+    };
+    match (said.split_last(), at.len() <= NAMED_IN_A_STEP) {
+        (Some((last, rest)), true) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
+        (Some((last, _)), true) => last.clone(),
+        (_, _) => format!(
+            "{} and {} ({} spaces)",
+            said.join(", "),
+            label(at[at.len() - 1]),
+            at.len()
+        ),
+    }
+}
+
+/// Most spaces named one by one in a step.
+const NAMED_IN_A_STEP: usize = 4;
+
 fn first_of(ids: &[SpaceId], i: usize, merged: usize) -> SpaceId {
     // The step began `merged - 1` non-door spaces back; count back over
     // the spaces (corridor merges never pass doors).
@@ -317,5 +343,29 @@ fn preposition(kind: Option<SpaceKind>) -> &'static str {
     match kind {
         Some(SpaceKind::Corridor) => "along",
         _ => "in",
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn said(n: usize) -> String {
+        let at: Vec<usize> = (0..n).collect();
+        names(&at, &|i| format!("corridor {}", 1 + 5 * i))
+    }
+
+    #[test]
+    fn a_step_names_a_few_spaces_and_counts_many() {
+        assert_eq!(said(1), "corridor 1");
+        assert_eq!(said(2), "corridor 1 and corridor 6");
+        assert_eq!(
+            said(4),
+            "corridor 1, corridor 6, corridor 11 and corridor 16"
+        );
+        assert_eq!(
+            said(20),
+            "corridor 1, corridor 6, … and corridor 96 (20 spaces)"
+        );
     }
 }

@@ -63,6 +63,10 @@ pub(crate) struct Hierarchy {
     /// sorted by head.
     first: Vec<u32>,
     arcs: Vec<Arc>,
+    /// For a shortcut arc, the two arcs up from its middle node to its
+    /// ends (towards the arc's tail, towards its head); found once here so
+    /// unpacking a path does no search.
+    halves: Vec<[u32; 2]>,
 }
 
 /// The node of sample `k` of opening `o`.
@@ -214,7 +218,30 @@ impl Hierarchy {
             arcs.append(list);
         }
         first.push(arcs.len() as u32);
-        Some(Hierarchy { first, arcs })
+        let mut hierarchy = Hierarchy {
+            first,
+            arcs,
+            halves: Vec::new(),
+        };
+        hierarchy.halves = hierarchy.find_halves()?;
+        Some(hierarchy)
+    }
+
+    /// [`Hierarchy::halves`]: for each arc from `v` to `head` through `mid`,
+    /// the arcs from `mid` up to `v` and to `head` (`[NONE; 2]` for an
+    /// original edge). `None` if one is missing (it never is: `mid` was
+    /// contracted before both ends, with an arc to each).
+    fn find_halves(&self) -> Option<Vec<[u32; 2]>> {
+        let mut halves = vec![[NONE; 2]; self.arcs.len()];
+        for v in 0..self.first.len().saturating_sub(1) as u32 {
+            for i in self.up(v) {
+                let Arc { head, mid, .. } = self.arcs[i];
+                if mid != NONE {
+                    halves[i] = [self.arc(mid, v)? as u32, self.arc(mid, head)? as u32];
+                }
+            }
+        }
+        Some(halves)
     }
 
     fn up(&self, v: u32) -> std::ops::Range<usize> {
@@ -358,10 +385,18 @@ impl Hierarchy {
                 out.push((b, space));
                 continue;
             }
-            // `mid` was contracted before both ends: both arcs go up from it.
-            let (to_a, to_b) = (self.arc(mid, a)?, self.arc(mid, b)?);
-            stack.push((mid, b, to_b));
-            stack.push((a, mid, to_a));
+            // `mid` was contracted before both ends: both arcs go up from
+            // it, the arc's tail half first (the arc may be walked either
+            // way).
+            let [to_tail, to_head] = *self.halves.get(arc)?;
+            let tail_is_a = self.arcs.get(to_head as usize)?.head == b;
+            let (to_a, to_b) = if tail_is_a {
+                (to_tail, to_head)
+            } else {
+                (to_head, to_tail)
+            };
+            stack.push((mid, b, to_b as usize));
+            stack.push((a, mid, to_a as usize));
             if stack.len() > self.arcs.len() {
                 return None;
             }
