@@ -134,7 +134,8 @@ async fn route_is_osrm_shaped() {
         .map(|s| s["id"].as_u64().unwrap())
         .collect();
     assert_eq!(spaces, vec![10, 10000, 1, 10005, 15]);
-    // The default clearance (0.2 m) keeps that far from the two corners.
+    // The default clearance (0.2 m) keeps that far from the two corners
+    // (to the millimetre the answer is given in).
     let cleared = s.get("/maps/building/route?from=10&to=15").await.json();
     let line: Vec<[f64; 2]> = cleared["routes"][0]["geometry"]["coordinates"]
         .as_array()
@@ -148,7 +149,7 @@ async fn route_is_osrm_shaped() {
             .map(|w| nrgdb::model::segment_distance(corner, w[0], w[1]))
             .fold(f64::INFINITY, f64::min);
         assert!(
-            nearest >= 0.2 - 1e-9,
+            nearest >= 0.2 - 1e-3,
             "{corner:?} is {nearest} m from the route"
         );
     }

@@ -38,6 +38,7 @@ pub struct Waypoint<'a> {
     /// Its name, if any.
     pub name: Option<&'a str>,
     /// Where the route starts, passes or ends, metres.
+    #[serde(serialize_with = "point_mm")]
     pub location: Point,
 }
 
@@ -86,6 +87,7 @@ pub struct StepJson<'a> {
     /// The space entered at its end.
     pub into: Option<SpaceId>,
     /// Where the manoeuvre happens, metres.
+    #[serde(serialize_with = "point_mm")]
     pub location: Point,
 }
 
@@ -96,6 +98,7 @@ pub struct LineString<'a> {
     #[serde(rename = "type")]
     pub kind: &'static str,
     /// `[x, y]` in metres.
+    #[serde(serialize_with = "points_mm")]
     pub coordinates: &'a [Point],
 }
 
@@ -112,6 +115,22 @@ pub struct SpaceJson<'a> {
 
 fn millimetres(m: f64) -> f64 {
     (m * 1000.0).round() / 1000.0
+}
+
+/// A point in metres, said to the millimetre (map cells are centimetres wide:
+/// more digits would be noise, and they are most of the answer's bytes).
+fn point_mm<S: serde::Serializer>(p: &Point, s: S) -> Result<S::Ok, S::Error> {
+    [millimetres(p[0]), millimetres(p[1])].serialize(s)
+}
+
+/// Points as [`point_mm`] says each.
+fn points_mm<S: serde::Serializer>(points: &&[Point], s: S) -> Result<S::Ok, S::Error> {
+    use serde::ser::SerializeSeq;
+    let mut seq = s.serialize_seq(Some(points.len()))?;
+    for p in points.iter() {
+        seq.serialize_element(&[millimetres(p[0]), millimetres(p[1])])?;
+    }
+    seq.end()
 }
 
 fn tenths(s: f64) -> f64 {
