@@ -7,13 +7,19 @@
 //! cargo run --release --example eval_maps [-- MAPS_DIR [--method ccl] [--params p.toml] [--pictures OUT_DIR]]
 //! ```
 //! MAPS_DIR defaults to `$NRGDB_SHARED/maps` (NRGDB_SHARED defaults to `../shared`).
+//! `--doors` also prints every door matched to a GT doorway line: its id, the middle of its
+//! doorway (metres), the width reported and the GT line's length, worst first.
 //! `--pictures OUT_DIR` also writes each map's evaluation picture (`<name>_eval.png`, see
 //! `nrgdb::eval::evaluation_picture`): found and missed doorway lines, right and wrong doors.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use nrgdb::eval::{Evaluation, evaluate, evaluation_picture, load_ground_truth};
+use nrgdb::eval::{
+    Evaluation, GroundTruth, door_radius_px, door_widths, evaluate, evaluation_picture,
+    load_ground_truth,
+};
+use nrgdb::extract::Extraction;
 use nrgdb::extract::{ExtractParams, Method, extract};
 use nrgdb::grid::{LoadOptions, load_map};
 
@@ -22,6 +28,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut dir: Option<PathBuf> = None;
     let mut params = ExtractParams::default();
     let mut pictures: Option<PathBuf> = None;
+    let mut doors = false;
     while let Some(a) = args.next() {
         match a.as_str() {
             "--method" => params.method = args.next().unwrap_or_default().parse::<Method>()?,
@@ -29,6 +36,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 params = toml::from_str(&std::fs::read_to_string(args.next().unwrap_or_default())?)?
             }
             "--pictures" => pictures = args.next().map(PathBuf::from),
+            "--doors" => doors = true,
             _ => dir = Some(PathBuf::from(a)),
         }
     }
@@ -94,6 +102,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             format!("{}/{}", e.rooms.segments, e.rooms.gt_rooms),
             ms
         );
+        if doors {
+            print_doors(&gt, &x, grid.resolution);
+        }
         if let Some(out) = &pictures {
             std::fs::create_dir_all(out)?;
             evaluation_picture(&grid, &gt, &x).save(out.join(format!("{name}_eval.png")))?;
@@ -135,4 +146,26 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         );
     }
     Ok(())
+}
+
+/// Each door matched to a GT doorway line, worst width error first.
+fn print_doors(gt: &GroundTruth, x: &Extraction, resolution: f64) {
+    let mut rows = door_widths(gt, x, resolution, door_radius_px(resolution));
+    rows.sort_by(|a, b| b.error_m().total_cmp(&a.error_m()));
+    for r in rows {
+        let middle = x
+            .nrg
+            .space(nrgdb::model::SpaceId(r.door))
+            .and_then(nrgdb::model::doorway)
+            .map(|d| d.middle());
+        println!(
+            "    door {:>4} at {:<22} reported {:.3} m, GT line {} {:.3} m, error {:+.3} m",
+            r.door,
+            middle.map_or("-".to_string(), |m| format!("({:.2}, {:.2})", m[0], m[1])),
+            r.reported_m,
+            r.line,
+            r.truth_m,
+            r.reported_m - r.truth_m
+        );
+    }
 }

@@ -69,12 +69,17 @@ impl Ord for Cell {
 /// Most cells examined (bounds the work on huge or degenerate input).
 const MAX_CELLS: usize = 100_000;
 
+/// About the most cells the search starts from (see
+/// [`pole_of_inaccessibility`]).
+const MAX_START_CELLS: usize = 4096;
+
 /// The pole of inaccessibility of the polygon (`exterior` with `holes`),
 /// to within `precision` metres of the best distance, and its distance to
 /// the boundary. Of the points nearly as deep as the deepest (within
 /// `2 × precision` and 1 %), the one nearest the polygon's centroid wins,
 /// so a straight corridor's pole is its middle and a quarter turn of the
-/// map turns the pole with it. `None` for fewer than three points.
+/// map turns the pole with it. `None` for fewer than three points or a
+/// polygon whose extent overflows.
 ///
 /// ```
 /// use nrgdb::model::pole_of_inaccessibility;
@@ -99,23 +104,35 @@ pub fn pole_of_inaccessibility(
             hi[k] = hi[k].max(p[k]);
         }
     }
-    let size = (hi[0] - lo[0]).min(hi[1] - lo[1]);
+    let (w, h) = (hi[0] - lo[0], hi[1] - lo[1]);
+    if !(w.is_finite() && h.is_finite()) {
+        return None;
+    }
+    let size = w.min(h);
     let precision = precision.max(1e-9);
     let centroid = polygon_centroid(exterior).unwrap_or(lo);
     let mut best = Cell::new(centroid, 0.0, exterior, holes);
     if size <= 0.0 {
         return Some((best.centre, best.distance.max(0.0)));
     }
-    let half = size / 2.0;
+    // Square cells as wide as the polygon's short side cover its box, but
+    // no more than about MAX_START_CELLS of them (a sliver a kilometre
+    // long and a micrometre wide would need billions): larger cells then.
+    let limit = MAX_START_CELLS as f64;
+    let cell = size.max((w * h / limit).sqrt()).max(w.max(h) / limit);
+    let (nx, ny) = ((w / cell).ceil().max(1.0), (h / cell).ceil().max(1.0));
+    let half = cell / 2.0;
     let mut queue = BinaryHeap::new();
-    let mut x = lo[0];
-    while x < hi[0] {
-        let mut y = lo[1];
-        while y < hi[1] {
-            queue.push(Cell::new([x + half, y + half], half, exterior, holes));
-            y += size;
+    for i in 0..nx as usize {
+        for j in 0..ny as usize {
+            let corner = [lo[0] + i as f64 * cell, lo[1] + j as f64 * cell];
+            queue.push(Cell::new(
+                [corner[0] + half, corner[1] + half],
+                half,
+                exterior,
+                holes,
+            ));
         }
-        x += size;
     }
     let mut seen = 0;
     let mut examined = vec![best];
@@ -162,6 +179,30 @@ mod tests {
 
     fn turn(p: Point) -> Point {
         [-p[1], p[0]]
+    }
+
+    /// Found by the fuzz harness: an imported cell 1e300 m long and a
+    /// fraction of a metre wide made the start grid allocate gigabytes.
+    #[test]
+    fn issue_21_slivers_and_huge_cells_start_from_a_bounded_grid() {
+        // A thousand kilometres long and a millimetre wide: a billion start
+        // cells before.
+        let sliver = vec![[0.0, 0.0], [1e6, 0.0], [1e6, 1e-3], [0.0, 1e-3]];
+        let (p, r) = pole_of_inaccessibility(&sliver, &[], 1e-4).unwrap();
+        assert!(p[1] > 0.0 && p[1] < 1e-3, "{p:?}");
+        assert!(r > 0.0 && r <= 5e-4 + 1e-9, "{r}");
+        // At 1e300 m the arithmetic is noise; it must still end, soon.
+        let huge = vec![[0.0, 0.0], [1e300, 0.0], [1e300, 0.5], [0.0, 0.5]];
+        let _ = pole_of_inaccessibility(&huge, &[], 1e-3);
+        let overflowing = vec![[-1e308, 0.0], [1e308, 0.0], [0.0, 1e308]];
+        assert_eq!(pole_of_inaccessibility(&overflowing, &[], 1e-3), None);
+        // A 4 000 : 1 corridor keeps cells as wide as it is.
+        let corridor = vec![[0.0, 0.0], [4000.0, 0.0], [4000.0, 1.0], [0.0, 1.0]];
+        let (p, r) = pole_of_inaccessibility(&corridor, &[], 1e-3).unwrap();
+        assert!(
+            (r - 0.5).abs() < 2e-3 && (p[1] - 0.5).abs() < 2e-3,
+            "{p:?} {r}"
+        );
     }
 
     #[test]

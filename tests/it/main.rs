@@ -1,6 +1,8 @@
 #![cfg(test)]
 //! nrgdb's integration tests: one binary, one module per concern.
 
+mod hostile_gen;
+mod hostile_inputs;
 mod indoorgml_bad_input;
 mod indoorgml_check;
 mod indoorgml_fuzz;
