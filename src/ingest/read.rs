@@ -157,6 +157,7 @@ pub fn read(files: &[InputFile<'_>], options: &IngestOptions) -> Result<Prepared
 /// extracted) or a model file, each at most `options.max_bytes`; the same
 /// as [`read`] on the files' bytes.
 pub fn read_path(path: &Path, options: &IngestOptions) -> Result<Prepared, IngestError> {
+    tracing::info!(path = %path.display(), "reading");
     let bytes = format::read_bytes(path, options.max_bytes)?;
     let name = path.to_string_lossy();
     let file = InputFile::named(&name, &bytes);

@@ -54,9 +54,15 @@ impl Store {
         check_meta(&meta)?;
         let grid = grid.map(super::grids::encode_grid).transpose()?;
         for _ in 0..MAX_IMPORT_ATTEMPTS {
+            tracing::info!(
+                map,
+                spaces = nrg.spaces().len(),
+                "matching the latest revision"
+            );
             let prepared = self
                 .prepare_import(map, nrg)
                 .map_err(|e| e.in_file(&self.path))?;
+            tracing::info!(map, "writing the revision");
             #[cfg(test)]
             if let Some(hook) = self.before_write_lock.as_mut() {
                 hook();
