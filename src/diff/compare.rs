@@ -22,8 +22,9 @@
 
 use super::align::{Alignment, align_grids, alignment_quality};
 use super::change_set::ChangeSet;
-use super::detect::diff;
+use super::detect::diff_within;
 use super::error::DiffError;
+use super::matching::MAX_MATCH_PAIRS;
 use super::params::{AlignMode, DiffOptions};
 use super::transform::RigidTransform;
 use crate::grid::{Cell, OccupancyGrid};
@@ -146,7 +147,10 @@ pub fn compare(
         Some(al) => al.transform.apply_to_nrg(b.nrg)?,
         None => b.nrg.clone(),
     };
-    let mut changes = diff(a.nrg, &moved, params);
+    let mut changes =
+        diff_within(a.nrg, &moved, params, MAX_MATCH_PAIRS).ok_or(DiffError::TooManyOverlaps {
+            limit: MAX_MATCH_PAIRS,
+        })?;
     changes.alignment = alignment.map(|al| al.transform);
     changes.from = a.label.map(str::to_string);
     changes.to = b.label.map(str::to_string);

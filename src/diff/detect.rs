@@ -22,7 +22,7 @@ use super::change_set::{
     CHANGESET_FORMAT, ChangeSet, ConnectionChange, ConnectionChangeKind, Merge, SpaceChange,
     SpaceChangeKind, Split, Summary,
 };
-use super::matching::{match_overlaps, overlaps};
+use super::matching::{match_overlaps, overlaps, overlaps_within};
 use super::overlaps::Overlaps;
 use super::params::{DiffParams, MatchParams};
 use super::split_merge::splits_and_merges;
@@ -46,6 +46,18 @@ use crate::model::{Connection, Nrg, Space, SpaceId, SpaceKind, doorway};
 pub fn diff(a: &Nrg, b: &Nrg, params: &DiffParams) -> ChangeSet {
     let ov = overlaps(a, b);
     diff_with_overlaps(a, b, &ov, params)
+}
+
+/// [`diff`], or `None` rather than measure more than `max_pairs` pairs of
+/// spaces whose boxes meet (see [`MAX_MATCH_PAIRS`](super::MAX_MATCH_PAIRS)).
+pub(crate) fn diff_within(
+    a: &Nrg,
+    b: &Nrg,
+    params: &DiffParams,
+    max_pairs: usize,
+) -> Option<ChangeSet> {
+    let ov = overlaps_within(a, b, max_pairs)?;
+    Some(diff_with_overlaps(a, b, &ov, params))
 }
 
 /// [`diff`] over precomputed overlaps.
@@ -279,6 +291,27 @@ mod tests {
             kind,
             length_m: 1.0,
         }
+    }
+
+    /// Issue 21, defect 8, in the diff path: spaces whose boxes all meet
+    /// (thin diagonal strips, valid and disjoint) make every pair a
+    /// candidate; past the bound the diff gives up instead of measuring.
+    #[test]
+    fn issue_21_a_diff_of_piled_boxes_stops_at_its_bound() {
+        let strips = |n: u32, shift: f64| {
+            let spaces = (0..n)
+                .map(|i| {
+                    let x = f64::from(i) * 0.5 + shift;
+                    let poly = vec![[x, 0.0], [x + 0.4, 0.0], [x + 40.4, 40.0], [x + 40.0, 40.0]];
+                    Space::new(SpaceId(i + 1), SpaceKind::Room, [x + 20.2, 20.0], poly)
+                })
+                .collect();
+            Nrg::new(spaces, vec![]).unwrap()
+        };
+        let (a, b) = (strips(30, 0.0), strips(30, 0.05));
+        assert!(diff_within(&a, &b, &DiffParams::default(), 100).is_none());
+        let whole = diff_within(&a, &b, &DiffParams::default(), 30 * 30).unwrap();
+        assert_eq!(whole, diff(&a, &b, &DiffParams::default()));
     }
 
     /// Two rooms 1 and 2 joined by door 3 (0.9 m wide).

@@ -37,6 +37,16 @@ pub enum DiffError {
     /// The result of applying is not a valid model.
     #[error("applying the change set gives an invalid model: {0}")]
     Model(#[from] ModelError),
+    /// The two models' spaces pile on each other: matching would measure
+    /// more than `limit` pairs.
+    #[error(
+        "cannot compare these models: more than {limit} pairs of their spaces overlap (are spaces \
+         piled on each other?)"
+    )]
+    TooManyOverlaps {
+        /// The bound on overlapping pairs.
+        limit: usize,
+    },
     /// A parameter out of range.
     #[error("diff parameter `{name}` = {value} is out of range: {hint}")]
     BadParam {

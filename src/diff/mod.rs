@@ -58,8 +58,8 @@ pub use compare::{Comparison, MODEL_GRID_M, Revision, compare, model_grid};
 pub use detect::diff;
 pub use error::DiffError;
 pub use matching::{
-    MAX_OPTIMAL_COMPONENT, SpaceMatch, match_overlaps, match_spaces, match_spaces_within,
-    overlap_iou, overlaps,
+    MAX_MATCH_PAIRS, MAX_OPTIMAL_COMPONENT, SpaceMatch, match_overlaps, match_spaces,
+    match_spaces_within, overlap_iou, overlaps,
 };
 pub use overlaps::Overlaps;
 pub use params::{AlignMode, AlignParams, DiffOptions, DiffParams, MatchParams};

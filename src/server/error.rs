@@ -235,15 +235,18 @@ impl From<QueryError> for ApiError {
     }
 }
 
-/// A failed comparison as an API error: no reliable alignment is the
-/// caller's to fix (a 400 naming `parameter`, with `hint`), a busy store a
+/// A failed comparison as an API error: no reliable alignment, or models
+/// too piled to match, is the caller's to fix (a 400 naming `parameter`,
+/// with `hint`), a busy store a
 /// 503, anything else ours. Shared by `GET /diff` and the viewer's
 /// `?diff=` (here, so that neither imports the other).
 pub fn comparing_error(e: QueryError, parameter: &'static str, hint: &str) -> ApiError {
     match e {
-        QueryError::Diff(e @ (DiffError::Unreliable { .. } | DiffError::TooFewWalls { .. })) => {
-            ApiError::bad(parameter, format!("{e} ({hint})"))
-        }
+        QueryError::Diff(
+            e @ (DiffError::Unreliable { .. }
+            | DiffError::TooFewWalls { .. }
+            | DiffError::TooManyOverlaps { .. }),
+        ) => ApiError::bad(parameter, format!("{e} ({hint})")),
         QueryError::Source(SourceError::Backend(e)) => match e.downcast::<StoreError>() {
             Ok(e) => (*e).into(),
             Err(e) => ApiError::Internal(format!("loading a revision: {e}")),

@@ -227,11 +227,7 @@ impl Store {
 /// [`StoreError::MapChanged`].
 pub const MAX_IMPORT_ATTEMPTS: usize = 3;
 
-/// Pairs of spaces (one of the parent revision, one of the import) whose
-/// boxes meet that an import measures at most to match them: a revision
-/// of 20 000 spaces meets about ten times as many; 20 000 piled over
-/// 20 000 would be 400 million (issue 21, defect 8).
-pub const MAX_MATCH_PAIRS: usize = 2_000_000;
+pub use crate::diff::MAX_MATCH_PAIRS;
 
 /// An import matched against its parent revision, ready to be written
 /// (made without the write lock).
