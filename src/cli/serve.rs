@@ -48,6 +48,10 @@ pub struct Args {
     /// milliseconds (408 past it).
     #[arg(long, default_value_t = 60_000, value_name = "MS")]
     pub body_timeout_ms: u64,
+    /// Time an answer may wait for a client that does not read it, in
+    /// milliseconds: the connection is closed past it.
+    #[arg(long, default_value_t = 30_000, value_name = "MS")]
+    pub write_timeout_ms: u64,
     /// Connections open at once at most; further clients wait to be
     /// accepted.
     #[arg(long, default_value_t = 512, value_name = "N")]
@@ -64,14 +68,15 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         args.timeout_ms,
         args.header_timeout_ms,
         args.body_timeout_ms,
+        args.write_timeout_ms,
     ]
     .contains(&0)
         || args.max_upload_mb == 0
         || args.max_connections == 0
     {
         miette::bail!(
-            "--timeout-ms, --header-timeout-ms, --body-timeout-ms, --max-upload-mb and \
-             --max-connections must be at least 1"
+            "--timeout-ms, --header-timeout-ms, --body-timeout-ms, --write-timeout-ms, \
+             --max-upload-mb and --max-connections must be at least 1"
         );
     }
     let mut config = ServerConfig::new(args.db.db.clone());
@@ -83,6 +88,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     config.cache_revisions = args.cache_revisions;
     config.header_timeout = std::time::Duration::from_millis(args.header_timeout_ms);
     config.body_timeout = std::time::Duration::from_millis(args.body_timeout_ms);
+    config.write_timeout = std::time::Duration::from_millis(args.write_timeout_ms);
     config.max_connections = args.max_connections;
     let runtime = tokio::runtime::Runtime::new().into_diagnostic()?;
     runtime.block_on(async {

@@ -33,6 +33,9 @@ pub struct ServerConfig {
     /// Time a client has to send a request's body (uploads included; 408
     /// past it).
     pub body_timeout: Duration,
+    /// Time a response write may stay blocked (a client that does not
+    /// read its answer) before the connection is closed.
+    pub write_timeout: Duration,
     /// Connections open at once at most; more wait to be accepted.
     pub max_connections: usize,
 }
@@ -59,6 +62,7 @@ impl ServerConfig {
             cache_revisions: 64,
             header_timeout: Duration::from_secs(10),
             body_timeout: Duration::from_secs(60),
+            write_timeout: Duration::from_secs(30),
             max_connections: 512,
         }
     }

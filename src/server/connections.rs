@@ -8,6 +8,8 @@
 //! [`ServerConfig::header_timeout`] after the server started waiting for it
 //! is closed. The wait starts when the connection opens and again after
 //! each response, so the same bound drops idle keep-alive connections.
+//! A response write blocked for [`ServerConfig::write_timeout`] (a client
+//! that does not read) closes the connection (`server/write_timeout.rs`).
 //! Request bodies are bounded by [`ServerConfig::body_timeout`] where they
 //! are read (`server/body.rs`), the whole request by
 //! [`ServerConfig::timeout`] (`server/timeout.rs`). HTTP/1.1 only, as
@@ -28,6 +30,7 @@ use tokio::sync::{Semaphore, watch};
 use tokio::task::JoinSet;
 
 use super::config::ServerConfig;
+use super::write_timeout::WriteTimeout;
 
 /// Serves `app` on `listener` until `shutdown` resolves; then stops
 /// accepting, lets each connection finish the request it is serving and
@@ -59,9 +62,10 @@ pub(crate) async fn serve_connections(
         let service = TowerToHyperService::new(app.clone());
         let builder = builder.clone();
         let mut stop = stop_rx.clone();
+        let io = TokioIo::new(WriteTimeout::new(stream, config.write_timeout));
         connections.spawn(async move {
             let _permit = permit;
-            let mut conn = pin!(builder.serve_connection(TokioIo::new(stream), service));
+            let mut conn = pin!(builder.serve_connection(io, service));
             tokio::select! {
                 result = conn.as_mut() => log_end(result),
                 _ = stop.changed() => {

@@ -37,6 +37,7 @@ mod state;
 mod timeout;
 mod track;
 pub mod viewer;
+mod write_timeout;
 
 use std::future::Future;
 use std::net::SocketAddr;

@@ -118,3 +118,40 @@ async fn issue_21_defect_9_connections_are_capped() {
     );
     s.stop().await;
 }
+
+/// Issue 21: a client that asks and never reads its answers held its
+/// connection for ever (and a graceful shutdown waited for it). Pipelined
+/// requests fill both socket buffers; past the write timeout the server
+/// closes the connection, long before the answers run out.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn issue_21_a_client_that_never_reads_is_dropped() {
+    let s = TestServer::start(|c| {
+        c.write_timeout = Duration::from_millis(300);
+        c.header_timeout = Duration::from_secs(60);
+        c.timeout = Duration::from_secs(60);
+    })
+    .await;
+    let one = s.get("/maps/building/revisions/1/indoorgml").await;
+    assert_eq!(one.status, 200);
+    let socket = tokio::net::TcpSocket::new_v4().unwrap();
+    socket.set_recv_buffer_size(4096).unwrap();
+    let mut stalled = socket.connect(s.addr).await.unwrap();
+    let request = b"GET /maps/building/revisions/1/indoorgml HTTP/1.1\r\nHost: x\r\n\r\n";
+    let answers = 2000;
+    // Far more than the buffers between us hold: the server blocks.
+    let total = answers * one.body.len();
+    assert!(total > 16 << 20, "answers too small to block: {total}");
+    stalled.write_all(&request.repeat(answers)).await.unwrap();
+    tokio::time::sleep(Duration::from_millis(1500)).await;
+    let got = read_to_close(&mut stalled).await;
+    assert!(
+        got.len() < total / 2,
+        "the server kept writing: {} of {total} bytes",
+        got.len()
+    );
+    // Others are served, and the server stops at once.
+    assert_eq!(s.get("/health").await.status, 200);
+    tokio::time::timeout(HANG, s.stop())
+        .await
+        .expect("shutdown waited for the stalled client");
+}
