@@ -119,7 +119,13 @@ pub fn pole_of_inaccessibility(
     // no more than about MAX_START_CELLS of them (a sliver a kilometre
     // long and a micrometre wide would need billions): larger cells then.
     let limit = MAX_START_CELLS as f64;
-    let cell = size.max((w * h / limit).sqrt()).max(w.max(h) / limit);
+    // (√w·√h: w·h overflows for coordinates near f64::MAX.)
+    let cell = size
+        .max(w.sqrt() * h.sqrt() / limit.sqrt())
+        .max(w.max(h) / limit);
+    if !cell.is_finite() {
+        return Some((best.centre, best.distance.max(0.0)));
+    }
     let (nx, ny) = ((w / cell).ceil().max(1.0), (h / cell).ceil().max(1.0));
     let half = cell / 2.0;
     let mut queue = BinaryHeap::new();
@@ -196,6 +202,15 @@ mod tests {
         let _ = pole_of_inaccessibility(&huge, &[], 1e-3);
         let overflowing = vec![[-1e308, 0.0], [1e308, 0.0], [0.0, 1e308]];
         assert_eq!(pole_of_inaccessibility(&overflowing, &[], 1e-3), None);
+        // Near f64::MAX but with a finite extent: w·h overflows, the
+        // answer must not.
+        let near_max = vec![[0.0, 0.0], [1e308, 0.0], [1e308, 1e308]];
+        if let Some((p, r)) = pole_of_inaccessibility(&near_max, &[], 1e-3) {
+            assert!(
+                p.iter().all(|c| c.is_finite()) && r.is_finite(),
+                "{p:?} {r}"
+            );
+        }
         // A 4 000 : 1 corridor keeps cells as wide as it is.
         let corridor = vec![[0.0, 0.0], [4000.0, 0.0], [4000.0, 1.0], [0.0, 1.0]];
         let (p, r) = pole_of_inaccessibility(&corridor, &[], 1e-3).unwrap();
