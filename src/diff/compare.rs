@@ -165,9 +165,16 @@ pub fn compare(
 /// Cell size of [`model_grid`], metres.
 pub const MODEL_GRID_M: f64 = 0.1;
 
+/// Most cells of a [`model_grid`] (a 200 m × 200 m building at 0.1 m):
+/// larger models get larger cells, so a stranger's 2 km model costs no
+/// more than a building.
+pub const MAX_MODEL_GRID_CELLS: f64 = 4.0e6;
+
 /// A stand-in occupancy grid for a model without one: cells whose centre
 /// lies in a space are free, cells next to them occupied (the walls are
-/// the boundary of the union of the spaces), the rest unknown.
+/// the boundary of the union of the spaces), the rest unknown. Cells are
+/// `cell_m` wide, or wider when the model would need more than
+/// [`MAX_MODEL_GRID_CELLS`].
 pub fn model_grid(nrg: &Nrg, cell_m: f64) -> OccupancyGrid {
     let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
     for p in nrg.spaces().iter().flat_map(|s| &s.polygon) {
@@ -176,9 +183,23 @@ pub fn model_grid(nrg: &Nrg, cell_m: f64) -> OccupancyGrid {
             hi[k] = hi[k].max(p[k]);
         }
     }
-    if nrg.spaces().is_empty() || !(lo[0].is_finite() && hi[0].is_finite()) || cell_m <= 0.0 {
+    let extent = [hi[0] - lo[0], hi[1] - lo[1]];
+    if nrg.spaces().is_empty()
+        || !(extent[0].is_finite() && extent[1].is_finite())
+        || !(cell_m.is_finite() && cell_m > 0.0)
+    {
         return OccupancyGrid::from_cells(0, 0, cell_m.max(1e-3), [0.0; 3], Vec::new());
     }
+    // With its two-cell margins, at most about MAX_MODEL_GRID_CELLS.
+    let needed = (extent[0] / cell_m + 4.0) * (extent[1] / cell_m + 4.0);
+    if !needed.is_finite() {
+        return OccupancyGrid::from_cells(0, 0, cell_m.max(1e-3), [0.0; 3], Vec::new());
+    }
+    let cell_m = if needed > MAX_MODEL_GRID_CELLS {
+        cell_m * (needed / MAX_MODEL_GRID_CELLS).sqrt() * 1.01
+    } else {
+        cell_m
+    };
     let margin = 2.0 * cell_m;
     let (x0, y0) = (lo[0] - margin, lo[1] - margin);
     let w = (((hi[0] + margin - x0) / cell_m).ceil() as usize).clamp(1, 20_000);
@@ -243,6 +264,30 @@ mod tests {
     use super::*;
     use crate::diff::apply;
     use crate::fixtures::corridor_building;
+
+    /// Issue 21: a model 2 km across (two rooms far apart) rasterised at
+    /// 0.1 m was 400 million cells, cut off at 20 000 per side; now its
+    /// cells grow and both rooms are in it.
+    #[test]
+    fn a_model_two_kilometres_wide_gets_a_bounded_grid() {
+        use crate::model::{Space, SpaceId, SpaceKind};
+        let room = |id, x: f64| {
+            let poly = vec![[x, 0.0], [x + 10.0, 0.0], [x + 10.0, 8.0], [x, 8.0]];
+            Space::new(SpaceId(id), SpaceKind::Room, [x + 5.0, 4.0], poly)
+        };
+        let nrg = Nrg::new(vec![room(1, 0.0), room(2, 1990.0)], vec![]).unwrap();
+        let g = model_grid(&nrg, 0.1);
+        let cells = f64::from(g.width) * f64::from(g.height);
+        assert!(cells <= MAX_MODEL_GRID_CELLS * 1.05, "{cells} cells");
+        for p in [[5.0, 4.0], [1995.0, 4.0]] {
+            let px = g.metres_to_pixel(p);
+            assert_eq!(
+                g.cell(px[0] as u32, px[1] as u32),
+                Some(Cell::Free),
+                "{p:?}"
+            );
+        }
+    }
 
     #[test]
     fn model_grids_make_walls_where_spaces_end() {
