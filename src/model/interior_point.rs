@@ -69,6 +69,11 @@ impl Ord for Cell {
 /// Most cells examined (bounds the work on huge or degenerate input).
 const MAX_CELLS: usize = 100_000;
 
+/// Most point-to-segment distances one search computes (each cell costs
+/// one per edge): a 500 000-vertex outline examines 400 cells, not 100 000
+/// (minutes).
+const MAX_DISTANCES: usize = 200_000_000;
+
 /// About the most cells the search starts from (see
 /// [`pole_of_inaccessibility`]).
 const MAX_START_CELLS: usize = 4096;
@@ -140,6 +145,8 @@ pub fn pole_of_inaccessibility(
             ));
         }
     }
+    let edges = exterior.len() + holes.iter().map(Vec::len).sum::<usize>();
+    let max_cells = (MAX_DISTANCES / edges.max(1)).clamp(64, MAX_CELLS);
     let mut seen = 0;
     let mut examined = vec![best];
     while let Some(cell) = queue.pop() {
@@ -147,7 +154,7 @@ pub fn pole_of_inaccessibility(
         if cell.distance > best.distance + 1e-12 {
             best = cell;
         }
-        if cell.bound - best.distance <= precision || seen >= MAX_CELLS {
+        if cell.bound - best.distance <= precision || seen >= max_cells {
             continue;
         }
         let h = cell.half / 2.0;

@@ -17,6 +17,7 @@ mod interior_point;
 mod nrg;
 mod repair;
 mod space;
+pub(crate) mod validity;
 
 pub use connection::{Connection, ConnectionKind, ConnectionPaths};
 pub use doorway::{Doorway, convex_hull, polygon_doorway};

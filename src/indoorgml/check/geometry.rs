@@ -6,9 +6,9 @@
 use geo::{Coord, LineString as GeoLine, Polygon as GeoPolygon};
 
 use super::super::document::{BoundaryGeometry, CellGeometry, Coords, Document, Polygon, Solid};
-use super::validity::{PolygonError, polygon_errors};
 use super::{Finding, finding};
 use crate::model::polygon_area;
+use crate::model::validity::{PolygonError, polygon_errors};
 
 pub fn check_geometry(doc: &Document, out: &mut Vec<Finding>) {
     for c in doc.cells() {

@@ -11,7 +11,6 @@ mod geometry;
 mod overlap;
 mod refs;
 pub mod schema;
-mod validity;
 
 use std::fmt;
 

@@ -11,10 +11,11 @@ use rstar::primitives::{GeomWithData, Rectangle};
 use spade::handles::FixedVertexHandle;
 use spade::{ConstrainedDelaunayTriangulation, Point2, PositionInTriangulation, Triangulation};
 
+use super::containment::Containment;
 use super::gate::GateView;
 use super::noding;
 use super::openings::Openings;
-use crate::model::{Nrg, Point, Space, SpaceId, point_in_ring};
+use crate::model::{Nrg, Point, Space, SpaceId};
 
 pub(crate) use super::gate::{Gate, NONE};
 
@@ -73,10 +74,6 @@ fn envelope(space: &Space, i: usize) -> Option<Envelope> {
         }
     }
     Some(GeomWithData::new(Rectangle::from_corners(lo, hi), i))
-}
-
-fn contains(space: &Space, p: Point) -> bool {
-    point_in_ring(p, &space.polygon) && !space.holes.iter().any(|h| point_in_ring(p, h))
 }
 
 /// Vertices are snapped to this grid (per metre): a micrometre.
@@ -196,7 +193,8 @@ impl Mesh {
                 .collect(),
         );
         // Faces in regions bounded by constraint edges: one point-in-polygon
-        // test per region.
+        // test per region (indexed: a zigzag outline makes thousands).
+        let containment = Containment::new(spaces);
         let nfaces = cdt.all_faces().len();
         let mut face_space = vec![NONE; nfaces];
         let mut seen = vec![false; nfaces];
@@ -210,7 +208,7 @@ impl Mesh {
             let space = envelopes
                 .locate_all_at_point(&centre)
                 .map(|e| e.data)
-                .filter(|&i| contains(&spaces[i], centre))
+                .filter(|&i| containment.contains(i, centre))
                 .min_by(|&i, &j| {
                     spaces[i]
                         .area_m2

@@ -19,6 +19,7 @@
 //! `rstar`; knows nothing of queries, storage or HTTP.
 
 mod clearance;
+mod containment;
 mod dead_ends;
 mod funnel;
 mod gate;

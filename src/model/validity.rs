@@ -6,7 +6,9 @@
 //! through an R-tree of their bounding boxes, holes likewise, and the
 //! segment pairs looked at are bounded ([`MAX_SEGMENT_PAIRS`]).
 //!
-//! Uses geo (predicates, relate) and rstar; nothing of the crate.
+//! Used by `nrgdb check` (`indoorgml::check`) and by the geometry repairs
+//! ([`super::repair_geometry`]). Uses geo (predicates, relate) and rstar;
+//! nothing of the crate.
 
 use geo::coordinate_position::CoordPos;
 use geo::dimensions::Dimensions;
