@@ -115,8 +115,10 @@ pub fn compare(
         align: mode,
         params,
         align_params: align,
+        deadline,
     } = options;
     params.validate()?;
+    let past = || deadline.is_some_and(|d| std::time::Instant::now() >= d);
     let mut identity_inliers = None;
     let mut alignment = None;
     if *mode != AlignMode::Never {
@@ -143,14 +145,22 @@ pub fn compare(
             alignment = Some(align_grids(ga, gb, align)?);
         }
     }
+    if past() {
+        return Err(DiffError::TimedOut);
+    }
     let moved = match &alignment {
         Some(al) => al.transform.apply_to_nrg(b.nrg)?,
         None => b.nrg.clone(),
     };
-    let mut changes =
-        diff_within(a.nrg, &moved, params, MAX_MATCH_PAIRS).ok_or(DiffError::TooManyOverlaps {
-            limit: MAX_MATCH_PAIRS,
-        })?;
+    let Some(mut changes) = diff_within(a.nrg, &moved, params, MAX_MATCH_PAIRS, *deadline) else {
+        return Err(if past() {
+            DiffError::TimedOut
+        } else {
+            DiffError::TooManyOverlaps {
+                limit: MAX_MATCH_PAIRS,
+            }
+        });
+    };
     changes.alignment = alignment.map(|al| al.transform);
     changes.from = a.label.map(str::to_string);
     changes.to = b.label.map(str::to_string);
@@ -287,6 +297,23 @@ mod tests {
                 "{p:?}"
             );
         }
+    }
+
+    /// Issue 21, defect 7: the comparison stops at its deadline.
+    #[test]
+    fn a_comparison_past_its_deadline_stops() {
+        let (a, b) = (corridor_building(3), corridor_building(4));
+        let options = DiffOptions {
+            deadline: Some(std::time::Instant::now()),
+            ..DiffOptions::default()
+        };
+        let e = compare(Revision::new(&a), Revision::new(&b), &options).unwrap_err();
+        assert!(matches!(e, DiffError::TimedOut), "{e:?}");
+        let later = DiffOptions {
+            deadline: std::time::Instant::now().checked_add(std::time::Duration::from_secs(60)),
+            ..DiffOptions::default()
+        };
+        assert!(compare(Revision::new(&a), Revision::new(&b), &later).is_ok());
     }
 
     #[test]

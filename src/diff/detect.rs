@@ -49,14 +49,16 @@ pub fn diff(a: &Nrg, b: &Nrg, params: &DiffParams) -> ChangeSet {
 }
 
 /// [`diff`], or `None` rather than measure more than `max_pairs` pairs of
-/// spaces whose boxes meet (see [`MAX_MATCH_PAIRS`](super::MAX_MATCH_PAIRS)).
+/// spaces whose boxes meet (see [`MAX_MATCH_PAIRS`](super::MAX_MATCH_PAIRS))
+/// or go on past `deadline`.
 pub(crate) fn diff_within(
     a: &Nrg,
     b: &Nrg,
     params: &DiffParams,
     max_pairs: usize,
+    deadline: Option<std::time::Instant>,
 ) -> Option<ChangeSet> {
-    let ov = overlaps_within(a, b, max_pairs)?;
+    let ov = overlaps_within(a, b, max_pairs, deadline)?;
     Some(diff_with_overlaps(a, b, &ov, params))
 }
 
@@ -308,9 +310,14 @@ mod tests {
                 .collect();
             Nrg::new(spaces, vec![]).unwrap()
         };
-        let (a, b) = (strips(30, 0.0), strips(30, 0.05));
-        assert!(diff_within(&a, &b, &DiffParams::default(), 100).is_none());
-        let whole = diff_within(&a, &b, &DiffParams::default(), 30 * 30).unwrap();
+        let (a, b) = (strips(40, 0.0), strips(40, 0.05));
+        let params = DiffParams::default();
+        assert!(diff_within(&a, &b, &params, 100, None).is_none());
+        let whole = diff_within(&a, &b, &params, 40 * 40, None).unwrap();
+        // A deadline already past stops it at its first look at the clock
+        // (after 1 024 of the 1 600 pairs).
+        let past = Some(std::time::Instant::now());
+        assert!(diff_within(&a, &b, &params, 40 * 40, past).is_none());
         assert_eq!(whole, diff(&a, &b, &DiffParams::default()));
     }
 

@@ -47,6 +47,9 @@ pub enum DiffError {
         /// The bound on overlapping pairs.
         limit: usize,
     },
+    /// The comparison ran past its deadline (nothing is returned).
+    #[error("the comparison ran past its time bound")]
+    TimedOut,
     /// A parameter out of range.
     #[error("diff parameter `{name}` = {value} is out of range: {hint}")]
     BadParam {

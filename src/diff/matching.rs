@@ -83,7 +83,7 @@ pub fn match_spaces_within(
     max_pairs: usize,
 ) -> Option<Vec<SpaceMatch>> {
     Some(match_overlaps(
-        &overlaps_within(old, new, max_pairs)?,
+        &overlaps_within(old, new, max_pairs, None)?,
         params,
     ))
 }
@@ -91,7 +91,7 @@ pub fn match_spaces_within(
 /// Every overlapping pair of spaces of `old` and `new`, found through a
 /// grid of bounding boxes and measured exactly.
 pub fn overlaps(old: &Nrg, new: &Nrg) -> Overlaps {
-    overlaps_within(old, new, usize::MAX).unwrap_or_default()
+    overlaps_within(old, new, usize::MAX, None).unwrap_or_default()
 }
 
 /// Pairs of spaces (one of each model) whose boxes meet that matching
@@ -100,8 +100,17 @@ pub fn overlaps(old: &Nrg, new: &Nrg) -> Overlaps {
 /// 8). Imports and every diff stop there with a clear error.
 pub const MAX_MATCH_PAIRS: usize = 2_000_000;
 
-/// [`overlaps`], or `None` past `max_pairs` pairs whose boxes meet.
-pub(crate) fn overlaps_within(old: &Nrg, new: &Nrg, max_pairs: usize) -> Option<Overlaps> {
+/// Pairs measured between two looks at the clock.
+const DEADLINE_EVERY: usize = 1024;
+
+/// [`overlaps`], or `None` past `max_pairs` pairs whose boxes meet or past
+/// `deadline` (checked every [`DEADLINE_EVERY`] pairs).
+pub(crate) fn overlaps_within(
+    old: &Nrg,
+    new: &Nrg,
+    max_pairs: usize,
+    deadline: Option<std::time::Instant>,
+) -> Option<Overlaps> {
     let old_shapes: Vec<Shape> = old.spaces().iter().map(Shape::new).collect();
     let new_shapes: Vec<Shape> = new.spaces().iter().map(Shape::new).collect();
     let (old_sides, new_sides) = (door_sides(old), door_sides(new));
@@ -119,6 +128,11 @@ pub(crate) fn overlaps_within(old: &Nrg, new: &Nrg, max_pairs: usize) -> Option<
             }
             measured += 1;
             if measured > max_pairs {
+                return None;
+            }
+            if measured.is_multiple_of(DEADLINE_EVERY)
+                && deadline.is_some_and(|d| std::time::Instant::now() >= d)
+            {
                 return None;
             }
             // A door of one side in a non-door space of the other.

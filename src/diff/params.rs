@@ -191,4 +191,7 @@ pub struct DiffOptions {
     pub params: DiffParams,
     /// Tuning of the alignment.
     pub align_params: AlignParams,
+    /// When to give up ([`DiffError::TimedOut`](super::DiffError::TimedOut)):
+    /// a query's or a request's deadline. `None`: no time bound.
+    pub deadline: Option<std::time::Instant>,
 }

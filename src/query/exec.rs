@@ -50,6 +50,16 @@ impl Limits {
         self.deadline.is_some_and(|d| Instant::now() >= d)
     }
 
+    /// When a statement starting now must stop: its own time bound or the
+    /// deadline, whichever comes first.
+    pub fn statement_deadline(&self) -> Option<Instant> {
+        let own = Instant::now().checked_add(self.timeout);
+        match (own, self.deadline) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        }
+    }
+
     /// The time-bound error of these limits.
     pub fn timeout_error(&self) -> QueryError {
         QueryError::Timeout(self.timeout.as_millis())

@@ -164,8 +164,18 @@ impl<S: Source> Session<S> {
             Plan::Diff(from, to) => {
                 let current = self.current.as_ref().ok_or(QueryError::NoMapSelected)?;
                 let map = current.map.clone();
-                let done =
-                    compare_revisions(&self.source, &map, *from, *to, &DiffOptions::default())?;
+                let options = DiffOptions {
+                    deadline: self.limits.statement_deadline(),
+                    ..DiffOptions::default()
+                };
+                let done = compare_revisions(&self.source, &map, *from, *to, &options).map_err(
+                    |e| match e {
+                        QueryError::Diff(crate::diff::DiffError::TimedOut) => {
+                            self.limits.timeout_error()
+                        }
+                        other => other,
+                    },
+                )?;
                 Ok(diff_result(&done.comparison.changes))
             }
             data => {

@@ -237,11 +237,17 @@ impl From<QueryError> for ApiError {
 
 /// A failed comparison as an API error: no reliable alignment, or models
 /// too piled to match, is the caller's to fix (a 400 naming `parameter`,
-/// with `hint`), a busy store a
-/// 503, anything else ours. Shared by `GET /diff` and the viewer's
+/// with `hint`), a busy store or running past the time bound
+/// (`timeout_ms`) a 503, anything else ours. Shared by `GET /diff` and the viewer's
 /// `?diff=` (here, so that neither imports the other).
-pub fn comparing_error(e: QueryError, parameter: &'static str, hint: &str) -> ApiError {
+pub fn comparing_error(
+    e: QueryError,
+    parameter: &'static str,
+    hint: &str,
+    timeout_ms: u128,
+) -> ApiError {
     match e {
+        QueryError::Diff(DiffError::TimedOut) => ApiError::Timeout(timeout_ms),
         QueryError::Diff(
             e @ (DiffError::Unreliable { .. }
             | DiffError::TooFewWalls { .. }

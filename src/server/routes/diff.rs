@@ -69,6 +69,9 @@ pub async fn diff(
     let from = parse_rev("from", p.required("from")?)?;
     let to = parse_rev("to", p.required("to")?)?;
     let mode = align_mode(p.get("align"))?;
+    let timeout = state.config().timeout;
+    // The comparison stops when the client gets its 503.
+    let deadline = std::time::Instant::now().checked_add(timeout);
     state
         .blocking(move |ctx| {
             let a_seq = ctx
@@ -83,6 +86,7 @@ pub async fn diff(
                 .seq;
             let options = DiffOptions {
                 align: mode,
+                deadline,
                 ..DiffOptions::default()
             };
             let done = compare_revisions(
@@ -93,7 +97,12 @@ pub async fn diff(
                 &options,
             )
             .map_err(|e| {
-                comparing_error(e, "align", "align=never compares the revisions as they are")
+                comparing_error(
+                    e,
+                    "align",
+                    "align=never compares the revisions as they are",
+                    timeout.as_millis(),
+                )
             })?
             .comparison;
             let changes = done.changes;

@@ -133,13 +133,17 @@ pub async fn svg(
                         &map,
                         u64::from(a),
                         r.revision,
-                        &DiffOptions::default(),
+                        &DiffOptions {
+                            deadline,
+                            ..DiffOptions::default()
+                        },
                     )
                     .map_err(|e| {
                         comparing_error(
                             e,
                             "diff",
                             "GET /maps/{map}/diff?align=never compares them as they are",
+                            timeout.as_millis(),
                         )
                     })?;
                     Some(diff_overlay(
