@@ -113,6 +113,17 @@ pub enum QueryError {
         /// What would work.
         hint: &'static str,
     },
+    /// A LIKE pattern longer than any name can be.
+    #[error(
+        "LIKE pattern of {chars} characters: at most {limit} (no name is longer; issue 21: \
+         every row would be matched against it)"
+    )]
+    PatternTooLong {
+        /// Its length in characters.
+        chars: usize,
+        /// The bound ([`crate::model::MAX_NAME_CHARS`]).
+        limit: usize,
+    },
     /// The time bound ran out.
     #[error("query exceeded its time bound of {0} ms (raise the timeout or narrow the query)")]
     Timeout(u128),

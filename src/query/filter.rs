@@ -74,6 +74,14 @@ fn compare(field: &Field, left: &Value, op: CompareOp, right: &Value) -> Result<
                 "LIKE takes a \"pattern\" with % and _",
             ));
         };
+        // Matching is O(name × pattern) per row.
+        let chars = pattern.chars().count();
+        if chars > crate::model::MAX_NAME_CHARS {
+            return Err(QueryError::PatternTooLong {
+                chars,
+                limit: crate::model::MAX_NAME_CHARS,
+            });
+        }
         return Ok(match left {
             Value::Text(s) => like(s, pattern),
             _ => false,

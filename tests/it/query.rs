@@ -263,3 +263,19 @@ fn parse_errors_point_at_the_token() {
     );
     assert_eq!(e.span().unwrap().column, 12);
 }
+
+/// Issue 21: a LIKE pattern is matched against every row's name in
+/// O(name × pattern); one longer than any name is refused, naming its size.
+#[test]
+fn issue_21_a_like_pattern_longer_than_any_name_is_refused() {
+    let mut s = session(3);
+    let long = format!("FIND spaces WHERE name LIKE \"{}\";", "%a".repeat(600));
+    match one(&mut s, &long) {
+        Err(QueryError::PatternTooLong { chars, limit }) => {
+            assert_eq!((chars, limit), (1200, nrgdb::model::MAX_NAME_CHARS));
+        }
+        other => panic!("{other:?}"),
+    }
+    let fine = format!("FIND spaces WHERE name LIKE \"{}\";", "%".repeat(1000));
+    assert!(one(&mut s, &fine).is_ok());
+}
