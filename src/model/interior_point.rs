@@ -128,9 +128,6 @@ pub fn pole_of_inaccessibility(
     let cell = size
         .max(w.sqrt() * h.sqrt() / limit.sqrt())
         .max(w.max(h) / limit);
-    if !cell.is_finite() {
-        return Some((best.centre, best.distance.max(0.0)));
-    }
     let (nx, ny) = ((w / cell).ceil().max(1.0), (h / cell).ceil().max(1.0));
     let half = cell / 2.0;
     let mut queue = BinaryHeap::new();

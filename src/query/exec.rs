@@ -53,11 +53,7 @@ impl Limits {
     /// When a statement starting now must stop: its own time bound or the
     /// deadline, whichever comes first.
     pub fn statement_deadline(&self) -> Option<Instant> {
-        let own = Instant::now().checked_add(self.timeout);
-        match (own, self.deadline) {
-            (Some(a), Some(b)) => Some(a.min(b)),
-            (a, b) => a.or(b),
-        }
+        Budget::stop_at(self.timeout, self.deadline)
     }
 
     /// The time-bound error of these limits.

@@ -28,15 +28,21 @@ impl Budget {
         Budget::within(limit, None)
     }
 
+    /// When work bounded by `limit` from now and by `deadline` must stop:
+    /// the earlier of the two (`None`: never).
+    pub fn stop_at(limit: Duration, deadline: Option<Instant>) -> Option<Instant> {
+        let own = Instant::now().checked_add(limit);
+        match (own, deadline) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        }
+    }
+
     /// A bound of `limit` from now, cut short at `deadline` when that
     /// comes first (a request's deadline over several statements). A
     /// deadline already passed expires at the first check.
     pub fn within(limit: Duration, deadline: Option<Instant>) -> Budget {
-        let own = Instant::now().checked_add(limit);
-        let deadline = match (own, deadline) {
-            (Some(a), Some(b)) => Some(a.min(b)),
-            (a, b) => a.or(b),
-        };
+        let deadline = Budget::stop_at(limit, deadline);
         let budget = Budget {
             deadline,
             limit,

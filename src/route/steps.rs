@@ -309,20 +309,20 @@ pub(crate) fn describe(nrg: &Nrg, mesh: &Mesh, legs: &[Walk], profile: &Profile)
 /// past [`NAMED_IN_A_STEP`] the first two, the count and the last
 /// ("corridor 1, corridor 6, … and corridor 96 (20 spaces)").
 fn names(at: &[usize], label: &impl Fn(usize) -> String) -> String {
-    let said: Vec<String> = if at.len() <= NAMED_IN_A_STEP {
-        at.iter().map(|i| label(*i)).collect()
-    } else {
-        vec![label(at[0]), label(at[1]), "…".to_string()]
-    };
-    match (said.split_last(), at.len() <= NAMED_IN_A_STEP) {
-        (Some((last, rest)), true) if !rest.is_empty() => format!("{} and {last}", rest.join(", ")),
-        (Some((last, _)), true) => last.clone(),
-        (_, _) => format!(
-            "{} and {} ({} spaces)",
-            said.join(", "),
-            label(at[at.len() - 1]),
+    match at {
+        [] => String::new(),
+        [one] => label(*one),
+        [first, second, .., last] if at.len() > NAMED_IN_A_STEP => format!(
+            "{}, {}, … and {} ({} spaces)",
+            label(*first),
+            label(*second),
+            label(*last),
             at.len()
         ),
+        [rest @ .., last] => {
+            let rest: Vec<String> = rest.iter().map(|i| label(*i)).collect();
+            format!("{} and {}", rest.join(", "), label(*last))
+        }
     }
 }
 

@@ -14,7 +14,7 @@ use std::task::{Context, Poll};
 use std::time::Duration;
 
 use tokio::io::{AsyncRead, AsyncWrite, ReadBuf};
-use tokio::time::{Instant, Sleep, sleep_until};
+use tokio::time::{Sleep, sleep};
 
 /// `inner` whose writes fail after `limit` without progress.
 #[derive(Debug)]
@@ -43,9 +43,9 @@ impl<S> WriteTimeout<S> {
             return poll;
         }
         let limit = self.limit;
-        let timer = self
-            .timer
-            .get_or_insert_with(|| Box::pin(sleep_until(Instant::now() + limit)));
+        // `sleep`, not `now + limit`: a limit too far away to add (a
+        // user's --write-timeout-ms) must not panic.
+        let timer = self.timer.get_or_insert_with(|| Box::pin(sleep(limit)));
         match timer.as_mut().poll(cx) {
             Poll::Ready(()) => {
                 self.timer = None;
@@ -107,6 +107,7 @@ impl<S: AsyncWrite + Unpin> AsyncWrite for WriteTimeout<S> {
 mod tests {
     use super::*;
     use tokio::io::AsyncWriteExt;
+    use tokio::time::Instant;
 
     /// A duplex pipe whose reader never reads: the writer blocks once the
     /// 1 KiB buffer is full, and the wrapper gives up after its bound.

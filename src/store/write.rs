@@ -12,7 +12,7 @@ use rusqlite::{Connection, OptionalExtension, TransactionBehavior, params};
 
 use super::read::{REVISION_COLUMNS, latest, load_at, map_id, revision_info};
 use super::{ImportMeta, Imported, RevisionInfo, Store, StoreError, geometry_blob};
-use crate::diff::{MatchParams, match_spaces_within};
+use crate::diff::{MAX_MATCH_PAIRS, MatchParams, match_spaces_within};
 use crate::model::{Connection as Link, Nrg, Space, SpaceId};
 
 impl Store {
@@ -226,9 +226,6 @@ impl Store {
 /// added a revision meanwhile, before it gives up with
 /// [`StoreError::MapChanged`].
 pub const MAX_IMPORT_ATTEMPTS: usize = 3;
-
-pub use crate::diff::MAX_MATCH_PAIRS;
-
 /// An import matched against its parent revision, ready to be written
 /// (made without the write lock).
 struct PreparedImport {

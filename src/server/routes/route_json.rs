@@ -120,17 +120,12 @@ fn millimetres(m: f64) -> f64 {
 /// A point in metres, said to the millimetre (map cells are centimetres wide:
 /// more digits would be noise, and they are most of the answer's bytes).
 fn point_mm<S: serde::Serializer>(p: &Point, s: S) -> Result<S::Ok, S::Error> {
-    [millimetres(p[0]), millimetres(p[1])].serialize(s)
+    p.map(millimetres).serialize(s)
 }
 
 /// Points as [`point_mm`] says each.
 fn points_mm<S: serde::Serializer>(points: &&[Point], s: S) -> Result<S::Ok, S::Error> {
-    use serde::ser::SerializeSeq;
-    let mut seq = s.serialize_seq(Some(points.len()))?;
-    for p in points.iter() {
-        seq.serialize_element(&[millimetres(p[0]), millimetres(p[1])])?;
-    }
-    seq.end()
+    s.collect_seq(points.iter().map(|p| p.map(millimetres)))
 }
 
 fn tenths(s: f64) -> f64 {
