@@ -43,8 +43,7 @@ impl<S> WriteTimeout<S> {
             return poll;
         }
         let limit = self.limit;
-        // `sleep`, not `now + limit`: a limit too far away to add (a
-        // user's --write-timeout-ms) must not panic.
+        // `sleep` saturates a limit too far away to add to now.
         let timer = self.timer.get_or_insert_with(|| Box::pin(sleep(limit)));
         match timer.as_mut().poll(cx) {
             Poll::Ready(()) => {
