@@ -28,6 +28,7 @@ mod query_golden;
 mod query_props;
 mod route_building;
 mod route_fidelity;
+mod route_holes;
 mod route_props;
 
 mod diff_cli;

@@ -49,6 +49,36 @@ pub(crate) fn traversal_open(mesh: &Mesh, t: u32, e_in: usize, e_out: usize, r: 
     width >= 2.0 * r
 }
 
+/// Whether a disc of radius `r` passes along a channel of triangles: every
+/// edge crossed is [`edge_open`] and every triangle [`traversal_open`].
+pub(crate) fn channel_open(mesh: &Mesh, channel: &[u32], r: f64) -> bool {
+    if r <= 0.0 {
+        return true;
+    }
+    // The edge of `t` leading into `u`.
+    let edge_to = |t: u32, u: u32| {
+        mesh.tris[t as usize].across.iter().position(|a| match a {
+            Across::Inside(n) | Across::Gate { tri: n, .. } => *n == u,
+            Across::Wall => false,
+        })
+    };
+    let mut entry = 3;
+    for w in channel.windows(2) {
+        let (t, u) = (w[0], w[1]);
+        let Some(exit) = edge_to(t, u) else {
+            return false;
+        };
+        let tri = &mesh.tris[t as usize];
+        if !edge_open(mesh, tri.v[exit], tri.v[(exit + 1) % 3], r)
+            || !traversal_open(mesh, t, entry, exit, r)
+        {
+            return false;
+        }
+        entry = edge_to(u, t).unwrap_or(3);
+    }
+    true
+}
+
 /// A point the path bends around: a corner with the radius kept from it
 /// (0 when it is no obstacle) and the side it lies on (`left` of travel).
 #[derive(Debug, Clone, Copy)]

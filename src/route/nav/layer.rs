@@ -1,18 +1,21 @@
 //! What makes a route query fast, computed once per revision: inside every
 //! space, a shortest-path tree over its triangles from each crossing point
 //! ([`SAMPLES`] along each of its openings) and from its anchor, and the
-//! walked length (funnel) between every pair of them. A query then searches
-//! only the small graph of opening crossings.
+//! walked length (funnel) between every pair of them; in a space with
+//! holes, also the walks through the visibility graph of its corners where
+//! they are shorter ([`Exact`]). A query then searches only the small graph
+//! of opening crossings.
 
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 use std::sync::OnceLock;
 
-use super::clearance::{clear_walk, edge_open, traversal_open};
+use super::clearance::{channel_open, clear_walk, edge_open, traversal_open};
 use super::dead_ends::DeadEnds;
 use super::funnel::{dist, funnel, polyline_length};
 use super::hierarchy::Hierarchy;
 use super::mesh::{Across, Mesh, NONE};
+use super::visibility::{Reach, Sight, Spot, Visibility};
 use crate::model::{Nrg, Point};
 
 /// A shortest-path tree inside one space, from one source.
@@ -47,6 +50,110 @@ pub(crate) struct SpaceTable {
     /// Walked length between sources `i` and `j` at `i * n + j`
     /// (infinite when not connected inside the space).
     costs: Vec<f64>,
+    /// Exact walks when the space has holes.
+    pub exact: Option<Box<Exact>>,
+}
+
+/// The in-space walks of a space with holes that the trees get wrong: the
+/// visibility graph of its corners, and which pairs of sources it walks.
+#[derive(Debug, Clone)]
+pub(crate) struct Exact {
+    vis: Visibility,
+    /// The corners each source sees.
+    sights: Vec<Sight>,
+    /// Shortest lengths from each source to every corner.
+    reaches: Vec<Reach>,
+    /// For sources `i < j` at `i * n + j`: the last corner of the kept
+    /// visibility walk (NONE: straight), `None` when the tree's is kept.
+    via: Vec<Option<u32>>,
+}
+
+impl Exact {
+    /// From `start` (a point of the space) to each source: the walk
+    /// through the visibility graph where it is shorter than `lengths[j]`
+    /// (which it then lowers), as the reach and per-source last corner.
+    pub fn walks_from(
+        &self,
+        mesh: &Mesh,
+        sources: &[Spot],
+        start: Spot,
+        lengths: &mut [f64],
+        r: f64,
+    ) -> (Reach, Vec<Option<u32>>) {
+        let seen = self.vis.sight(mesh, start);
+        let reach = self.vis.reach(start, &seen);
+        let mut via = vec![None; sources.len()];
+        let mut channel = Vec::new();
+        for (j, to) in sources.iter().enumerate() {
+            let Some(than) = lengths.get_mut(j) else {
+                break;
+            };
+            let Some(seen_j) = self.sights.get(j) else {
+                break;
+            };
+            let (length, last) = self.vis.length_to(mesh, &reach, *to, seen_j);
+            if !length.is_finite() || length >= *than {
+                continue;
+            }
+            channel.clear();
+            if self
+                .vis
+                .channel_into(mesh, &reach, last, *to, &mut channel)
+                .is_none()
+                || !channel_open(mesh, &channel, r)
+            {
+                continue;
+            }
+            let walked = polyline_length(&walk(mesh, start.1, to.1, &channel, r));
+            if walked < *than {
+                *than = walked;
+                via[j] = Some(last);
+            }
+        }
+        (reach, via)
+    }
+
+    /// Appends the visibility walk's triangles from the start of `reach`
+    /// to `to`, its last corner `last`.
+    pub fn channel_into(
+        &self,
+        mesh: &Mesh,
+        reach: &Reach,
+        last: u32,
+        to: Spot,
+        out: &mut Vec<u32>,
+    ) -> Option<()> {
+        self.vis.channel_into(mesh, reach, last, to, out)
+    }
+
+    /// The shorter of `tree` (a channel from `from` to `to`, if any) and
+    /// the visibility walk between the two points.
+    pub fn better(
+        &self,
+        mesh: &Mesh,
+        from: Spot,
+        to: Spot,
+        tree: Option<Vec<u32>>,
+        r: f64,
+    ) -> Option<Vec<u32>> {
+        let walked = |c: &[u32]| polyline_length(&walk(mesh, from.1, to.1, c, r));
+        let tree_length = tree.as_deref().map_or(f64::INFINITY, walked);
+        let seen = self.vis.sight(mesh, from);
+        let reach = self.vis.reach(from, &seen);
+        let seen_to = self.vis.sight(mesh, to);
+        let (length, last) = self.vis.length_to(mesh, &reach, to, &seen_to);
+        if !length.is_finite() || length >= tree_length {
+            return tree;
+        }
+        let mut channel = Vec::new();
+        self.vis
+            .channel_into(mesh, &reach, last, to, &mut channel)?;
+        if channel_open(mesh, &channel, r) && walked(&channel) < tree_length {
+            Some(channel)
+        } else {
+            tree
+        }
+    }
 }
 
 impl SpaceTable {
@@ -71,6 +178,20 @@ impl SpaceTable {
         j: usize,
         out: &mut Vec<u32>,
     ) -> Option<()> {
+        let n = self.sources.len();
+        if let Some(x) = &self.exact
+            && let Some(Some(last)) = x.via.get(i.min(j) * n + i.max(j))
+        {
+            let (a, b) = (i.min(j), i.max(j));
+            let (reach, to) = (x.reaches.get(a)?, *self.sources.get(b)?);
+            if i < j {
+                return x.vis.channel_into(mesh, reach, *last, to, out);
+            }
+            let mut back = Vec::new();
+            x.vis.channel_into(mesh, reach, *last, to, &mut back)?;
+            out.extend(back.iter().rev());
+            return Some(());
+        }
         let target = self.sources.get(j)?.0;
         self.trees.get(i)?.walk_into(mesh, local, target, true, out)
     }
@@ -269,6 +390,7 @@ impl Layer {
             sources: Vec::new(),
             trees: Vec::new(),
             costs: Vec::new(),
+            exact: None,
         };
         let (Some(cell), Some(anchor)) =
             (self.tables.get(s as usize), self.anchors.get(s as usize))
@@ -377,9 +499,73 @@ fn table(
             }
         }
     }
+    let exact = if openings.len() <= EXACT_TABLE_OPENINGS {
+        Visibility::new(mesh, s)
+            .map(|vis| Box::new(exact(mesh, vis, &sources, &mut costs, r, reached)))
+    } else {
+        None
+    };
     SpaceTable {
         sources,
         trees,
         costs,
+        exact,
+    }
+}
+
+/// The visibility walks between the sources of a space with holes, kept
+/// (in `costs`) where shorter than the trees'.
+fn exact(
+    mesh: &Mesh,
+    vis: Visibility,
+    sources: &[Spot],
+    costs: &mut [f64],
+    r: f64,
+    reached: impl Fn(usize) -> bool,
+) -> Exact {
+    let n = sources.len();
+    let sights: Vec<Sight> = (0..n)
+        .map(|i| {
+            if reached(i) {
+                vis.sight(mesh, sources[i])
+            } else {
+                Vec::new()
+            }
+        })
+        .collect();
+    let reaches: Vec<Reach> = (0..n).map(|i| vis.reach(sources[i], &sights[i])).collect();
+    let mut via = vec![None; n * n];
+    let mut channel = Vec::new();
+    for i in 0..n {
+        for j in i + 1..n {
+            if !reached(i) || !reached(j) {
+                continue;
+            }
+            let (length, last) = vis.length_to(mesh, &reaches[i], sources[j], &sights[j]);
+            // The walk with clearance is never shorter than without.
+            if !length.is_finite() || length >= costs[i * n + j] {
+                continue;
+            }
+            channel.clear();
+            if vis
+                .channel_into(mesh, &reaches[i], last, sources[j], &mut channel)
+                .is_none()
+                || !channel_open(mesh, &channel, r)
+            {
+                continue;
+            }
+            let walked = polyline_length(&walk(mesh, sources[i].1, sources[j].1, &channel, r));
+            if walked < costs[i * n + j] {
+                costs[i * n + j] = walked;
+                costs[j * n + i] = walked;
+                via[i * n + j] = Some(last);
+            }
+        }
+    }
+    Exact {
+        vis,
+        sights,
+        reaches,
+        via,
     }
 }

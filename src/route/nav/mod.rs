@@ -11,7 +11,9 @@
 //! spaces are avoided or doors too narrow, by A* ([`search`]); then it is
 //! straightened through its channel of triangles by the funnel algorithm,
 //! so its length is the length actually walked, exact for the channel
-//! chosen. Clearance from
+//! chosen. Inside a space with holes a channel of triangles is not unique,
+//! so there the in-space walks come from the visibility graph of the
+//! space's corners ([`visibility`]) wherever they are shorter. Clearance from
 //! walls is kept by closing passages narrower than twice it and by wrapping
 //! the path around obstacle corners at that distance.
 //!
@@ -29,6 +31,7 @@ pub(crate) mod mesh;
 mod noding;
 mod openings;
 mod search;
+mod visibility;
 
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};

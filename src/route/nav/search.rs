@@ -9,6 +9,7 @@ use super::dead_ends::DeadEnds;
 use super::funnel::{dist, polyline_length};
 use super::layer::{Layer, SAMPLES, Tree, walk};
 use super::mesh::{Mesh, NONE};
+use super::visibility::Reach;
 use crate::model::Point;
 use crate::route::Budget;
 
@@ -32,8 +33,9 @@ pub(crate) struct End {
 enum EndKind {
     /// The anchor of its space: the precomputed table has it.
     Anchor,
-    /// Any other point: its own tree.
-    Point(Tree),
+    /// Any other point: its own tree and, in a space with holes, its
+    /// visibility walks where they are shorter.
+    Point(Tree, Option<(Reach, Vec<Option<u32>>)>),
 }
 
 impl End {
@@ -73,12 +75,16 @@ impl End {
                 to_crossings[j * SAMPLES + k] = polyline_length(&walk(mesh, at, p, &c, r));
             }
         }
+        let exact = table.exact.as_ref().map(|x| {
+            let n = to_crossings.len();
+            x.walks_from(mesh, &table.sources[..n], (tri, at), &mut to_crossings, r)
+        });
         End {
             space,
             at,
             tri,
             to_crossings,
-            kind: EndKind::Point(tree),
+            kind: EndKind::Point(tree, exact),
         }
     }
 
@@ -99,23 +105,45 @@ impl End {
                 let (i, j) = if outbound { (a, j) } else { (j, a) };
                 table.channel_into(mesh, &layer.local, i, j, out)
             }
-            EndKind::Point(tree) => {
-                let target = table.sources.get(j)?.0;
-                tree.walk_into(mesh, &layer.local, target, outbound, out)
+            EndKind::Point(tree, exact) => {
+                let target = *table.sources.get(j)?;
+                if let (Some(x), Some((reach, via))) = (&table.exact, exact)
+                    && let Some(Some(last)) = via.get(j)
+                {
+                    if outbound {
+                        return x.channel_into(mesh, reach, *last, target, out);
+                    }
+                    let mut back = Vec::new();
+                    x.channel_into(mesh, reach, *last, target, &mut back)?;
+                    out.extend(back.iter().rev());
+                    return Some(());
+                }
+                tree.walk_into(mesh, &layer.local, target.0, outbound, out)
             }
         }
     }
 
     /// Triangles from this end to `other` inside their common space.
     fn direct(&self, mesh: &Mesh, layer: &Layer, other: &End) -> Option<Vec<u32>> {
-        match (&self.kind, &other.kind) {
-            (EndKind::Point(tree), _) => {
-                let mut c = tree.walk(mesh, &layer.local, other.tri)?;
-                c.reverse();
-                Some(c)
+        let tree = match (&self.kind, &other.kind) {
+            (EndKind::Point(tree, _), _) => {
+                tree.walk(mesh, &layer.local, other.tri).map(|mut c| {
+                    c.reverse();
+                    c
+                })
             }
-            (_, EndKind::Point(tree)) => tree.walk(mesh, &layer.local, self.tri),
-            (EndKind::Anchor, EndKind::Anchor) => Some(vec![self.tri]),
+            (_, EndKind::Point(tree, _)) => tree.walk(mesh, &layer.local, self.tri),
+            (EndKind::Anchor, EndKind::Anchor) => return Some(vec![self.tri]),
+        };
+        match &layer.table(mesh, self.space).exact {
+            Some(x) => x.better(
+                mesh,
+                (self.tri, self.at),
+                (other.tri, other.at),
+                tree,
+                layer.clearance_m,
+            ),
+            None => tree,
         }
     }
 }
@@ -385,7 +413,7 @@ pub(crate) fn anchor_distances(
     let start_table = layer.table(mesh, from.space);
     out[from.space as usize] = match from.kind {
         EndKind::Anchor => 0.0,
-        EndKind::Point(_) => {
+        EndKind::Point(..) => {
             let anchor = End::anchor(mesh, layer, from.space);
             anchor
                 .and_then(|a| from.direct(mesh, layer, &a))
