@@ -21,8 +21,12 @@ pub(crate) struct Topology {
 ///
 /// Edges: door–region for each door and its two regions (RAG edges from a
 /// door to a third region are dropped); region–region RAG edges become
-/// `Open`, except where the two regions already share a door (the
-/// corridor–door–corridor cycles of Tab. 4); door–door edges are dropped.
+/// `Open`; door–door edges are dropped. Where the two regions also share a
+/// door, the paper drops the open edge (the corridor–door–corridor cycles
+/// of Tab. 4); here it is dropped only when they touch along fewer than
+/// `min_open_px` pixels (a sliver beside the door's jambs): a corridor cut
+/// in two that also meets itself through a door is still walked straight
+/// across the cut.
 /// A region with ≥ 2 navigable edges whose elongation (area / diameter²) is
 /// at least `min_elongation` is a corridor, every other region a room, so no
 /// corridor dangles.
@@ -32,6 +36,7 @@ pub(crate) fn topology(
     door_pairs: &[(u32, u32)],
     shape: &[(usize, f64)],
     min_elongation: f64,
+    min_open_px: usize,
 ) -> Topology {
     let rag = region_adjacency(labels);
     let mut edges: BTreeSet<(u32, u32, ConnectionKind)> = BTreeSet::new();
@@ -41,8 +46,9 @@ pub(crate) fn topology(
         edges.insert((a.min(d), a.max(d), ConnectionKind::Door));
         edges.insert((b.min(d), b.max(d), ConnectionKind::Door));
     }
-    for &(a, b) in rag.keys() {
-        if a <= regions && b <= regions && !door_joined.contains(&(a, b)) {
+    for (&(a, b), &contact) in &rag {
+        let sliver = door_joined.contains(&(a, b)) && contact < min_open_px;
+        if a <= regions && b <= regions && !sliver {
             edges.insert((a, b, ConnectionKind::Open));
         }
     }
@@ -85,7 +91,7 @@ mod tests {
             count: 5,
         };
         let shape = vec![(0, 1.0), (40, 2.0), (9, 3.0), (9, 3.0)];
-        let t = topology(&labels, 3, &[(1, 2), (1, 3)], &shape, 2.5);
+        let t = topology(&labels, 3, &[(1, 2), (1, 3)], &shape, 2.5, 3);
         assert_eq!(t.kinds[1], SpaceKind::Corridor);
         assert_eq!(t.kinds[2], SpaceKind::Room);
         assert_eq!(t.kinds[4], SpaceKind::Door);
@@ -96,5 +102,30 @@ mod tests {
         assert!(t.edges.contains(&(1, 4, ConnectionKind::Door)));
         assert!(t.edges.contains(&(2, 4, ConnectionKind::Door)));
         assert_eq!(t.edges.len(), 4);
+    }
+
+    #[test]
+    fn regions_sharing_a_door_and_a_wide_border_keep_both() {
+        // Corridor pieces 1 and 2 meet along 4 pixels and through door 3.
+        let labels = Labels {
+            width: 4,
+            height: 5,
+            data: vec![
+                1, 1, 2, 2, //
+                1, 1, 2, 2, //
+                1, 1, 2, 2, //
+                1, 1, 2, 2, //
+                1, 3, 3, 2,
+            ],
+            count: 3,
+        };
+        let shape = vec![(0, 1.0), (9, 2.0), (9, 2.0)];
+        let open = |min_open_px| {
+            topology(&labels, 2, &[(1, 2)], &shape, 2.5, min_open_px)
+                .edges
+                .contains(&(1, 2, ConnectionKind::Open))
+        };
+        assert!(open(4), "a border as wide as a door is walked across");
+        assert!(!open(5), "a narrower one is a sliver beside the door");
     }
 }
