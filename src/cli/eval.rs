@@ -34,11 +34,22 @@ pub struct Args {
     /// it matched a line, red when it matched none.
     #[arg(long, value_name = "FILE.png")]
     pub picture: Option<PathBuf>,
+    /// Judge a parameter's values leave-one-building-out over the maps
+    /// (`--loo door_width_max_m=1.2,1.5,1.8`): each building (a map and its
+    /// `_furnitures` copy) gets the value that scores best on the other
+    /// buildings, and its score under that value is reported beside the
+    /// score of every value (score: the mean F1 of rooms, doors and
+    /// connections).
+    #[arg(long, value_name = "KEY=V1,V2,...")]
+    pub loo: Option<String>,
 }
 
 /// Runs `nrgdb eval`.
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     let inputs = args.map.inputs()?;
+    if let Some(spec) = &args.loo {
+        return super::eval_loo::run(&args.map, spec, args.json, &inputs, out);
+    }
     match inputs.as_slice() {
         [map] if !args.map.maps.iter().any(|p| p.is_dir()) => {
             let gt = match &args.gt {
@@ -59,7 +70,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     }
 }
 
-fn gt_name(map: &Path) -> String {
+pub(crate) fn gt_name(map: &Path) -> String {
     let stem = map
         .file_stem()
         .map_or_else(String::new, |s| s.to_string_lossy().into_owned());
@@ -67,7 +78,7 @@ fn gt_name(map: &Path) -> String {
 }
 
 /// `<stem>_gt.png` beside the map, when it exists.
-fn sibling_gt(map: &Path) -> Option<PathBuf> {
+pub(crate) fn sibling_gt(map: &Path) -> Option<PathBuf> {
     let path = map.with_file_name(gt_name(map));
     path.is_file().then_some(path)
 }

@@ -141,7 +141,7 @@ pub fn is_yaml(path: &Path) -> bool {
 
 /// Applies `--set KEY=VALUE` overrides to `params` through its TOML form, so
 /// every field is reachable and unknown keys are refused by name.
-fn apply_sets(params: ExtractParams, sets: &[String]) -> miette::Result<ExtractParams> {
+pub(crate) fn apply_sets(params: ExtractParams, sets: &[String]) -> miette::Result<ExtractParams> {
     if sets.is_empty() {
         return Ok(params);
     }

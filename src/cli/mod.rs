@@ -16,6 +16,7 @@ use clap::{Parser, Subcommand};
 mod db;
 mod diff;
 pub mod eval;
+pub mod eval_loo;
 mod export;
 pub mod extract;
 mod import;

@@ -4,7 +4,8 @@
 //! `evaluation_segmentation.cpp` (BENCHMARK.md §1.1), door recall/precision
 //! against the GT's doorway lines, door widths against those lines'
 //! lengths, connection recall/precision, and a
-//! picture of where extraction and ground truth disagree; the free-space
+//! picture of where extraction and ground truth disagree, the
+//! leave-one-building-out judgement of a parameter's value; the free-space
 //! geodesic and the route-fidelity harness that measure routes against it.
 //! Uses grid, imaging, extract, sim and model; must not use store, server,
 //! the terminal, or (for the geodesic) route.
@@ -13,6 +14,7 @@ mod door_widths;
 mod error;
 mod geodesic;
 mod ground_truth;
+mod leave_one_out;
 mod metrics;
 mod picture;
 mod route_fidelity;
@@ -25,6 +27,7 @@ pub use geodesic::{
     free_space_geodesic_path,
 };
 pub use ground_truth::{DoorLine, GroundTruth, load_ground_truth};
+pub use leave_one_out::{HeldOut, building_of, leave_one_out, score, tuned_on_all};
 pub use metrics::{
     ConnectionPairs, Detection, DoorMatches, Evaluation, RoomScores, connection_pairs,
     connection_scores, door_centroids, door_matches, door_radius_px, door_scores, evaluate,
