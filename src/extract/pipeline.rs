@@ -290,7 +290,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         &door_pairs,
         &shape,
         params.corridor_min_elongation,
-        (params.door_width_min_m / res).ceil() as usize,
+        (params.door_width_max_m / res).ceil() as usize,
     );
     clock.lap("graph");
     let out = build(
