@@ -127,7 +127,10 @@ mod tests {
                 .edges
                 .contains(&(1, 2, ConnectionKind::Open))
         };
-        assert!(open(4), "a border at least as wide as the limit is walked across");
+        assert!(
+            open(4),
+            "a border at least as wide as the limit is walked across"
+        );
         assert!(!open(5), "a narrower one may be the rest of the doorway");
     }
 }

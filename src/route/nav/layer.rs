@@ -36,6 +36,11 @@ pub(crate) const SAMPLES: usize = 3;
 /// (tree distances) instead of one funnel per pair of crossing points.
 const EXACT_TABLE_OPENINGS: usize = 200;
 
+/// Most segment walks the sources of a space with holes may take to find
+/// the corners they see (sources × corners); past it the space keeps the
+/// trees' lengths (e.g. 40 openings and 500 corners).
+const MAX_SIGHT_WALKS: usize = 60_000;
+
 /// Where along an opening its crossing points lie (fractions of its free
 /// part).
 const SAMPLE_AT: [f64; SAMPLES] = [0.1, 0.5, 0.9];
@@ -499,12 +504,9 @@ fn table(
             }
         }
     }
-    let exact = if openings.len() <= EXACT_TABLE_OPENINGS {
-        Visibility::new(mesh, s)
-            .map(|vis| Box::new(exact(mesh, vis, &sources, &mut costs, r, reached)))
-    } else {
-        None
-    };
+    let exact = Visibility::new(mesh, s)
+        .filter(|vis| n * vis.corner_count() <= MAX_SIGHT_WALKS)
+        .map(|vis| Box::new(exact(mesh, vis, &sources, &mut costs, r, reached)));
     SpaceTable {
         sources,
         trees,
