@@ -340,12 +340,15 @@ impl Visibility {
             push(out, to.0);
             return true;
         }
+        let Some(end) = mesh.tris.get(to.0 as usize) else {
+            return false;
+        };
         // Both hold the point: they share the vertex it lies on.
         match vertex_at(mesh, t, to.1).or_else(|| {
             let shared = mesh.tris[t as usize].v;
             shared
                 .into_iter()
-                .filter(|v| mesh.tris[to.0 as usize].v.contains(v))
+                .filter(|v| end.v.contains(v))
                 .min_by(|a, b| dist(mesh.point(*a), to.1).total_cmp(&dist(mesh.point(*b), to.1)))
         }) {
             Some(v) => self.join(mesh, t, to.0, v, out),
