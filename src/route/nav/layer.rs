@@ -63,7 +63,8 @@ pub(crate) struct SpaceTable {
 /// visibility graph of its corners, and which pairs of sources it walks.
 #[derive(Debug, Clone)]
 pub(crate) struct Exact {
-    vis: Visibility,
+    /// The space's corners and which see each other.
+    pub vis: Visibility,
     /// The corners each source sees.
     sights: Vec<Sight>,
     /// Shortest lengths from each source to every corner.
@@ -116,19 +117,6 @@ impl Exact {
             }
         }
         (reach, via)
-    }
-
-    /// Appends the visibility walk's triangles from the start of `reach`
-    /// to `to`, its last corner `last`.
-    pub fn channel_into(
-        &self,
-        mesh: &Mesh,
-        reach: &Reach,
-        last: u32,
-        to: Spot,
-        out: &mut Vec<u32>,
-    ) -> Option<()> {
-        self.vis.channel_into(mesh, reach, last, to, out)
     }
 
     /// The shorter of `tree` (a channel from `from` to `to`, if any) and

@@ -111,10 +111,10 @@ impl End {
                     && let Some(Some(last)) = via.get(j)
                 {
                     if outbound {
-                        return x.channel_into(mesh, reach, *last, target, out);
+                        return x.vis.channel_into(mesh, reach, *last, target, out);
                     }
                     let mut back = Vec::new();
-                    x.channel_into(mesh, reach, *last, target, &mut back)?;
+                    x.vis.channel_into(mesh, reach, *last, target, &mut back)?;
                     out.extend(back.iter().rev());
                     return Some(());
                 }
