@@ -98,16 +98,18 @@ fn issue_18_a_route_round_a_hole_takes_the_shorter_side() {
 
 #[test]
 fn routes_from_points_round_a_hole_take_the_shorter_side() {
-    // From a point left of the hole, low down, to the other room; and
-    // between two points of the holed room on either side of the hole.
-    let p = [8.7, -2.9];
-    assert_geodesic(
-        Endpoint::Point(p),
-        Endpoint::Space(SpaceId(11)),
-        p,
-        [13.59, -2.565],
-    );
-    let (q, r) = ([8.7, -1.5], [12.9, -2.9]);
-    assert_geodesic(Endpoint::Point(q), Endpoint::Point(r), q, r);
-    assert_geodesic(Endpoint::Point(r), Endpoint::Point(q), r, q);
+    // From points left of the hole to the other room, and between points
+    // of the holed room on either side of the hole.
+    for (q, r) in [
+        ([8.74, -1.86], [12.9, -2.0]),
+        ([8.7, -2.0], [13.0, -1.9]),
+        ([8.7, -1.5], [12.9, -2.9]),
+    ] {
+        assert_geodesic(Endpoint::Point(q), Endpoint::Point(r), q, r);
+        assert_geodesic(Endpoint::Point(r), Endpoint::Point(q), r, q);
+    }
+    let room_11 = [13.59, -2.565];
+    for p in [[8.74, -1.86], [8.7, -2.0], [8.6, -1.3], [8.7, -2.9]] {
+        assert_geodesic(Endpoint::Point(p), Endpoint::Space(SpaceId(11)), p, room_11);
+    }
 }
