@@ -31,6 +31,7 @@ mod route_building;
 mod route_fidelity;
 mod route_holes;
 mod route_props;
+mod route_shared;
 
 mod diff_cli;
 mod diff_edits;
