@@ -86,32 +86,14 @@ impl Exact {
         lengths: &mut [f64],
         r: f64,
     ) -> (Reach, Vec<Option<u32>>) {
-        let seen = self.vis.sight(mesh, start);
-        let reach = self.vis.reach(start, &seen);
+        let reach = self.vis.reach(start, &self.vis.sight(mesh, start));
         let mut via = vec![None; sources.len()];
         let mut channel = Vec::new();
-        for (j, to) in sources.iter().enumerate() {
-            let Some(than) = lengths.get_mut(j) else {
-                break;
-            };
-            let Some(seen_j) = self.sights.get(j) else {
-                break;
-            };
-            let (length, last) = self.vis.length_to(mesh, &reach, *to, seen_j);
-            if !length.is_finite() || length >= *than {
-                continue;
-            }
-            channel.clear();
-            if self
-                .vis
-                .channel_into(mesh, &reach, last, *to, &mut channel)
-                .is_none()
-                || !channel_open(mesh, &channel, r)
+        let each = sources.iter().zip(lengths.iter_mut()).zip(&self.sights);
+        for (j, ((to, than), seen)) in each.enumerate() {
+            if let Some((walked, last)) =
+                shorter_walk(mesh, &self.vis, &reach, *to, seen, *than, r, &mut channel)
             {
-                continue;
-            }
-            let walked = polyline_length(&walk(mesh, start.1, to.1, &channel, r));
-            if walked < *than {
                 *than = walked;
                 via[j] = Some(last);
             }
@@ -129,24 +111,54 @@ impl Exact {
         tree: Option<Vec<u32>>,
         r: f64,
     ) -> Option<Vec<u32>> {
-        let walked = |c: &[u32]| polyline_length(&walk(mesh, from.1, to.1, c, r));
-        let tree_length = tree.as_deref().map_or(f64::INFINITY, walked);
-        let seen = self.vis.sight(mesh, from);
-        let reach = self.vis.reach(from, &seen);
-        let seen_to = self.vis.sight(mesh, to);
-        let (length, last) = self.vis.length_to(mesh, &reach, to, &seen_to);
-        if !length.is_finite() || length >= tree_length {
-            return tree;
-        }
+        let tree_length = tree.as_deref().map_or(f64::INFINITY, |c| {
+            polyline_length(&walk(mesh, from.1, to.1, c, r))
+        });
+        let reach = self.vis.reach(from, &self.vis.sight(mesh, from));
+        let seen = self.vis.sight(mesh, to);
         let mut channel = Vec::new();
-        self.vis
-            .channel_into(mesh, &reach, last, to, &mut channel)?;
-        if channel_open(mesh, &channel, r) && walked(&channel) < tree_length {
-            Some(channel)
-        } else {
-            tree
+        match shorter_walk(
+            mesh,
+            &self.vis,
+            &reach,
+            to,
+            &seen,
+            tree_length,
+            r,
+            &mut channel,
+        ) {
+            Some(_) => Some(channel),
+            None => tree,
         }
     }
+}
+
+/// The visibility walk from the start of `reach` to `to` (which sees
+/// `seen`) when, at clearance `r`, it is open and walks shorter than
+/// `than`: its length and last corner, its triangles left in `channel`.
+#[allow(clippy::too_many_arguments)]
+fn shorter_walk(
+    mesh: &Mesh,
+    vis: &Visibility,
+    reach: &Reach,
+    to: Spot,
+    seen: &Sight,
+    than: f64,
+    r: f64,
+    channel: &mut Vec<u32>,
+) -> Option<(f64, u32)> {
+    let (length, last) = vis.length_to(mesh, reach, to, seen);
+    // The walk with clearance is never shorter than without.
+    if !length.is_finite() || length >= than {
+        return None;
+    }
+    channel.clear();
+    vis.channel_into(mesh, reach, last, to, true, channel)?;
+    if !channel_open(mesh, channel, r) {
+        return None;
+    }
+    let walked = polyline_length(&walk(mesh, reach.start().1, to.1, channel, r));
+    (walked < than).then_some((walked, last))
 }
 
 impl SpaceTable {
@@ -177,13 +189,7 @@ impl SpaceTable {
         {
             let (a, b) = (i.min(j), i.max(j));
             let (reach, to) = (x.reaches.get(a)?, *self.sources.get(b)?);
-            if i < j {
-                return x.vis.channel_into(mesh, reach, *last, to, out);
-            }
-            let mut back = Vec::new();
-            x.vis.channel_into(mesh, reach, *last, to, &mut back)?;
-            out.extend(back.iter().rev());
-            return Some(());
+            return x.vis.channel_into(mesh, reach, *last, to, i < j, out);
         }
         let target = self.sources.get(j)?.0;
         self.trees.get(i)?.walk_into(mesh, local, target, true, out)
@@ -531,21 +537,11 @@ fn exact(
             if !reached(i) || !reached(j) {
                 continue;
             }
-            let (length, last) = vis.length_to(mesh, &reaches[i], sources[j], &sights[j]);
-            // The walk with clearance is never shorter than without.
-            if !length.is_finite() || length >= costs[i * n + j] {
-                continue;
-            }
-            channel.clear();
-            if vis
-                .channel_into(mesh, &reaches[i], last, sources[j], &mut channel)
-                .is_none()
-                || !channel_open(mesh, &channel, r)
+            let than = costs[i * n + j];
+            let (to, seen) = (sources[j], &sights[j]);
+            if let Some((walked, last)) =
+                shorter_walk(mesh, &vis, &reaches[i], to, seen, than, r, &mut channel)
             {
-                continue;
-            }
-            let walked = polyline_length(&walk(mesh, sources[i].1, sources[j].1, &channel, r));
-            if walked < costs[i * n + j] {
                 costs[i * n + j] = walked;
                 costs[j * n + i] = walked;
                 via[i * n + j] = Some(last);

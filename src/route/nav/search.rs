@@ -110,13 +110,9 @@ impl End {
                 if let (Some(x), Some((reach, via))) = (&table.exact, exact)
                     && let Some(Some(last)) = via.get(j)
                 {
-                    if outbound {
-                        return x.vis.channel_into(mesh, reach, *last, target, out);
-                    }
-                    let mut back = Vec::new();
-                    x.vis.channel_into(mesh, reach, *last, target, &mut back)?;
-                    out.extend(back.iter().rev());
-                    return Some(());
+                    return x
+                        .vis
+                        .channel_into(mesh, reach, *last, target, outbound, out);
                 }
                 tree.walk_into(mesh, &layer.local, target.0, outbound, out)
             }

@@ -69,6 +69,13 @@ fn orient(a: Point, b: Point, c: Point) -> f64 {
     orient2d(coord(a), coord(b), coord(c))
 }
 
+impl Reach {
+    /// The point it was grown from.
+    pub fn start(&self) -> Spot {
+        self.start
+    }
+}
+
 impl Visibility {
     /// The visibility graph of space `s`, or `None` when the space has no
     /// holes (its channels are unique) or too many corners.
@@ -237,15 +244,23 @@ impl Visibility {
     }
 
     /// Appends the triangles of the walk from the start of `reach` to `to`
-    /// whose last corner is `last` (from [`Visibility::length_to`]).
+    /// whose last corner is `last` (from [`Visibility::length_to`]) to
+    /// `out`: from the start when `outbound`, else from `to` back.
     pub fn channel_into(
         &self,
         mesh: &Mesh,
         reach: &Reach,
         last: u32,
         to: Spot,
+        outbound: bool,
         out: &mut Vec<u32>,
     ) -> Option<()> {
+        if !outbound {
+            let mut back = Vec::new();
+            self.channel_into(mesh, reach, last, to, true, &mut back)?;
+            out.extend(back.iter().rev());
+            return Some(());
+        }
         let mut chain = Vec::new();
         let mut c = last;
         while c != NONE {
@@ -508,10 +523,17 @@ mod tests {
         let reach = vis.reach(from, &vis.sight(mesh, from));
         let (length, last) = vis.length_to(mesh, &reach, to, &vis.sight(mesh, to));
         let mut channel = Vec::new();
-        vis.channel_into(mesh, &reach, last, to, &mut channel)
+        vis.channel_into(mesh, &reach, last, to, true, &mut channel)
             .unwrap();
         assert_eq!(channel.first(), Some(&from.0));
         assert_eq!(channel.last(), Some(&to.0));
+        let mut back = Vec::new();
+        vis.channel_into(mesh, &reach, last, to, false, &mut back)
+            .unwrap();
+        assert!(
+            back.iter().eq(channel.iter().rev()),
+            "inbound is the way back"
+        );
         let portals = super::super::layer::portals(mesh, &channel);
         assert_eq!(portals.len(), channel.len() - 1, "a channel of neighbours");
         let walked = super::super::funnel::funnel(a, b, &portals);
