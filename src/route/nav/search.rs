@@ -171,29 +171,39 @@ pub(crate) fn shortest_walk(
     banned: &[bool],
     budget: &Budget,
 ) -> Option<Walk> {
-    let direct = direct_length(mesh, layer, from, to);
+    let direct = Direct::new(mesh, layer, from, to);
     if !banned.contains(&true)
         && let Some(hierarchy) = layer.hierarchy(mesh)
     {
-        let found = hierarchy.shortest(&seeds(mesh, from), &seeds(mesh, to), direct, budget);
-        if budget.is_expired() || (found.is_none() && !direct.is_finite()) {
+        let (seeds_from, seeds_to) = (seeds(mesh, from), seeds(mesh, to));
+        let found = hierarchy.shortest(&seeds_from, &seeds_to, direct.length_m, budget);
+        if budget.is_expired() || (found.is_none() && !direct.length_m.is_finite()) {
             return None;
         }
         let chain = found.map(|(_, chain)| chain).unwrap_or_default();
-        return assemble(mesh, layer, from, to, &chain);
+        return assemble(mesh, layer, from, to, &chain, &direct);
     }
-    search_openings(mesh, layer, from, to, banned, budget, direct)
+    search_openings(mesh, layer, from, to, banned, budget, &direct)
 }
 
-/// The walked length between two ends in one space without leaving it
-/// (infinite for ends in different spaces).
-fn direct_length(mesh: &Mesh, layer: &Layer, from: &End, to: &End) -> f64 {
-    if from.space != to.space {
-        return f64::INFINITY;
+/// The walk between two ends inside the one space they share, found once
+/// per search: its triangles and walked length (none and infinite for ends
+/// in different spaces).
+pub(crate) struct Direct {
+    length_m: f64,
+    channel: Option<Vec<u32>>,
+}
+
+impl Direct {
+    fn new(mesh: &Mesh, layer: &Layer, from: &End, to: &End) -> Direct {
+        let channel = (from.space == to.space)
+            .then(|| from.direct(mesh, layer, to))
+            .flatten();
+        let length_m = channel.as_deref().map_or(f64::INFINITY, |c| {
+            polyline_length(&walk(mesh, from.at, to.at, c, layer.clearance_m))
+        });
+        Direct { length_m, channel }
     }
-    from.direct(mesh, layer, to).map_or(f64::INFINITY, |c| {
-        polyline_length(&walk(mesh, from.at, to.at, &c, layer.clearance_m))
-    })
 }
 
 /// [`shortest_walk`] by A* over the openings, beating `direct` (the
@@ -205,7 +215,7 @@ pub(crate) fn search_openings(
     to: &End,
     banned: &[bool],
     budget: &Budget,
-    direct: f64,
+    direct: &Direct,
 ) -> Option<Walk> {
     // Nodes are opening crossings: opening o, sample k is node
     // o * SAMPLES + k.
@@ -219,7 +229,7 @@ pub(crate) fn search_openings(
     let mut heap: BinaryHeap<Reverse<(u64, u32)>> = BinaryHeap::new();
     let point = |n: u32| layer.samples[n as usize / SAMPLES][n as usize % SAMPLES].1;
     let h = |n: u32| dist(point(n), to.at);
-    let mut best = direct;
+    let mut best = direct.length_m;
     // The goal's predecessor node (NONE: direct, inside one space).
     let mut best_pred = NONE;
     let scope = Scope::new(mesh, &layer.dead_ends, &[from.space, to.space]);
@@ -300,7 +310,7 @@ pub(crate) fn search_openings(
     }
     chain.reverse();
     let chain: Vec<(u32, u32)> = chain.iter().map(|n| (*n, pred[*n as usize].1)).collect();
-    assemble(mesh, layer, from, to, &chain)
+    assemble(mesh, layer, from, to, &chain, direct)
 }
 
 /// The crossings of an end's space with the walked length to each
@@ -328,6 +338,7 @@ fn assemble(
     from: &End,
     to: &End,
     chain: &[(u32, u32)],
+    direct: &Direct,
 ) -> Option<Walk> {
     // The source index of node `n` in space `s`'s table.
     let index_in = |s: u32, n: u32| {
@@ -336,7 +347,7 @@ fn assemble(
     };
     let mut tris: Vec<u32> = Vec::new();
     if chain.is_empty() {
-        tris = from.direct(mesh, layer, to)?;
+        tris = direct.channel.clone()?;
     } else {
         tris.reserve(8 * chain.len() + 16);
         let first = chain[0].0;
@@ -556,8 +567,8 @@ mod tests {
                     continue;
                 };
                 let fast = shortest_walk(mesh, layer, &from, &to, &none, &budget);
-                let direct = direct_length(mesh, layer, &from, &to);
-                let slow = search_openings(mesh, layer, &from, &to, &none, &budget, direct);
+                let direct = Direct::new(mesh, layer, &from, &to);
+                let slow = search_openings(mesh, layer, &from, &to, &none, &budget, &direct);
                 match (fast, slow) {
                     (Some(f), Some(s)) => {
                         assert!(
