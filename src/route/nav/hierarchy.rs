@@ -33,7 +33,7 @@ const MAX_OPENINGS: usize = 48;
 
 /// Weights of the contraction priority: shortcuts added, degree, depth
 /// (`contraction_statistics` below: on willow-full 158 nodes at zero
-/// clearance and 39 at 0.2 m, among the smallest of the weights tried; on
+/// clearance and 39 at 0.2 m, the smallest of the weights tried; on
 /// a 300-column demo building 56 and 50).
 const WEIGHTS: [i64; 3] = [1, 1, 2];
 
