@@ -48,6 +48,12 @@ pub struct Args {
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     let inputs = args.map.inputs()?;
     if let Some(spec) = &args.loo {
+        if args.gt.is_some() || args.picture.is_some() {
+            miette::bail!(
+                "--loo scores every map against the <stem>_gt.png beside it and draws nothing: \
+                 leave out --gt and --picture"
+            );
+        }
         return super::eval_loo::run(&args.map, spec, args.json, &inputs, out);
     }
     match inputs.as_slice() {

@@ -131,11 +131,16 @@ fn a_bad_spec_is_refused_by_name() {
     std::fs::create_dir(&maps).unwrap();
     write_building(tmp.path(), &maps, 1, "b1");
     write_building(tmp.path(), &maps, 2, "b2");
-    for (spec, says) in [
-        ("door_width_max_m=1.2", "between 2 and"),
-        ("no_such_knob=1,2", "no_such_knob"),
+    for (args, says) in [
+        (vec!["--loo", "door_width_max_m=1.2"], "between 2 and"),
+        (vec!["--loo", "no_such_knob=1,2"], "no_such_knob"),
+        (
+            vec!["--loo", "door_width_max_m=1,2", "--picture", "p.png"],
+            "--picture",
+        ),
     ] {
-        let out = nrgdb(tmp.path(), &["eval", "maps", "--loo", spec]);
+        let spec = args.join(" ");
+        let out = nrgdb(tmp.path(), &[&["eval", "maps"][..], &args].concat());
         assert!(!out.status.success(), "{spec}");
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(err.contains(says), "{spec}: {err}");
