@@ -30,7 +30,8 @@ impl GroundTruth {
     /// rooms are the 8-connected components of GT grey > 250 with more than
     /// 100 px; doorway lines are the 8-connected components (≥ 3 px) of
     /// pixels free in the map (≥ 250) but not in the GT (≤ 250) that touch
-    /// two rooms.
+    /// two rooms, components one pixel apart that touch the same rooms
+    /// counting as one line (a speck of noise on a doorway).
     pub fn from_grey(width: u32, height: u32, gt: &[u8], map: &[u8]) -> GroundTruth {
         let white = Mask::from_raw(
             width,
@@ -99,43 +100,84 @@ impl GroundTruth {
         GroundTruth::with_lines(rooms, &line_mask)
     }
 
+    /// Doorway lines from `line_mask`: its 8-connected components that
+    /// touch two rooms, where components touching the same rooms with only
+    /// a one-pixel gap between them are one line (a speck of map noise on
+    /// a drawn doorway line does not make two doorways).
     fn with_lines(rooms: Labels, line_mask: &Mask) -> GroundTruth {
         let (width, height) = (rooms.width, rooms.height);
         let lines = label_components(line_mask, true);
-        let mut pixels: Vec<Vec<u32>> = vec![Vec::new(); lines.count as usize + 1];
+        let count = lines.count as usize + 1;
+        let mut pixels: Vec<Vec<u32>> = vec![Vec::new(); count];
         for (i, &l) in lines.data.iter().enumerate() {
             if l != 0 {
                 pixels[l as usize].push(i as u32);
             }
         }
-        let (w, h) = (width as i64, height as i64);
-        let mut doors = Vec::new();
-        for px in pixels.into_iter().skip(1) {
-            if px.len() < 3 {
+        let (w, h) = (i64::from(width), i64::from(height));
+        // Pixels within `r` (Chebyshev) of pixel `p`, inside the image.
+        let around = |p: u32, r: i64| {
+            let (x, y) = (i64::from(p) % w, i64::from(p) / w);
+            (-r..=r).flat_map(move |dy| {
+                (-r..=r).filter_map(move |dx| {
+                    let (nx, ny) = (x + dx, y + dy);
+                    (nx >= 0 && ny >= 0 && nx < w && ny < h).then_some((ny * w + nx) as usize)
+                })
+            })
+        };
+        let touched: Vec<Vec<u32>> = pixels
+            .iter()
+            .map(|px| {
+                let mut t: Vec<u32> = px
+                    .iter()
+                    .flat_map(|&p| around(p, 1))
+                    .map(|n| rooms.data[n])
+                    .filter(|&r| r != 0)
+                    .collect();
+                t.sort_unstable();
+                t.dedup();
+                t
+            })
+            .collect();
+        // Union of components one pixel apart that touch the same rooms.
+        let mut parent: Vec<usize> = (0..count).collect();
+        fn root(parent: &mut [usize], mut a: usize) -> usize {
+            while parent[a] != a {
+                parent[a] = parent[parent[a]];
+                a = parent[a];
+            }
+            a
+        }
+        for a in 1..count {
+            if touched[a].len() < 2 {
                 continue;
             }
-            let mut touched: Vec<u32> = Vec::new();
-            for &p in &px {
-                let (x, y) = (i64::from(p) % w, i64::from(p) / w);
-                for dy in -1..=1 {
-                    for dx in -1..=1 {
-                        let (nx, ny) = (x + dx, y + dy);
-                        if nx >= 0 && ny >= 0 && nx < w && ny < h {
-                            let r = rooms.data[(ny * w + nx) as usize];
-                            if r != 0 && !touched.contains(&r) {
-                                touched.push(r);
-                            }
-                        }
+            for &p in &pixels[a] {
+                for n in around(p, 2) {
+                    let b = lines.data[n] as usize;
+                    if b != 0 && b != a && touched[b] == touched[a] {
+                        let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
+                        parent[ra.max(rb)] = ra.min(rb);
                     }
                 }
             }
-            if touched.len() >= 2 {
-                touched.sort_unstable();
-                doors.push(DoorLine {
-                    pixels: px,
-                    rooms: touched,
-                });
+        }
+        let mut merged: Vec<Vec<u32>> = vec![Vec::new(); count];
+        for a in 1..count {
+            let r = root(&mut parent, a);
+            let px = std::mem::take(&mut pixels[a]);
+            merged[r].extend(px);
+        }
+        let mut doors = Vec::new();
+        for (a, mut px) in merged.into_iter().enumerate().skip(1) {
+            if px.len() < 3 || touched[a].len() < 2 {
+                continue;
             }
+            px.sort_unstable();
+            doors.push(DoorLine {
+                pixels: px,
+                rooms: touched[a].clone(),
+            });
         }
         GroundTruth { rooms, doors }
     }
@@ -209,6 +251,38 @@ mod tests {
         assert_eq!(g.doors.len(), 1);
         assert_eq!(g.doors[0].rooms, vec![1, 2]);
         assert_eq!(g.doors[0].pixels.len(), 3);
+    }
+
+    /// Two 12x12 rooms and a wall with a doorway from row 2 to row 10;
+    /// the GT closes it with a black line; `specks` rows of the doorway are
+    /// occupied in the map.
+    fn doorway_with_specks(specks: &[u32]) -> GroundTruth {
+        let (w, h) = (27u32, 14u32);
+        let mut map = vec![0u8; (w * h) as usize];
+        for y in 1..13 {
+            for x in 1..26 {
+                if x != 13 || ((2..11).contains(&y) && !specks.contains(&y)) {
+                    map[(y * w + x) as usize] = 255;
+                }
+            }
+        }
+        let mut gt = map.clone();
+        for y in 2..11 {
+            gt[(y * w + 13) as usize] = 0;
+        }
+        GroundTruth::from_grey(w, h, &gt, &map)
+    }
+
+    #[test]
+    fn a_speck_of_noise_does_not_split_a_doorway_line() {
+        // One occupied pixel in the doorway: still one line, 8 pixels.
+        let g = doorway_with_specks(&[6]);
+        assert_eq!(g.doors.len(), 1);
+        assert_eq!(g.doors[0].pixels.len(), 8);
+        assert_eq!(g.doors[0].rooms, vec![1, 2]);
+        // Two occupied pixels in a row are a wall piece: two doorways.
+        let g = doorway_with_specks(&[5, 6]);
+        assert_eq!(g.doors.len(), 2);
     }
 
     #[test]
