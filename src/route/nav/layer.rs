@@ -194,8 +194,14 @@ impl SpaceTable {
             let (reach, to) = (x.reaches.get(a)?, *self.sources.get(b)?);
             return x.vis.channel_into(mesh, reach, *last, to, i < j, out);
         }
-        let target = self.sources.get(j)?.0;
-        self.trees.get(i)?.walk_into(mesh, local, target, true, out)
+        // The channel the table measured: from the lower source's tree
+        // to the higher source (trees are not symmetric: the higher one's
+        // tree may pass a hole on the other side).
+        let (a, b) = (i.min(j), i.max(j));
+        let target = self.sources.get(b)?.0;
+        self.trees
+            .get(a)?
+            .walk_into(mesh, local, target, i == a, out)
     }
 }
 
