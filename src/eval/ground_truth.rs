@@ -163,10 +163,9 @@ impl GroundTruth {
             }
         }
         let mut merged: Vec<Vec<u32>> = vec![Vec::new(); count];
-        for a in 1..count {
+        for (a, px) in pixels.iter_mut().enumerate().skip(1) {
             let r = root(&mut parent, a);
-            let px = std::mem::take(&mut pixels[a]);
-            merged[r].extend(px);
+            merged[r].append(px);
         }
         let mut doors = Vec::new();
         for (a, mut px) in merged.into_iter().enumerate().skip(1) {
