@@ -6,15 +6,15 @@
 
 use std::collections::HashMap;
 
-use rstar::RTree;
-use rstar::primitives::{GeomWithData, Rectangle};
+use rustc_hash::FxHashMap;
+
 use spade::handles::FixedVertexHandle;
 use spade::{ConstrainedDelaunayTriangulation, Point2, PositionInTriangulation, Triangulation};
 
-use super::containment::Containment;
 use super::gate::GateView;
 use super::noding;
 use super::openings::Openings;
+use super::regions::{self, Ring};
 use crate::model::{Nrg, Point, Space, SpaceId};
 
 pub(crate) use super::gate::{Gate, NONE};
@@ -60,22 +60,6 @@ pub(crate) struct Mesh {
     cdt: ConstrainedDelaunayTriangulation<Point2<f64>>,
 }
 
-type Envelope = GeomWithData<Rectangle<[f64; 2]>, usize>;
-
-fn envelope(space: &Space, i: usize) -> Option<Envelope> {
-    if space.polygon.is_empty() {
-        return None;
-    }
-    let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
-    for p in &space.polygon {
-        for k in 0..2 {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    Some(GeomWithData::new(Rectangle::from_corners(lo, hi), i))
-}
-
 /// Vertices are snapped to this grid (per metre): a micrometre.
 const SNAP_PER_M: f64 = 1.0e6;
 
@@ -106,77 +90,17 @@ impl Mesh {
     /// with coordinates beyond ±10 000 km are left out (they cannot be
     /// walked).
     pub fn new(nrg: &Nrg) -> Mesh {
-        let spaces = nrg.spaces();
-        let mut vertex_of: HashMap<[u64; 2], u32> = HashMap::new();
-        let mut points: Vec<Point> = Vec::new();
-        let mut edges: Vec<[usize; 2]> = Vec::new();
-        for space in spaces {
-            if space.polygon.len() < 3 || !in_range(space) {
-                continue;
-            }
-            for ring in std::iter::once(&space.polygon).chain(&space.holes) {
-                let ids: Vec<u32> = ring
-                    .iter()
-                    .map(|p| {
-                        // Points closer than a micrometre are one vertex
-                        // (sums like 14.6 + 0.1 differ in the last bit).
-                        let snapped = snap(*p);
-                        let key = snapped.map(f64::to_bits);
-                        *vertex_of.entry(key).or_insert_with(|| {
-                            points.push(snapped);
-                            (points.len() - 1) as u32
-                        })
-                    })
-                    .collect();
-                for i in 0..ids.len() {
-                    let (a, b) = (ids[i], ids[(i + 1) % ids.len()]);
-                    if a != b {
-                        edges.push([a.min(b) as usize, a.max(b) as usize]);
-                    }
-                }
-            }
-        }
-        edges.sort_unstable();
-        edges.dedup();
-        let mut conflicts = Vec::new();
-        let mut cdt = triangulate(&points, edges.clone(), &mut conflicts);
-        if !conflicts.is_empty() {
-            // Edges crossing others (overlapping or touching rings of an
-            // imported model, a repaired overlap): node them ourselves and
-            // triangulate again (see `noding`).
-            let noded = noding::node(
-                &edges,
-                &mut noding::Vertices {
-                    points: &mut points,
-                    index: &mut vertex_of,
-                    snap,
-                },
-            );
-            conflicts.clear();
-            cdt = triangulate(&points, noded, &mut conflicts);
-            // What noding could not resolve (a crossing its snapping made)
-            // is added where it does not cross; never split by spade,
-            // which can panic there.
-            for [a, b] in conflicts {
-                if a < cdt.num_vertices() && b < cdt.num_vertices() {
-                    cdt.try_add_constraint(
-                        FixedVertexHandle::from_index(a),
-                        FixedVertexHandle::from_index(b),
-                    );
-                }
-            }
-        }
-        let points: Vec<Point> = cdt
-            .vertices()
-            .map(|v| [v.position().x, v.position().y])
-            .collect();
-        Mesh::tag(nrg, points, cdt)
+        let (points, cdt, rings) = laid(nrg);
+        let face_space = regions::face_spaces(nrg.spaces(), &cdt, &points, rings.as_deref());
+        Mesh::tag(nrg, points, cdt, face_space)
     }
 
+    /// The mesh of `cdt` whose faces lie in the spaces `face_space` says.
     fn tag(
         nrg: &Nrg,
         points: Vec<Point>,
         cdt: ConstrainedDelaunayTriangulation<Point2<f64>>,
+        face_space: Vec<u32>,
     ) -> Mesh {
         let spaces = nrg.spaces();
         let space_ids: Vec<SpaceId> = spaces.iter().map(|s| s.id).collect();
@@ -185,54 +109,7 @@ impl Mesh {
             .enumerate()
             .map(|(i, id)| (*id, i as u32))
             .collect();
-        let envelopes: RTree<Envelope> = RTree::bulk_load(
-            spaces
-                .iter()
-                .enumerate()
-                .filter_map(|(i, s)| envelope(s, i))
-                .collect(),
-        );
-        // Faces in regions bounded by constraint edges: one point-in-polygon
-        // test per region (indexed: a zigzag outline makes thousands).
-        let containment = Containment::new(spaces);
-        let nfaces = cdt.all_faces().len();
-        let mut face_space = vec![NONE; nfaces];
-        let mut seen = vec![false; nfaces];
-        for face in cdt.inner_faces() {
-            let f = face.fix().index();
-            if seen[f] {
-                continue;
-            }
-            let [a, b, c] = face.positions();
-            let centre = [(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0];
-            let space = envelopes
-                .locate_all_at_point(&centre)
-                .map(|e| e.data)
-                .filter(|&i| containment.contains(i, centre))
-                .min_by(|&i, &j| {
-                    spaces[i]
-                        .area_m2
-                        .total_cmp(&spaces[j].area_m2)
-                        .then(spaces[i].id.cmp(&spaces[j].id))
-                })
-                .map_or(NONE, |i| i as u32);
-            let mut stack = vec![face.fix()];
-            seen[f] = true;
-            while let Some(h) = stack.pop() {
-                face_space[h.index()] = space;
-                for e in cdt.face(h).adjacent_edges() {
-                    if e.is_constraint_edge() {
-                        continue;
-                    }
-                    if let Some(g) = e.rev().face().as_inner()
-                        && !seen[g.fix().index()]
-                    {
-                        seen[g.fix().index()] = true;
-                        stack.push(g.fix());
-                    }
-                }
-            }
-        }
+        let nfaces = face_space.len();
         let mut face_tri = vec![NONE; nfaces];
         let mut tris = Vec::new();
         for face in cdt.inner_faces() {
@@ -252,7 +129,8 @@ impl Mesh {
                 .is_some_and(|c| c.kind.is_navigable())
         };
         let mut gates: Vec<Gate> = Vec::new();
-        let mut gate_of_edge: HashMap<usize, u32> = HashMap::new();
+        // The gate of each undirected edge (by spade's index), NONE if none.
+        let mut gate_of_edge = vec![NONE; cdt.num_undirected_edges()];
         let mut obstacle = vec![false; points.len()];
         for face in cdt.inner_faces() {
             let t = face_tri[face.fix().index()];
@@ -283,15 +161,16 @@ impl Mesh {
                     if os == space {
                         Across::Inside(other)
                     } else if navigable(space, os) {
-                        let key = e.as_undirected().fix().index();
-                        let gate = *gate_of_edge.entry(key).or_insert_with(|| {
+                        let slot = &mut gate_of_edge[e.as_undirected().fix().index()];
+                        if *slot == NONE {
                             let [p, q] = e.vertices().map(|v| v.fix().index() as u32);
                             gates.push(Gate {
                                 ends: [p, q],
                                 sides: [(t, space), (other, os)],
                             });
-                            (gates.len() - 1) as u32
-                        });
+                            *slot = (gates.len() - 1) as u32;
+                        }
+                        let gate = *slot;
                         Across::Gate { tri: other, gate }
                     } else {
                         Across::Wall
@@ -407,6 +286,100 @@ impl Mesh {
     pub fn space(&self, id: SpaceId) -> Option<u32> {
         self.space_index.get(&id).copied()
     }
+}
+
+/// The triangulation of a model's rings: its vertices, and the rings as
+/// laid into it when spade took every ring edge as it is (no crossings).
+type Laid = (
+    Vec<Point>,
+    ConstrainedDelaunayTriangulation<Point2<f64>>,
+    Option<Vec<Ring>>,
+);
+
+/// Triangulates the rings of `nrg`'s spaces (see [`Laid`]). Spaces with
+/// fewer than three points or coordinates out of range are left out.
+pub(super) fn laid(nrg: &Nrg) -> Laid {
+    let spaces = nrg.spaces();
+    // Fx: ring vertices are hashed once each (10 000 on willow-full), and
+    // SipHash cost a millisecond of the layer's build there.
+    let mut vertex_of: FxHashMap<[u64; 2], u32> = FxHashMap::default();
+    let mut points: Vec<Point> = Vec::new();
+    let mut edges: Vec<[usize; 2]> = Vec::new();
+    let mut rings: Vec<Ring> = Vec::new();
+    for (s, space) in spaces.iter().enumerate() {
+        if space.polygon.len() < 3 || !in_range(space) {
+            continue;
+        }
+        for (r, ring) in std::iter::once(&space.polygon)
+            .chain(&space.holes)
+            .enumerate()
+        {
+            let mut ids: Vec<u32> = ring
+                .iter()
+                .map(|p| {
+                    // Points closer than a micrometre are one vertex
+                    // (sums like 14.6 + 0.1 differ in the last bit).
+                    let snapped = snap(*p);
+                    let key = snapped.map(f64::to_bits);
+                    *vertex_of.entry(key).or_insert_with(|| {
+                        points.push(snapped);
+                        (points.len() - 1) as u32
+                    })
+                })
+                .collect();
+            for i in 0..ids.len() {
+                let (a, b) = (ids[i], ids[(i + 1) % ids.len()]);
+                if a != b {
+                    edges.push([a.min(b) as usize, a.max(b) as usize]);
+                }
+            }
+            ids.dedup();
+            while ids.len() > 1 && ids.first() == ids.last() {
+                ids.pop();
+            }
+            rings.push(Ring {
+                space: s as u32,
+                hole: r > 0,
+                vertices: ids,
+            });
+        }
+    }
+    edges.sort_unstable();
+    edges.dedup();
+    let mut conflicts = Vec::new();
+    let mut cdt = triangulate(&points, edges.clone(), &mut conflicts);
+    let clean = conflicts.is_empty();
+    if !clean {
+        // Edges crossing others (overlapping or touching rings of an
+        // imported model, a repaired overlap): node them ourselves and
+        // triangulate again (see `noding`).
+        let noded = noding::node(
+            &edges,
+            &mut noding::Vertices {
+                points: &mut points,
+                index: &mut vertex_of,
+                snap,
+            },
+        );
+        conflicts.clear();
+        cdt = triangulate(&points, noded, &mut conflicts);
+        // What noding could not resolve (a crossing its snapping made)
+        // is added where it does not cross; never split by spade,
+        // which can panic there.
+        for [a, b] in conflicts {
+            if a < cdt.num_vertices() && b < cdt.num_vertices() {
+                cdt.try_add_constraint(
+                    FixedVertexHandle::from_index(a),
+                    FixedVertexHandle::from_index(b),
+                );
+            }
+        }
+    }
+    let points: Vec<Point> = cdt
+        .vertices()
+        .map(|v| [v.position().x, v.position().y])
+        .collect();
+    (points, cdt, clean.then_some(rings))
 }
 
 fn in_range(space: &Space) -> bool {

@@ -30,6 +30,7 @@ pub(crate) mod layer;
 pub(crate) mod mesh;
 mod noding;
 mod openings;
+mod regions;
 mod search;
 mod visibility;
 

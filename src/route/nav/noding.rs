@@ -10,7 +10,7 @@
 //! Only run when the bulk load reports conflicts; a model whose rings meet
 //! only at shared vertices (every extraction) never pays for it.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{AABB, RTree};
@@ -26,7 +26,7 @@ type Segment = GeomWithData<Rectangle<[f64; 2]>, usize>;
 /// The vertex table: points and the index of each snapped position.
 pub(super) struct Vertices<'a> {
     pub points: &'a mut Vec<Point>,
-    pub index: &'a mut HashMap<[u64; 2], u32>,
+    pub index: &'a mut FxHashMap<[u64; 2], u32>,
     pub snap: fn(Point) -> Point,
 }
 
@@ -167,7 +167,7 @@ mod tests {
 
     fn run(points: Vec<Point>, edges: &[[usize; 2]]) -> (Vec<Point>, Vec<[usize; 2]>) {
         let mut points = points;
-        let mut index: HashMap<[u64; 2], u32> = points
+        let mut index: FxHashMap<[u64; 2], u32> = points
             .iter()
             .enumerate()
             .map(|(i, p)| (p.map(f64::to_bits), i as u32))
