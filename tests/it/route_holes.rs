@@ -11,6 +11,16 @@ use nrgdb::model::Point;
 use nrgdb::model::{Connection, ConnectionKind, Nrg, Space, SpaceId, SpaceKind};
 use nrgdb::route::{Budget, Endpoint, NavMesh, Profile, RouteRequest, shortest_route};
 
+/// A door connection between spaces `a` and `b`.
+fn link(a: u32, b: u32) -> Connection {
+    Connection {
+        a: SpaceId(a),
+        b: SpaceId(b),
+        kind: ConnectionKind::Door,
+        length_m: 1.0,
+    }
+}
+
 /// Room 9 (with a 3.15 m × 1.52 m hole) – door 13 – room 11.
 fn rooms_round_a_hole() -> Nrg {
     let mut r9 = Space::new(
@@ -53,12 +63,6 @@ fn rooms_round_a_hole() -> Nrg {
             [13.29, -0.1],
         ],
     );
-    let link = |a, b| Connection {
-        a: SpaceId(a),
-        b: SpaceId(b),
-        kind: ConnectionKind::Door,
-        length_m: 1.0,
-    };
     Nrg::new(vec![r9, r11, door], vec![link(9, 13), link(11, 13)]).unwrap()
 }
 
@@ -166,12 +170,6 @@ fn anchors_beside_holes() -> Nrg {
         [9.26, -4.16],
         [6.91, -4.16],
     ]];
-    let link = |a, b| Connection {
-        a: SpaceId(a),
-        b: SpaceId(b),
-        kind: ConnectionKind::Door,
-        length_m: 1.0,
-    };
     Nrg::new(vec![r6, door, r8], vec![link(6, 12), link(8, 12)]).unwrap()
 }
 
