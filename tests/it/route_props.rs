@@ -24,7 +24,7 @@ fn exact(from: SpaceId, to: SpaceId) -> RouteRequest {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(8))]
+    #![proptest_config(ProptestConfig::with_cases(24))]
 
     /// The walked length at zero clearance is the free-space geodesic: an
     /// independent raster search (`eval::free_space_geodesic`, 2.5 cm
@@ -44,7 +44,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(48))]
+    #![proptest_config(ProptestConfig::with_cases(128))]
 
     #[test]
     fn routes_stay_inside_their_spaces(b in building(), i in 0usize..64, j in 0usize..64) {
