@@ -327,15 +327,16 @@ pub(super) fn laid(nrg: &Nrg) -> Laid {
                     })
                 })
                 .collect();
-            for i in 0..ids.len() {
-                let (a, b) = (ids[i], ids[(i + 1) % ids.len()]);
-                if a != b {
-                    edges.push([a.min(b) as usize, a.max(b) as usize]);
-                }
-            }
+            // Vertices that snapped together are one.
             ids.dedup();
             while ids.len() > 1 && ids.first() == ids.last() {
                 ids.pop();
+            }
+            if ids.len() > 1 {
+                for i in 0..ids.len() {
+                    let (a, b) = (ids[i], ids[(i + 1) % ids.len()]);
+                    edges.push([a.min(b) as usize, a.max(b) as usize]);
+                }
             }
             rings.push(Ring {
                 space: s as u32,

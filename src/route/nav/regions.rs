@@ -20,7 +20,7 @@ use spade::{ConstrainedDelaunayTriangulation, Point2, Triangulation};
 
 use super::containment::Containment;
 use super::gate::NONE;
-use crate::model::{Point, Space};
+use crate::model::{Point, Space, polygon_area};
 
 /// A claim made by two different spaces.
 const CLASH: u32 = u32::MAX - 1;
@@ -129,16 +129,12 @@ fn claims(
             *slot = true;
         }
         v.iter().for_each(|&j| visited[j as usize] = false);
-        let area2: f64 = (0..v.len())
-            .map(|k| {
-                let (p, q) = (points[v[k] as usize], points[v[(k + 1) % v.len()] as usize]);
-                p[0] * q[1] - q[0] * p[1]
-            })
-            .sum();
-        if area2 == 0.0 || !area2.is_finite() {
+        let ring_points: Vec<Point> = v.iter().map(|&i| points[i as usize]).collect();
+        let area = polygon_area(&ring_points);
+        if area == 0.0 || !area.is_finite() {
             return None;
         }
-        let left = (area2 > 0.0) != ring.hole;
+        let left = (area > 0.0) != ring.hole;
         for k in 0..v.len() {
             let (a, b) = (v[k] as usize, v[(k + 1) % v.len()] as usize);
             let e = cdt.get_edge_from_neighbors(
