@@ -3,6 +3,8 @@
 
 use std::path::Path;
 
+use petgraph::unionfind::UnionFind;
+
 use super::EvalError;
 use crate::grid::{GridError, LoadOptions, OccupancyGrid};
 use crate::imaging::{Labels, Mask, label_components};
@@ -140,14 +142,7 @@ impl GroundTruth {
             })
             .collect();
         // Union of components one pixel apart that touch the same rooms.
-        let mut parent: Vec<usize> = (0..count).collect();
-        fn root(parent: &mut [usize], mut a: usize) -> usize {
-            while parent[a] != a {
-                parent[a] = parent[parent[a]];
-                a = parent[a];
-            }
-            a
-        }
+        let mut sets = UnionFind::<usize>::new(count);
         for a in 1..count {
             if touched[a].len() < 2 {
                 continue;
@@ -156,16 +151,20 @@ impl GroundTruth {
                 for n in around(p, 2) {
                     let b = lines.data[n] as usize;
                     if b != 0 && b != a && touched[b] == touched[a] {
-                        let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
-                        parent[ra.max(rb)] = ra.min(rb);
+                        sets.union(a, b);
                     }
                 }
             }
         }
+        // Each set's pixels under its lowest component.
+        let mut first_of = vec![usize::MAX; count];
         let mut merged: Vec<Vec<u32>> = vec![Vec::new(); count];
         for (a, px) in pixels.iter_mut().enumerate().skip(1) {
-            let r = root(&mut parent, a);
-            merged[r].append(px);
+            let r = sets.find_mut(a);
+            if first_of[r] == usize::MAX {
+                first_of[r] = a;
+            }
+            merged[first_of[r]].append(px);
         }
         let mut doors = Vec::new();
         for (a, mut px) in merged.into_iter().enumerate().skip(1) {
