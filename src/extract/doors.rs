@@ -131,6 +131,7 @@ fn stretches(list: &[Crossing], w: usize, join_px: i64) -> Vec<Vec<usize>> {
 /// `dist` is each pixel's distance to the nearest obstacle).
 pub(crate) fn cut_doors(
     labels: &Labels,
+    walls: Option<&[bool]>,
     doors: &[&Border],
     dist: &[f32],
     limits: &SpanLimits,
@@ -141,7 +142,7 @@ pub(crate) fn cut_doors(
     let mut spanned: Vec<(u32, &Border, DoorSpan)> = Vec::new();
     for (k, door) in doors.iter().enumerate() {
         let label = labels.count + 1 + k as u32;
-        match door_span(labels, door.pair, &door.pixels, limits) {
+        match door_span(labels, walls, door.pair, &door.pixels, limits) {
             Some(span) => {
                 fill_span(labels, &mut out, door, &span, label);
                 lines.push(Some(span.line));
@@ -308,7 +309,7 @@ mod tests {
             max_depth: 4.0,
             slack: 1.0,
         };
-        let (cut, lines) = cut_doors(&labels, &[&b[0]], &dist, &limits);
+        let (cut, lines) = cut_doors(&labels, None, &[&b[0]], &dist, &limits);
         assert_eq!(cut.count, 3);
         assert_eq!(cut.data[..6], [1, 1, 3, 3, 2, 2]);
         // Its line: the widest circle on the border (radius 2, row 1),

@@ -21,7 +21,7 @@ use super::stubs::{StubLimits, compared_width, passage_labels, split_off_passage
 use super::tidy::tidy_labels;
 use super::wall_gaps::{GapLimits, WallGap, close_gaps, reopen_gaps, wall_gaps};
 use super::{DoorRule, ExtractError, ExtractParams, Method};
-use crate::grid::OccupancyGrid;
+use crate::grid::{Cell, OccupancyGrid};
 use crate::imaging::{Labels, distance_to_background, max_distance};
 use crate::model::{Connection, Nrg, Space, SpaceId, SpaceKind, point_in_ring};
 
@@ -269,7 +269,10 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         max_depth: (params.wall_thickness_max_m.min(SPAN_MAX_DEPTH_M) / res).max(1.0),
         slack: (SPAN_SLACK_M / res).max(1.5),
     };
-    let (mut labels, door_lines) = cut_doors(&regions, &doors, &dist, &span_limits);
+    // Doorway chords end at the map's walls; other pixels outside the
+    // regions may be noise they cross (see `doorway::Pixel`).
+    let walls = wall_pixels(grid);
+    let (mut labels, door_lines) = cut_doors(&regions, Some(&walls), &doors, &dist, &span_limits);
     claim_enclosed_unknown(
         &mut labels,
         grid,
@@ -313,6 +316,25 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         pixel_centroids,
         timings: clock.timings,
     })
+}
+
+/// Pixels that are surely walls: occupied cells, and cells next to one
+/// (8-neighbours: the uncertain halo of a scanned wall, a blurred drawn
+/// wall). A 3 × 3 dilation, by rows then by columns.
+fn wall_pixels(grid: &OccupancyGrid) -> Vec<bool> {
+    let w = grid.width as usize;
+    let occupied: Vec<bool> = grid.cells.iter().map(|c| *c == Cell::Occupied).collect();
+    let mut rows = occupied.clone();
+    for (row, out) in occupied.chunks(w.max(1)).zip(rows.chunks_mut(w.max(1))) {
+        for x in 0..row.len() {
+            out[x] = row[x.saturating_sub(1)..(x + 2).min(row.len())].contains(&true);
+        }
+    }
+    let mut walls = rows.clone();
+    for (i, wall) in walls.iter_mut().enumerate() {
+        *wall = rows[i] || (i >= w && rows[i - w]) || rows.get(i + w).is_some_and(|&r| r);
+    }
+    walls
 }
 
 /// The indices of the borders of `all` that are doors. With the skeleton
