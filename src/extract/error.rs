@@ -12,6 +12,28 @@ pub enum ExtractError {
         /// Its value.
         value: f64,
     },
+    /// A fraction above 1.
+    #[error("parameter `{name}` = {value} is invalid: it is a fraction, from 0 to 1")]
+    NotAFraction {
+        /// The parameter.
+        name: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// A least value above its greatest.
+    #[error(
+        "parameters `{low}` = {low_value} and `{high}` = {high_value} contradict each other: `{low}` must not exceed `{high}`"
+    )]
+    ParamsOutOfOrder {
+        /// The least value's parameter.
+        low: &'static str,
+        /// Its value.
+        low_value: f64,
+        /// The greatest value's parameter.
+        high: &'static str,
+        /// Its value.
+        high_value: f64,
+    },
     /// Nothing free is left after noise removal.
     #[error(
         "no free space is left after removing noise narrower than {noise_m} m and components under {min_area_m2} m² (lower noise_radius_m or min_free_area_m2)"

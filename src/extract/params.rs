@@ -2,6 +2,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::error::ExtractError;
+
 /// Which segmentation the pipeline runs.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
@@ -207,9 +209,26 @@ impl Default for ExtractParams {
     }
 }
 
+/// Parameters that are fractions (0 to 1).
+const FRACTIONS: [&str; 2] = ["door_constriction", "open_join_fraction"];
+
 impl ExtractParams {
-    /// Checks that every length is finite and non-negative; returns the bad field.
-    pub fn validate(&self) -> Result<(), (&'static str, f64)> {
+    /// Checks every parameter: lengths, areas and factors finite and
+    /// non-negative, fractions ([`ExtractParams::door_constriction`],
+    /// [`ExtractParams::open_join_fraction`]) at most 1, and each least
+    /// value at most its greatest (`door_width_min_m` ≤ `door_width_max_m`,
+    /// `door_width_min_m` ≤ `wall_gap_width_max_m`, `door_depth_m` ≤
+    /// `wall_thickness_max_m`). A minimum above its maximum would silently
+    /// find nothing (no door is both at least 2.5 m and at most 1.8 m wide).
+    ///
+    /// ```
+    /// use nrgdb::extract::{ExtractError, ExtractParams};
+    /// let p = ExtractParams { door_width_min_m: 2.5, ..ExtractParams::default() };
+    /// let e = p.validate().unwrap_err();
+    /// assert!(matches!(e, ExtractError::ParamsOutOfOrder { low: "door_width_min_m", .. }));
+    /// assert!(ExtractParams::default().validate().is_ok());
+    /// ```
+    pub fn validate(&self) -> Result<(), ExtractError> {
         let fields = [
             ("working_resolution_m", self.working_resolution_m),
             ("noise_radius_m", self.noise_radius_m),
@@ -236,12 +255,112 @@ impl ExtractParams {
             ("skeleton_erode_m", self.skeleton_erode_m),
             ("skeleton_open_m", self.skeleton_open_m),
         ];
-        match fields
-            .into_iter()
+        if let Some((name, value)) = fields
+            .iter()
+            .copied()
             .find(|(_, v)| !(v.is_finite() && *v >= 0.0))
         {
-            Some(bad) => Err(bad),
+            return Err(ExtractError::BadParam { name, value });
+        }
+        if let Some((name, value)) = fields
+            .iter()
+            .copied()
+            .find(|(name, v)| FRACTIONS.contains(name) && *v > 1.0)
+        {
+            return Err(ExtractError::NotAFraction { name, value });
+        }
+        let ordered = [
+            (
+                ("door_width_min_m", self.door_width_min_m),
+                ("door_width_max_m", self.door_width_max_m),
+            ),
+            (
+                ("door_width_min_m", self.door_width_min_m),
+                ("wall_gap_width_max_m", self.wall_gap_width_max_m),
+            ),
+            (
+                ("door_depth_m", self.door_depth_m),
+                ("wall_thickness_max_m", self.wall_thickness_max_m),
+            ),
+        ];
+        match ordered.into_iter().find(|((_, lo), (_, hi))| lo > hi) {
+            Some(((low, low_value), (high, high_value))) => Err(ExtractError::ParamsOutOfOrder {
+                low,
+                low_value,
+                high,
+                high_value,
+            }),
             None => Ok(()),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn check(p: ExtractParams) -> String {
+        p.validate()
+            .map_or_else(|e| e.to_string(), |()| "ok".into())
+    }
+
+    #[test]
+    fn contradictions_and_fractions_are_refused_with_both_names() {
+        let d = ExtractParams::default;
+        assert_eq!(check(d()), "ok");
+        let m = check(ExtractParams {
+            door_width_min_m: 2.5,
+            ..d()
+        });
+        assert!(
+            m.contains("`door_width_min_m` = 2.5") && m.contains("`door_width_max_m` = 1.8"),
+            "{m}"
+        );
+        // Doors up to 2.5 m, wall gaps only up to 2.1 m: gaps at least
+        // 2.2 m wide could never be found.
+        let m = check(ExtractParams {
+            door_width_min_m: 2.2,
+            door_width_max_m: 2.5,
+            ..d()
+        });
+        assert!(m.contains("`wall_gap_width_max_m` = 2.1"), "{m}");
+        let m = check(ExtractParams {
+            door_depth_m: 1.5,
+            ..d()
+        });
+        assert!(m.contains("`wall_thickness_max_m` = 1.2"), "{m}");
+        for (name, p) in [
+            (
+                "door_constriction",
+                ExtractParams {
+                    door_constriction: 1.5,
+                    ..d()
+                },
+            ),
+            (
+                "open_join_fraction",
+                ExtractParams {
+                    open_join_fraction: 2.0,
+                    ..d()
+                },
+            ),
+        ] {
+            let m = check(p);
+            assert!(m.contains(name) && m.contains("fraction"), "{m}");
+        }
+        // Equal bounds and a fraction of exactly 1 are fine.
+        assert_eq!(
+            check(ExtractParams {
+                door_width_min_m: 1.8,
+                door_constriction: 1.0,
+                ..d()
+            }),
+            "ok"
+        );
+        let m = check(ExtractParams {
+            noise_radius_m: f64::NAN,
+            ..d()
+        });
+        assert!(m.contains("noise_radius_m"), "{m}");
     }
 }

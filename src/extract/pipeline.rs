@@ -95,9 +95,7 @@ impl Clock {
 /// assert_eq!((x.nrg.spaces().len(), doors), (3, 1));
 /// ```
 pub fn extract(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction, ExtractError> {
-    params
-        .validate()
-        .map_err(|(name, value)| ExtractError::BadParam { name, value })?;
+    params.validate()?;
     let k = (params.working_resolution_m / grid.resolution + 1e-9).floor();
     if !(2.0..=64.0).contains(&k) {
         return extract_at(grid, params);
