@@ -1,7 +1,8 @@
 //! The accuracy benchmark on simulated buildings: simulates, extracts and
 //! evaluates `--count` buildings per group (fixed seeds 1..=count), once
 //! plain and once furnished (cluttered), and prints a line per building and
-//! the means per group. The regression guard over the same figures is the
+//! the means per group. `kinds` is corridors and rooms labelled as the plan
+//! has them / corridors labelled room and rooms labelled corridor. The regression guard over the same figures is the
 //! integration test `sim_accuracy` (tests/it/sim_accuracy.rs).
 //!
 //! ```text
@@ -29,8 +30,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     let scratch = tempfile::tempdir()?;
     println!(
-        "{:<10} {:>6} {:>6} | {:>6} {:>6} | {:>6} {:>6} | {:>7} {:>7}",
-        "building", "R", "P", "doorR", "doorP", "connR", "connP", "rooms", "ms"
+        "{:<10} {:>6} {:>6} | {:>6} {:>6} | {:>6} {:>6} | {:>7} {:>9} {:>7}",
+        "building", "R", "P", "doorR", "doorP", "connR", "connP", "rooms", "kinds", "ms"
     );
     for furnished in [false, true] {
         let mut scores = Vec::new();
@@ -42,7 +43,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let ms = t.elapsed().as_secs_f64() * 1e3;
             let e = &s.evaluation;
             println!(
-                "{:<10} {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>7} {:>7.0}",
+                "{:<10} {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>7} {:>9} {:>7.0}",
                 format!("{}{seed}", if furnished { "F" } else { "P" }),
                 100.0 * e.rooms.recall_micro,
                 100.0 * e.rooms.precision_micro,
@@ -51,6 +52,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 100.0 * e.connections.recall,
                 100.0 * e.connections.precision,
                 format!("{}/{}", e.rooms.segments, s.true_rooms),
+                format!(
+                    "{}+{}/{}+{}",
+                    s.kinds.corridor_as_corridor,
+                    s.kinds.room_as_room,
+                    s.kinds.corridor_as_room,
+                    s.kinds.room_as_corridor
+                ),
                 ms
             );
             scores.push(s);
@@ -63,14 +71,21 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 fn print_means(group: &str, scores: &[SimulatedScore]) {
     let n = scores.len().max(1) as f64;
     let mean = |f: &dyn Fn(&SimulatedScore) -> f64| 100.0 * scores.iter().map(f).sum::<f64>() / n;
+    let mut kinds = nrgdb::eval::KindScore::default();
+    for s in scores {
+        kinds.add(&s.kinds);
+    }
     println!(
-        "mean {group:<10} R {:.2} P {:.2} | doors R {:.2} P {:.2} | connections R {:.2} P {:.2}  ({} buildings)",
+        "mean {group:<10} R {:.2} P {:.2} | doors R {:.2} P {:.2} | connections R {:.2} P {:.2} | kinds {:.2} % (corridors as rooms {}, rooms as corridors {})  ({} buildings)",
         mean(&|s| s.evaluation.rooms.recall_micro),
         mean(&|s| s.evaluation.rooms.precision_micro),
         mean(&|s| s.evaluation.doors.recall),
         mean(&|s| s.evaluation.doors.precision),
         mean(&|s| s.evaluation.connections.recall),
         mean(&|s| s.evaluation.connections.precision),
+        100.0 * kinds.accuracy(),
+        kinds.corridor_as_room,
+        kinds.room_as_corridor,
         scores.len()
     );
 }

@@ -3,7 +3,8 @@
 //! Owns the metrics: room-segmentation recall/precision exactly as IPA's
 //! `evaluation_segmentation.cpp` (BENCHMARK.md §1.1), door recall/precision
 //! against the GT's doorway lines, door widths against those lines'
-//! lengths, connection recall/precision, and a
+//! lengths, connection recall/precision, room and corridor labels against a
+//! simulated plan, and a
 //! picture of where extraction and ground truth disagree, the
 //! leave-one-building-out judgement of a parameter's value; the free-space
 //! geodesic and the route-fidelity harness that measure routes against it.
@@ -14,6 +15,7 @@ mod door_widths;
 mod error;
 mod geodesic;
 mod ground_truth;
+mod kinds;
 mod leave_one_out;
 mod metrics;
 mod picture;
@@ -27,6 +29,7 @@ pub use geodesic::{
     free_space_geodesic_path,
 };
 pub use ground_truth::{DoorLine, GroundTruth, load_ground_truth};
+pub use kinds::{KindScore, kind_score};
 pub use leave_one_out::{HeldOut, building_of, leave_one_out, score, tuned_on_all};
 pub use metrics::{
     ConnectionPairs, Detection, DoorMatches, Evaluation, RoomScores, connection_pairs,

@@ -5,6 +5,7 @@
 
 use std::path::Path;
 
+use super::kinds::{KindScore, kind_score};
 use super::{EvalError, Evaluation, evaluate, load_ground_truth};
 use crate::extract::{ExtractParams, extract};
 use crate::grid::{LoadOptions, load_map};
@@ -21,6 +22,8 @@ pub struct SimulatedScore {
     pub true_rooms: usize,
     /// The scores against the plan's ground truth.
     pub evaluation: Evaluation,
+    /// The room and corridor labels against the plan's.
+    pub kinds: KindScore,
 }
 
 /// Simulates the building of `sim`, writes it into `scratch` (a directory,
@@ -51,6 +54,7 @@ pub fn evaluate_simulated(
         furnished: sim.plan.furniture,
         true_rooms,
         evaluation: evaluate(&gt, &x, grid.resolution),
+        kinds: kind_score(&x.nrg, &building.plan.corridors, &building.plan.rooms),
     })
 }
 

@@ -93,6 +93,20 @@ fn hundred_simulated_buildings_stay_above_the_floors() {
         report += &format!("furnished={furnished}: got {got:.2?}, floors {want:?}\n");
         failed |= got.iter().zip(&want).any(|(g, w)| g < w);
     }
+    // Room and corridor labels against the plan's (issue 20, mode 6),
+    // summed over each group of 50: on 2026-12-02 plain 1 corridor
+    // labelled room and 0 rooms labelled corridor, furnished 1 and 6.
+    // Labelling everything a room would make about 50 corridors rooms.
+    for (furnished, corridors_as_rooms, rooms_as_corridors) in [(false, 2, 2), (true, 2, 8)] {
+        let mut kinds = nrgdb::eval::KindScore::default();
+        for s in all.iter().filter(|s| s.furnished == furnished) {
+            kinds.add(&s.kinds);
+        }
+        report += &format!("furnished={furnished}: labels {kinds:?}\n");
+        failed |= kinds.corridor_as_room > corridors_as_rooms
+            || kinds.room_as_corridor > rooms_as_corridors
+            || kinds.corridor_as_corridor < SEEDS as usize;
+    }
     println!("{report}");
     assert!(!failed, "accuracy fell below a floor:\n{report}");
 }
