@@ -29,8 +29,9 @@ pub(crate) struct Topology {
 /// a door-width profile must not walk round a narrow door through it). A
 /// corridor cut in two that also meets itself through a door is still
 /// walked straight across the cut.
-/// A region with ≥ 2 navigable edges whose elongation (area / diameter²) is
-/// at least `min_elongation` is a corridor, every other region a room, so no
+/// A region with ≥ 2 navigable edges whose elongation (area / diameter²;
+/// the pipeline passes the diameter with the clutter in the region filled,
+/// see `filled`) is at least `min_elongation` is a corridor, every other region a room, so no
 /// corridor dangles.
 pub(crate) fn topology(
     labels: &Labels,

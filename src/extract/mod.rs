@@ -26,6 +26,7 @@ mod conflicts;
 mod doors;
 mod doorway;
 mod error;
+mod filled;
 mod furniture;
 mod graph;
 mod interior;

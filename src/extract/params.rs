@@ -158,8 +158,9 @@ pub struct ExtractParams {
     /// (small rooms above it are kept). Default 1.0 m².
     pub min_room_area_m2: f64,
     /// A non-door space of degree ≥ 2 is a corridor only if its area over
-    /// the square of its widest inscribed diameter is at least this (0 = the
-    /// paper's pure degree rule). Default 2.5.
+    /// the square of its widest inscribed diameter (with the clutter standing
+    /// in it filled: a furnished office is as wide as its walls) is at least
+    /// this (0 = the paper's pure degree rule). Default 2.5.
     pub corridor_min_elongation: f64,
     /// Douglas–Peucker tolerance for polygons. Default 0.05 m.
     pub simplify_m: f64,

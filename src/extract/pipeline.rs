@@ -8,6 +8,7 @@ use super::ccl::segment_ccl;
 use super::clean::clean_free;
 use super::doors::{Border, borders, cut_doors};
 use super::doorway::SpanLimits;
+use super::filled::filled_diameters;
 use super::graph::topology;
 use super::interior::{claim_enclosed_unknown, fill_specks};
 use super::joins::{JoinLimits, open_joins};
@@ -284,7 +285,13 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     // polygons see the same labels.
     tidy_labels(&mut labels);
     clock.lap("tidy");
-    let shape = region_shapes(&labels, &dist);
+    // A corridor by its outline: the clutter standing in a space is filled
+    // before its width is taken (see `filled`).
+    let shape: Vec<(usize, f64)> = region_shapes(&labels, &dist)
+        .into_iter()
+        .zip(filled_diameters(&labels, n_regions))
+        .map(|((area, _), diameter)| (area, diameter))
+        .collect();
     let topo = topology(
         &labels,
         n_regions,

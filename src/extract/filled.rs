@@ -1,0 +1,156 @@
+//! The width of a space with the clutter standing in it filled: what tells
+//! a corridor from a room. The widest inscribed circle of the free pixels
+//! shrinks around every desk, so furnished offices and labs looked long and
+//! narrow and were called corridors (willow-full: 32 corridors, 20 of them
+//! under 15 m²); with their holes filled they are as wide as their walls
+//! make them (11 corridors, the corridor network).
+
+use crate::imaging::{Labels, Mask, distance_to_background};
+
+/// The widest inscribed diameter (px) of each region `1..=regions` with
+/// its holes filled (index 0 and labels above `regions`: 0). A hole is
+/// what the region encloses that holds no other space: a desk cluster, a
+/// shelf, a pillar. A hole holding another space (rooms inside a ring
+/// corridor, a courtyard) stays outside.
+pub(crate) fn filled_diameters(labels: &Labels, regions: u32) -> Vec<f64> {
+    let w = labels.width as usize;
+    let boxes = labels.bounding_boxes();
+    let mut out = vec![0.0; labels.count as usize + 1];
+    for l in 1..=regions.min(labels.count) {
+        let b = boxes[l as usize];
+        if b[0] > b[2] {
+            continue;
+        }
+        // The box grown by one, so the outside surrounds the region.
+        let (x0, y0) = (b[0] as i64 - 1, b[1] as i64 - 1);
+        let (bw, bh) = ((b[2] - b[0] + 3) as usize, (b[3] - b[1] + 3) as usize);
+        let inside = |x: usize, y: usize| {
+            let (gx, gy) = (x0 + x as i64, y0 + y as i64);
+            gx >= 0
+                && gy >= 0
+                && (gx as usize) < w
+                && (gy as usize) < labels.height as usize
+                && labels.data[gy as usize * w + gx as usize] == l
+        };
+        // Outside: reached from the box's edge without crossing the region.
+        let mut outside = vec![false; bw * bh];
+        let mut stack: Vec<(usize, usize)> = Vec::new();
+        for x in 0..bw {
+            stack.push((x, 0));
+            stack.push((x, bh - 1));
+        }
+        for y in 0..bh {
+            stack.push((0, y));
+            stack.push((bw - 1, y));
+        }
+        // A hole holding another space (a block of rooms inside a ring
+        // corridor, a courtyard) is no clutter: outside too.
+        for y in 0..bh {
+            for x in 0..bw {
+                let (gx, gy) = (x0 + x as i64, y0 + y as i64);
+                if gx >= 0 && gy >= 0 && (gx as usize) < w && (gy as usize) < labels.height as usize
+                {
+                    let m = labels.data[gy as usize * w + gx as usize];
+                    if m != 0 && m != l {
+                        stack.push((x, y));
+                    }
+                }
+            }
+        }
+        while let Some((x, y)) = stack.pop() {
+            let i = y * bw + x;
+            if outside[i] || inside(x, y) {
+                continue;
+            }
+            outside[i] = true;
+            if x > 0 {
+                stack.push((x - 1, y));
+            }
+            if x + 1 < bw {
+                stack.push((x + 1, y));
+            }
+            if y > 0 {
+                stack.push((x, y - 1));
+            }
+            if y + 1 < bh {
+                stack.push((x, y + 1));
+            }
+        }
+        let mask = Mask::from_fn(bw as u32, bh as u32, |x, y| {
+            image::Luma([if outside[y as usize * bw + x as usize] {
+                0
+            } else {
+                255
+            }])
+        });
+        let d = distance_to_background(&mask);
+        out[l as usize] = 2.0 * f64::from(d.iter().copied().fold(0.0f32, f32::max));
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `a`, `b`: regions 1 and 2; anything else is an obstacle.
+    fn labels(rows: &[&str]) -> Labels {
+        Labels {
+            width: rows[0].len() as u32,
+            height: rows.len() as u32,
+            data: rows
+                .iter()
+                .flat_map(|r| r.bytes())
+                .map(|b| match b {
+                    b'a' => 1,
+                    b'b' => 2,
+                    _ => 0,
+                })
+                .collect(),
+            count: 2,
+        }
+    }
+
+    #[test]
+    fn clutter_inside_a_room_is_filled() {
+        // A 9 × 9 room with a desk in the middle: as wide as its walls.
+        let l = labels(&[
+            "###########",
+            "#aaaaaaaaa#",
+            "#aaaaaaaaa#",
+            "#aaaaaaaaa#",
+            "#aaa###aaa#",
+            "#aaa###aaa#",
+            "#aaa###aaa#",
+            "#aaaaaaaaa#",
+            "#aaaaaaaaa#",
+            "#aaaaaaaaa#",
+            "###########",
+        ]);
+        // The desk's pixels count as the room's, the walls do not: the
+        // widest circle is the room's (radius 5 to the walls' pixels;
+        // without the desk filled, 3).
+        let d = filled_diameters(&l, 2);
+        assert_eq!(d[1], 10.0, "{d:?}");
+    }
+
+    #[test]
+    fn a_ring_corridor_keeps_the_rooms_it_encloses_outside() {
+        // Corridor `a` runs round room `b`: the room is no clutter, so the
+        // corridor stays one pixel wide, however big its ring.
+        let l = labels(&[
+            "#########",
+            "#aaaaaaa#",
+            "#a#####a#",
+            "#a#bbb#a#",
+            "#a#bbb#a#",
+            "#a#bbb#a#",
+            "#a#####a#",
+            "#aaaaaaa#",
+            "#########",
+        ]);
+        let d = filled_diameters(&l, 2);
+        assert_eq!(d[1], 2.0, "{d:?}");
+        assert_eq!(d[2], 4.0, "{d:?}");
+    }
+}
