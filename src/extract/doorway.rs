@@ -464,25 +464,7 @@ fn span(pixel: &impl Fn(i64, i64) -> Pixel, th: &Throat, limits: &SpanLimits) ->
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn labels(rows: &[&str]) -> Labels {
-        let w = rows[0].len() as u32;
-        let data = rows
-            .iter()
-            .flat_map(|r| r.bytes())
-            .map(|b| match b {
-                b'a' => 1,
-                b'b' => 2,
-                _ => 0,
-            })
-            .collect();
-        Labels {
-            width: w,
-            height: rows.len() as u32,
-            data,
-            count: 2,
-        }
-    }
+    use crate::imaging::ascii_labels;
 
     fn border(l: &Labels) -> Vec<u32> {
         let w = l.width as usize;
@@ -518,7 +500,7 @@ mod tests {
             "######bbbbb###################",
         ]);
         rows.extend(vec!["bbbbbbbbbbbbbbbbbbbbbbbbbbbbbb"; 12]);
-        let l = labels(&rows);
+        let l = ascii_labels(&rows);
         let span = door_span(&l, None, (1, 2), &border(&l), &LIMITS).unwrap();
         let [p, q] = span.line;
         let len = (q[0] - p[0]).hypot(q[1] - p[1]);
@@ -563,7 +545,7 @@ mod tests {
             rows.push(r);
         }
         let refs: Vec<&str> = rows.iter().map(String::as_str).collect();
-        let l = labels(&refs);
+        let l = ascii_labels(&refs);
         let span = door_span(&l, None, (1, 2), &border(&l), &LIMITS).unwrap();
         let [p, q] = span.line;
         let len = (q[0] - p[0]).hypot(q[1] - p[1]);
@@ -586,7 +568,7 @@ mod tests {
             "######bb+bbbbb+b##############",
         ]);
         rows.extend(vec!["bbbbbbbbbbbbbbbbbbbbbbbbbbbbbb"; 10]);
-        let l = labels(&rows);
+        let l = ascii_labels(&rows);
         let walls: Vec<bool> = rows
             .iter()
             .flat_map(|r| r.bytes())
@@ -606,7 +588,7 @@ mod tests {
         jamb[10] = "######aa+aaaa+aa##############";
         jamb[11] = "######bbbbbbb+++##############";
         jamb[12] = "######bb+bbbb+++##############";
-        let l = labels(&jamb);
+        let l = ascii_labels(&jamb);
         let span = door_span(&l, Some(&walls), (1, 2), &border(&l), &LIMITS).unwrap();
         let [p, q] = span.line;
         let len = (q[0] - p[0]).hypot(q[1] - p[1]);
@@ -616,7 +598,7 @@ mod tests {
     #[test]
     fn no_span_in_open_space() {
         let rows = ["aaaaaaaabbbbbbbb"; 6];
-        let l = labels(&rows);
+        let l = ascii_labels(&rows);
         let wide = SpanLimits {
             max_width: 5.0,
             ..LIMITS

@@ -92,29 +92,12 @@ pub(crate) fn filled_diameters(labels: &Labels, regions: u32) -> Vec<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// `a`, `b`: regions 1 and 2; anything else is an obstacle.
-    fn labels(rows: &[&str]) -> Labels {
-        Labels {
-            width: rows[0].len() as u32,
-            height: rows.len() as u32,
-            data: rows
-                .iter()
-                .flat_map(|r| r.bytes())
-                .map(|b| match b {
-                    b'a' => 1,
-                    b'b' => 2,
-                    _ => 0,
-                })
-                .collect(),
-            count: 2,
-        }
-    }
+    use crate::imaging::ascii_labels;
 
     #[test]
     fn clutter_inside_a_room_is_filled() {
         // A 9 × 9 room with a desk in the middle: as wide as its walls.
-        let l = labels(&[
+        let l = ascii_labels(&[
             "###########",
             "#aaaaaaaaa#",
             "#aaaaaaaaa#",
@@ -138,7 +121,7 @@ mod tests {
     fn a_ring_corridor_keeps_the_rooms_it_encloses_outside() {
         // Corridor `a` runs round room `b`: the room is no clutter, so the
         // corridor stays one pixel wide, however big its ring.
-        let l = labels(&[
+        let l = ascii_labels(&[
             "#########",
             "#aaaaaaa#",
             "#a#####a#",

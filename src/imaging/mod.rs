@@ -54,6 +54,27 @@ pub(crate) fn ascii_mask(text: &str) -> Mask {
     })
 }
 
+/// Parses rows of an ASCII picture into labels: `a` is region 1, `b`
+/// region 2 and so on; anything else is 0 (no region). `count` is the
+/// highest label used.
+#[cfg(test)]
+pub(crate) fn ascii_labels(rows: &[&str]) -> Labels {
+    let data: Vec<u32> = rows
+        .iter()
+        .flat_map(|r| r.bytes())
+        .map(|b| match b {
+            b'a'..=b'z' => u32::from(b - b'a') + 1,
+            _ => 0,
+        })
+        .collect();
+    Labels {
+        width: rows.first().map_or(0, |r| r.len()) as u32,
+        height: rows.len() as u32,
+        count: data.iter().copied().max().unwrap_or(0),
+        data,
+    }
+}
+
 /// Renders a mask as ASCII (`#` foreground, `.` background), rows joined by newlines.
 #[cfg(test)]
 pub(crate) fn mask_ascii(mask: &Mask) -> String {

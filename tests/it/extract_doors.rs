@@ -5,7 +5,7 @@
 
 use nrgdb::extract::{ExtractParams, extract};
 use nrgdb::grid::{Cell, OccupancyGrid};
-use nrgdb::model::{Point, Space, SpaceKind, doorway, point_in_ring};
+use nrgdb::model::{Nrg, Point, Space, SpaceKind, doorway, point_in_ring};
 
 /// The wall between the corridor and the rooms: y from 3.0 to 3.2 m.
 const WALL: (f64, f64) = (3.0, 3.2);
@@ -61,6 +61,23 @@ fn dist(a: Point, b: Point) -> f64 {
     (a[0] - b[0]).hypot(a[1] - b[1])
 }
 
+/// The door spaces of a model.
+fn door_spaces(nrg: &Nrg) -> Vec<&Space> {
+    nrg.spaces()
+        .iter()
+        .filter(|s| s.kind == SpaceKind::Door)
+        .collect()
+}
+
+/// The door whose anchor is nearest `p`.
+fn nearest<'a>(doors: &[&'a Space], p: Point) -> &'a Space {
+    doors
+        .iter()
+        .min_by(|a, b| dist(a.anchor, p).total_cmp(&dist(b.anchor, p)))
+        .copied()
+        .unwrap()
+}
+
 /// The extent of a polygon along the unit direction `u`.
 fn extent(polygon: &[Point], u: Point) -> f64 {
     let proj = polygon.iter().map(|p| p[0] * u[0] + p[1] * u[1]);
@@ -90,12 +107,7 @@ fn issue_19_doors_span_their_doorway_and_measure_its_width() {
         };
         let (grid, to_map) = turned_plan(res, deg);
         let x = extract(&grid, &ExtractParams::default()).unwrap();
-        let doors: Vec<&Space> = x
-            .nrg
-            .spaces()
-            .iter()
-            .filter(|s| s.kind == SpaceKind::Door)
-            .collect();
+        let doors = door_spaces(&x.nrg);
         assert_eq!(doors.len(), 3, "{res} m/px, {deg}°: {}", x.nrg.to_json());
         let mid_wall = (WALL.0 + WALL.1) / 2.0;
         let (s, c) = deg.to_radians().sin_cos();
@@ -103,10 +115,7 @@ fn issue_19_doors_span_their_doorway_and_measure_its_width() {
         for &(x0, x1) in &DOORWAYS {
             let truth = [to_map([x0, mid_wall]), to_map([x1, mid_wall])];
             let middle = to_map([(x0 + x1) / 2.0, mid_wall]);
-            let door = doors
-                .iter()
-                .min_by(|a, b| dist(a.anchor, middle).total_cmp(&dist(b.anchor, middle)))
-                .unwrap();
+            let door = nearest(&doors, middle);
             let d = doorway(door).unwrap();
             let what = format!("{res} m/px, {deg}°, doorway {x0}..{x1}: {d:?}");
             // Width: the doorway's, jamb to jamb.
@@ -164,20 +173,12 @@ fn issue_19_specks_in_a_doorway_do_not_narrow_it() {
         }
     }
     let x = extract(&grid, &ExtractParams::default()).unwrap();
-    let doors: Vec<&Space> = x
-        .nrg
-        .spaces()
-        .iter()
-        .filter(|s| s.kind == SpaceKind::Door)
-        .collect();
+    let doors = door_spaces(&x.nrg);
     assert_eq!(doors.len(), 3, "{}", x.nrg.to_json());
     let mid_wall = (WALL.0 + WALL.1) / 2.0;
     for &(x0, x1) in &DOORWAYS {
         let middle = to_map([(x0 + x1) / 2.0, mid_wall]);
-        let door = doors
-            .iter()
-            .min_by(|a, b| dist(a.anchor, middle).total_cmp(&dist(b.anchor, middle)))
-            .unwrap();
+        let door = nearest(&doors, middle);
         let d = doorway(door).unwrap();
         assert!(
             (d.width_m - (x1 - x0)).abs() <= 1.5 * res,
