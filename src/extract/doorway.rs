@@ -116,9 +116,10 @@ impl DoorSpan {
 /// (on both sides) are `pixels`, in the free space of `labels` (non-zero
 /// = free): the throat nearest the border's centre and the opening
 /// through the wall around it. `walls` marks the pixels that are surely
-/// walls (the map's occupied cells); other pixels outside `labels` are
-/// [`Pixel::Noise`]. `None`: every pixel outside `labels` is a wall. None when the border crosses no bounded
-/// opening (no chord through its centre shorter than `max_width`).
+/// walls (the map's occupied cells and their halo); other pixels outside
+/// `labels` are [`Pixel::Noise`]; with `None` every pixel outside `labels`
+/// is a wall. None when the border crosses no bounded opening (no chord
+/// through its centre shorter than `max_width`).
 pub(crate) fn door_span(
     labels: &Labels,
     walls: Option<&[bool]>,
@@ -211,7 +212,8 @@ pub(crate) enum Pixel {
     /// uncertain grey (JPEG artefacts, a stray ray), a free pixel the
     /// noise filter took.
     Noise,
-    /// An occupied cell, or beyond the map.
+    /// A wall pixel (an occupied cell or one next to it), or beyond the
+    /// map.
     Wall,
 }
 
