@@ -5,7 +5,7 @@
 //! under 15 m²); with their holes filled they are as wide as their walls
 //! make them (11 corridors, the corridor network).
 
-use crate::imaging::{Labels, Mask, distance_to_background};
+use crate::imaging::{Labels, Mask, distance_to_background, max_distance};
 
 /// The widest inscribed diameter (px) of each region `1..=regions` with
 /// its holes filled (index 0 and labels above `regions`: 0). A hole is
@@ -13,7 +13,7 @@ use crate::imaging::{Labels, Mask, distance_to_background};
 /// shelf, a pillar. A hole holding another space (rooms inside a ring
 /// corridor, a courtyard) stays outside.
 pub(crate) fn filled_diameters(labels: &Labels, regions: u32) -> Vec<f64> {
-    let w = labels.width as usize;
+    let (w, h) = (labels.width as usize, labels.height as usize);
     let boxes = labels.bounding_boxes();
     let mut out = vec![0.0; labels.count as usize + 1];
     for l in 1..=regions.min(labels.count) {
@@ -24,13 +24,11 @@ pub(crate) fn filled_diameters(labels: &Labels, regions: u32) -> Vec<f64> {
         // The box grown by one, so the outside surrounds the region.
         let (x0, y0) = (b[0] as i64 - 1, b[1] as i64 - 1);
         let (bw, bh) = ((b[2] - b[0] + 3) as usize, (b[3] - b[1] + 3) as usize);
-        let inside = |x: usize, y: usize| {
+        // The label at box pixel (x, y); None beyond the map.
+        let label_at = |x: usize, y: usize| {
             let (gx, gy) = (x0 + x as i64, y0 + y as i64);
-            gx >= 0
-                && gy >= 0
-                && (gx as usize) < w
-                && (gy as usize) < labels.height as usize
-                && labels.data[gy as usize * w + gx as usize] == l
+            (gx >= 0 && gy >= 0 && (gx as usize) < w && (gy as usize) < h)
+                .then(|| labels.data[gy as usize * w + gx as usize])
         };
         // Outside: reached from the box's edge without crossing the region.
         let mut outside = vec![false; bw * bh];
@@ -47,19 +45,14 @@ pub(crate) fn filled_diameters(labels: &Labels, regions: u32) -> Vec<f64> {
         // corridor, a courtyard) is no clutter: outside too.
         for y in 0..bh {
             for x in 0..bw {
-                let (gx, gy) = (x0 + x as i64, y0 + y as i64);
-                if gx >= 0 && gy >= 0 && (gx as usize) < w && (gy as usize) < labels.height as usize
-                {
-                    let m = labels.data[gy as usize * w + gx as usize];
-                    if m != 0 && m != l {
-                        stack.push((x, y));
-                    }
+                if label_at(x, y).is_some_and(|m| m != 0 && m != l) {
+                    stack.push((x, y));
                 }
             }
         }
         while let Some((x, y)) = stack.pop() {
             let i = y * bw + x;
-            if outside[i] || inside(x, y) {
+            if outside[i] || label_at(x, y) == Some(l) {
                 continue;
             }
             outside[i] = true;
@@ -84,7 +77,7 @@ pub(crate) fn filled_diameters(labels: &Labels, regions: u32) -> Vec<f64> {
             }])
         });
         let d = distance_to_background(&mask);
-        out[l as usize] = 2.0 * f64::from(d.iter().copied().fold(0.0f32, f32::max));
+        out[l as usize] = 2.0 * f64::from(max_distance(&d));
     }
     out
 }

@@ -335,11 +335,9 @@ fn wall_pixels(grid: &OccupancyGrid) -> Vec<bool> {
             out[x] = row[x.saturating_sub(1)..(x + 2).min(row.len())].contains(&true);
         }
     }
-    let mut walls = rows.clone();
-    for (i, wall) in walls.iter_mut().enumerate() {
-        *wall = rows[i] || (i >= w && rows[i - w]) || rows.get(i + w).is_some_and(|&r| r);
-    }
-    walls
+    (0..rows.len())
+        .map(|i| rows[i] || (i >= w && rows[i - w]) || rows.get(i + w).is_some_and(|&r| r))
+        .collect()
 }
 
 /// The indices of the borders of `all` that are doors. With the skeleton
