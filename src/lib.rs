@@ -13,6 +13,7 @@
 pub mod atomic;
 pub mod demo;
 pub mod diff;
+pub mod edit;
 pub mod eval;
 pub mod extract;
 pub mod fixtures;

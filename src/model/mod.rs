@@ -29,4 +29,5 @@ pub use graph::ConnectivityGraph;
 pub use interior_point::pole_of_inaccessibility;
 pub use nrg::{MAX_COORD_M, MAX_NAME_CHARS, Nrg};
 pub use repair::{MAX_OVERLAP_TESTS, MIN_OVERLAP_M2, Repair, RepairKind, repair_geometry};
+pub(crate) use repair::{reshaped, to_geo};
 pub use space::{Space, SpaceId, SpaceKind, doorway};

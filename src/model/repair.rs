@@ -195,7 +195,7 @@ pub fn repair_geometry(nrg: &Nrg) -> Result<(Nrg, Vec<Repair>), ModelError> {
 
 /// The space with `shape` as its outline and holes, its anchor kept if it
 /// is still inside and otherwise moved to the pole of inaccessibility.
-fn reshaped(space: &Space, shape: &Polygon) -> Space {
+pub(crate) fn reshaped(space: &Space, shape: &Polygon) -> Space {
     let mut out = space.clone();
     out.polygon = open_ring(shape.exterior(), true);
     out.holes = shape
@@ -225,7 +225,7 @@ fn open_ring(line: &LineString, ccw: bool) -> Ring {
     ring
 }
 
-fn to_geo(space: &Space) -> Polygon {
+pub(crate) fn to_geo(space: &Space) -> Polygon {
     let line =
         |r: &[Point]| LineString::new(r.iter().map(|p| Coord { x: p[0], y: p[1] }).collect());
     Polygon::new(
