@@ -33,10 +33,13 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod correct;
 mod error;
 mod read;
+mod source;
 mod valid;
 
+pub use correct::{CorrectError, Corrected, edit};
 pub use error::IngestError;
 pub use read::{IngestOptions, InputFile, Prepared, read, read_path};
 pub use valid::{Validated, findings, validate};
@@ -44,7 +47,7 @@ pub use valid::{Validated, findings, validate};
 use crate::grid::OccupancyGrid;
 use crate::model::Nrg;
 use crate::route::walked_model;
-use crate::store::{ImportMeta, Imported, Store, StoreError};
+use crate::store::{CorrectionResults, CorrectionState, ImportMeta, Imported, Store, StoreError};
 
 /// What [`ingest`] did.
 #[derive(Debug, Clone, PartialEq)]
@@ -54,10 +57,25 @@ pub struct Ingested {
     /// How many connection lengths the walked lengths changed (by more
     /// than a millimetre).
     pub lengths_walked: usize,
+    /// The map's corrections applied again to this model: numbers of
+    /// those that applied.
+    pub corrections_applied: Vec<u32>,
+    /// Those that no longer applied: number, statement and reason.
+    pub corrections_failed: Vec<(u32, String, String)>,
 }
+
+/// How many times [`ingest`] reads the corrections again when another
+/// writer changed them meanwhile.
+const MAX_ATTEMPTS: usize = 3;
 
 /// Stores `nrg`, with walked connection lengths, as the next revision of
 /// `map` (see [`Store::import_with_grid`]), keeping `grid` when given.
+///
+/// The map's corrections (issue 22) are applied to `nrg` first, oldest
+/// first, each on the result of the one before: a re-mapped revision keeps
+/// the merges, splits, doors and attributes people made, and each
+/// correction's result (applied, or failed with the reason) is stored with
+/// the revision.
 pub fn ingest(
     store: &mut Store,
     map: &str,
@@ -65,10 +83,46 @@ pub fn ingest(
     meta: ImportMeta,
     grid: Option<&OccupancyGrid>,
 ) -> Result<Ingested, StoreError> {
-    let walked = walked_model(nrg);
-    let imported = store.import_with_grid(map, &walked.nrg, meta, grid)?;
-    Ok(Ingested {
-        imported,
-        lengths_walked: walked.lengths_changed,
-    })
+    let mut attempt = 0;
+    loop {
+        attempt += 1;
+        let key = store.corrections_key(map)?;
+        let mut model = nrg.clone();
+        let mut results = Vec::new();
+        let corrections = store.corrections(map)?;
+        for c in &corrections {
+            if c.state == CorrectionState::Dropped {
+                continue;
+            }
+            match c.rule.reapply(&model, model.next_id()) {
+                Ok(done) => {
+                    model = done.edited.nrg;
+                    results.push((c.id, Ok(())));
+                }
+                Err(reason) => results.push((c.id, Err(reason))),
+            }
+        }
+        let walked = walked_model(&model);
+        let reapplied = CorrectionResults { key, results };
+        match store.import_corrected(map, &walked.nrg, meta.clone(), grid, &reapplied) {
+            Ok(imported) => {
+                let (ok, failed): (Vec<_>, Vec<_>) =
+                    reapplied.results.into_iter().partition(|(_, r)| r.is_ok());
+                return Ok(Ingested {
+                    imported,
+                    lengths_walked: walked.lengths_changed,
+                    corrections_applied: ok.into_iter().map(|(id, _)| id).collect(),
+                    corrections_failed: failed
+                        .into_iter()
+                        .filter_map(|(id, r)| {
+                            let statement = corrections.iter().find(|c| c.id == id)?.statement.clone();
+                            r.err().map(|e| (id, statement, e))
+                        })
+                        .collect(),
+                });
+            }
+            Err(StoreError::Stale { .. }) if attempt < MAX_ATTEMPTS => continue,
+            Err(e) => return Err(e),
+        }
+    }
 }

@@ -62,5 +62,20 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         r.map, r.seq, r.spaces, r.spaces_added, r.spaces_changed, r.spaces_removed, r.connections
     )
     .into_diagnostic()?;
+    report_corrections(&done, out)?;
     Ok(ExitCode::SUCCESS)
+}
+
+/// Says how many of the map's corrections were applied again, and which
+/// no longer applied.
+pub(super) fn report_corrections(done: &nrgdb::ingest::Ingested, out: &mut dyn Write) -> miette::Result<()> {
+    let (applied, failed) = (done.corrections_applied.len(), done.corrections_failed.len());
+    if applied + failed == 0 {
+        return Ok(());
+    }
+    writeln!(out, "corrections: {applied} re-applied, {failed} no longer apply").into_diagnostic()?;
+    for (id, statement, reason) in &done.corrections_failed {
+        writeln!(out, "  correction {id} ({statement}) no longer applies: {reason}").into_diagnostic()?;
+    }
+    Ok(())
 }

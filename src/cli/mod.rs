@@ -20,6 +20,7 @@ pub mod eval_loo;
 mod export;
 pub mod extract;
 mod import;
+mod corrections;
 mod map_log;
 mod maps;
 mod model_file;
@@ -84,6 +85,8 @@ pub enum Command {
     Export(export::Args),
     /// Name a space (a new revision).
     Name(name::Args),
+    /// List a map's corrections and their state; drop one.
+    Corrections(corrections::Args),
     /// Show the history of a map with messages.
     Log(maps::LogArgs),
     /// Draw a model as a picture (PNG or SVG): spaces by kind over the map, graph, route, diff.
@@ -113,6 +116,7 @@ pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
         Command::Revisions(args) => maps::run_revisions(args, out),
         Command::Export(args) => export::run(args, out),
         Command::Name(args) => name::run(args, out),
+        Command::Corrections(args) => corrections::run(args, out),
         Command::Log(args) => maps::run_log(args, out),
         Command::Render(args) => render::run(args, out),
         Command::Serve(args) => serve::run(args, out),

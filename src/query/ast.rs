@@ -85,15 +85,90 @@ pub enum Statement {
         /// New revision.
         to: u64,
     },
+    /// A correction: `MERGE`, `SPLIT`, `ADD DOOR`, `REMOVE DOOR`, `SET`,
+    /// `UNSET` (a new revision, kept as a rule for later imports).
+    Edit(EditStatement),
     /// `EXPLAIN <statement>`.
     Explain(Box<Statement>),
 }
 
+/// A correction as written (spaces not yet resolved); see [`crate::edit::Edit`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum EditStatement {
+    /// `MERGE a, b [, …] [AS "Lobby"]`.
+    Merge {
+        /// The spaces.
+        spaces: Vec<SpaceRef>,
+        /// The merged space's name.
+        name: Option<String>,
+    },
+    /// `SPLIT a ALONG (x1, y1) TO (x2, y2) [WITH DOOR (x, y) [WIDTH w]]`.
+    Split {
+        /// The space.
+        space: SpaceRef,
+        /// The line's ends.
+        line: [[f64; 2]; 2],
+        /// A doorway on it: its position and width.
+        door: Option<([f64; 2], Option<f64>)>,
+    },
+    /// `ADD DOOR BETWEEN a AND b AT (x, y) [WIDTH w]`.
+    AddDoor {
+        /// One side.
+        a: SpaceRef,
+        /// The other side.
+        b: SpaceRef,
+        /// Where.
+        at: [f64; 2],
+        /// How wide.
+        width: Option<f64>,
+    },
+    /// `REMOVE DOOR d`.
+    RemoveDoor(SpaceRef),
+    /// `SET a KIND corridor`.
+    SetKind(SpaceRef, SpaceKind),
+    /// `SET a ATTRIBUTE key = value`.
+    SetAttribute(SpaceRef, String, Value),
+    /// `UNSET a ATTRIBUTE key`.
+    UnsetAttribute(SpaceRef, String),
+}
+
+impl fmt::Display for EditStatement {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let point = |p: &[f64; 2]| format!("({}, {})", number(p[0]), number(p[1]));
+        let key = |k: &str| if is_identifier(k) { k.to_string() } else { quote(k) };
+        let width = |w: &Option<f64>| w.map_or_else(String::new, |w| format!(" WIDTH {}", number(w)));
+        match self {
+            EditStatement::Merge { spaces, name } => {
+                let list: Vec<String> = spaces.iter().map(ToString::to_string).collect();
+                write!(f, "MERGE {}", list.join(", "))?;
+                if let Some(n) = name {
+                    write!(f, " AS {}", quote(n))?;
+                }
+                Ok(())
+            }
+            EditStatement::Split { space, line, door } => {
+                write!(f, "SPLIT {space} ALONG {} TO {}", point(&line[0]), point(&line[1]))?;
+                if let Some((at, w)) = door {
+                    write!(f, " WITH DOOR {}{}", point(at), width(w))?;
+                }
+                Ok(())
+            }
+            EditStatement::AddDoor { a, b, at, width: w } => {
+                write!(f, "ADD DOOR BETWEEN {a} AND {b} AT {}{}", point(at), width(w))
+            }
+            EditStatement::RemoveDoor(d) => write!(f, "REMOVE DOOR {d}"),
+            EditStatement::SetKind(s, k) => write!(f, "SET {s} KIND {k}"),
+            EditStatement::SetAttribute(s, k, v) => write!(f, "SET {s} ATTRIBUTE {} = {v}", key(k)),
+            EditStatement::UnsetAttribute(s, k) => write!(f, "UNSET {s} ATTRIBUTE {}", key(k)),
+        }
+    }
+}
+
 impl Statement {
-    /// Whether running it writes a revision (`NAME`); `EXPLAIN` only
-    /// plans.
+    /// Whether running it writes a revision (`NAME` and the corrections);
+    /// `EXPLAIN` only plans.
     pub fn writes(&self) -> bool {
-        matches!(self, Statement::Name { .. })
+        matches!(self, Statement::Name { .. } | Statement::Edit(_))
     }
 }
 
@@ -348,6 +423,7 @@ impl fmt::Display for Statement {
             }
             Statement::Name { space, name } => write!(f, "NAME {space} AS {}", quote(name)),
             Statement::Diff { from, to } => write!(f, "DIFF {from} {to}"),
+            Statement::Edit(e) => write!(f, "{e}"),
             Statement::Explain(inner) => write!(f, "EXPLAIN {inner}"),
         }
     }

@@ -46,6 +46,19 @@ pub enum SourceError {
         /// The revision asked for.
         revision: u64,
     },
+    /// A correction was refused (the reason names the space).
+    #[error(transparent)]
+    Edit(#[from] crate::edit::EditError),
+    /// A write aimed at a revision that is not the map's latest.
+    #[error("revision {revision} is not the latest of '{map}' ({latest}); corrections apply to the latest: USE {map} first")]
+    NotLatest {
+        /// The map.
+        map: String,
+        /// The revision in use.
+        revision: u64,
+        /// The latest.
+        latest: u64,
+    },
     /// The storage backend failed.
     #[error("storage error: {0}")]
     Backend(Box<dyn std::error::Error + Send + Sync>),

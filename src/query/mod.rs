@@ -43,8 +43,8 @@ mod source;
 mod suggest;
 
 pub use ast::{
-    CompareOp, Condition, Field, OrderKey, SpaceRef, Statement, Value, WalkOptions, is_identifier,
-    quote,
+    CompareOp, Condition, EditStatement, Field, OrderKey, SpaceRef, Statement, Value, WalkOptions,
+    is_identifier, quote,
 };
 pub use compare_revisions::{LoadedRevision, RevisionComparison, compare_revisions};
 pub use error::{QueryError, SourceError, Span};
@@ -58,5 +58,5 @@ pub use result::{Cell, Format, QueryResult, Table};
 pub use script::{OnError, ScriptStep, StatementText, split_statements};
 pub use session::Session;
 pub use shell::{HELP, ShellCommand, Vocabulary, format_message};
-pub use source::{MapInfo, MemorySource, RevisionInfo, Source};
+pub use source::{EditDone, MapInfo, MemorySource, RevisionInfo, Source};
 pub use suggest::{edit_distance, suggest};

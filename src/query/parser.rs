@@ -2,7 +2,9 @@
 //! Errors point at the offending token, list what was expected and suggest
 //! the keyword it most likely meant.
 
-use super::ast::{CompareOp, Condition, Field, OrderKey, SpaceRef, Statement, Value, WalkOptions};
+use super::ast::{
+    CompareOp, Condition, EditStatement, Field, OrderKey, SpaceRef, Statement, Value, WalkOptions,
+};
 use super::error::QueryError;
 use super::lexer::{Token, TokenKind, lex};
 use super::suggest::suggest;
@@ -10,7 +12,7 @@ use crate::model::{SpaceId, SpaceKind};
 use crate::route::MAX_ALTERNATIVES;
 
 /// Words that start a statement.
-pub const STATEMENT_KEYWORDS: [&str; 11] = [
+pub const STATEMENT_KEYWORDS: [&str; 17] = [
     "ROUTE",
     "NEIGHBOURS",
     "NEIGHBORS",
@@ -22,10 +24,16 @@ pub const STATEMENT_KEYWORDS: [&str; 11] = [
     "NAME",
     "DIFF",
     "EXPLAIN",
+    "MERGE",
+    "SPLIT",
+    "ADD",
+    "REMOVE",
+    "SET",
+    "UNSET",
 ];
 
 /// Every keyword of the language (for completion and highlighting).
-pub const KEYWORDS: [&str; 41] = [
+pub const KEYWORDS: [&str; 53] = [
     "ROUTE",
     "NEIGHBOURS",
     "NEIGHBORS",
@@ -67,6 +75,18 @@ pub const KEYWORDS: [&str; 41] = [
     "TRUE",
     "FALSE",
     "NULL",
+    "MERGE",
+    "SPLIT",
+    "ALONG",
+    "ADD",
+    "DOOR",
+    "BETWEEN",
+    "REMOVE",
+    "SET",
+    "UNSET",
+    "KIND",
+    "ATTRIBUTE",
+    "WIDTH",
 ];
 
 const FIELDS: [&str; 7] = ["id", "kind", "name", "area", "degree", "width", "attr"];
@@ -332,12 +352,127 @@ impl Parser {
                 from: self.integer()?,
                 to: self.integer()?,
             }),
+            "MERGE" | "SPLIT" | "ADD" | "REMOVE" | "SET" | "UNSET" => {
+                Ok(Statement::Edit(self.edit(&kw)?))
+            }
             _ => {
                 self.enter()?;
                 let inner = self.statement();
                 self.depth -= 1;
                 Ok(Statement::Explain(Box::new(inner?)))
             }
+        }
+    }
+
+    /// The rest of a correction statement after its first keyword `kw`.
+    fn edit(&mut self, kw: &str) -> Result<EditStatement, QueryError> {
+        Ok(match kw {
+            "MERGE" => {
+                let spaces = self.ref_list()?;
+                let name = if self.eat_word("AS") {
+                    let span = self.peek().span;
+                    let name = self.string()?;
+                    if name.trim().is_empty() {
+                        return Err(QueryError::Syntax {
+                            span,
+                            message: "a space's name cannot be empty".into(),
+                        });
+                    }
+                    Some(name)
+                } else {
+                    None
+                };
+                EditStatement::Merge { spaces, name }
+            }
+            "SPLIT" => {
+                let space = self.space_ref()?;
+                self.expect_word("ALONG")?;
+                let from = self.point()?;
+                self.expect_word("TO")?;
+                let to = self.point()?;
+                let door = if self.eat_word("WITH") {
+                    self.expect_word("DOOR")?;
+                    let at = self.point()?;
+                    Some((at, self.door_width()?))
+                } else {
+                    None
+                };
+                EditStatement::Split {
+                    space,
+                    line: [from, to],
+                    door,
+                }
+            }
+            "ADD" => {
+                self.expect_word("DOOR")?;
+                self.expect_word("BETWEEN")?;
+                let a = self.space_ref()?;
+                self.expect_word("AND")?;
+                let b = self.space_ref()?;
+                self.expect_word("AT")?;
+                let at = self.point()?;
+                let width = self.door_width()?;
+                EditStatement::AddDoor { a, b, at, width }
+            }
+            "REMOVE" => {
+                self.expect_word("DOOR")?;
+                EditStatement::RemoveDoor(self.space_ref()?)
+            }
+            "SET" => {
+                let space = self.space_ref()?;
+                if self.eat_word("KIND") {
+                    let t = self.peek().clone();
+                    let kind = t.text.parse::<SpaceKind>().map_err(|message| QueryError::Syntax {
+                        span: t.span,
+                        message,
+                    })?;
+                    self.pos += 1;
+                    EditStatement::SetKind(space, kind)
+                } else {
+                    self.expect_word("ATTRIBUTE")?;
+                    let key = self.attribute_key()?;
+                    self.expect_punct("=")?;
+                    let span = self.peek().span;
+                    let value = self.value()?;
+                    if value == Value::Null {
+                        return Err(QueryError::Syntax {
+                            span,
+                            message: "an attribute cannot be set to NULL: UNSET it".into(),
+                        });
+                    }
+                    EditStatement::SetAttribute(space, key, value)
+                }
+            }
+            _ => {
+                let space = self.space_ref()?;
+                self.expect_word("ATTRIBUTE")?;
+                EditStatement::UnsetAttribute(space, self.attribute_key()?)
+            }
+        })
+    }
+
+    /// `[WIDTH w]`.
+    fn door_width(&mut self) -> Result<Option<f64>, QueryError> {
+        if self.eat_word("WIDTH") {
+            Ok(Some(self.number()?))
+        } else {
+            Ok(None)
+        }
+    }
+
+    /// An attribute's name: a bare word or a "string".
+    fn attribute_key(&mut self) -> Result<String, QueryError> {
+        let t = self.peek().clone();
+        match t.kind {
+            TokenKind::Word => {
+                self.pos += 1;
+                Ok(t.text)
+            }
+            TokenKind::Str(s) => {
+                self.pos += 1;
+                Ok(s)
+            }
+            _ => Err(self.expected(&["an attribute name"])),
         }
     }
 
@@ -777,9 +912,14 @@ mod tests {
             NEIGHBORS OF space 1 DEPTH 2; FIND doors WHERE NOT (width < 1 OR attr.\"a b\" = NULL) \
             AND name LIKE 'K%' ORDER BY area DESC, id LIMIT 3; LOCATE (1, -2); \
             REACHABLE FROM 1 WITHIN 10; SHOW MAPS; SHOW REVISIONS OF \"willow-full\"; \
-            USE demo AT REVISION 2; NAME 3 AS \"Big \\\"Room\\\"\"; DIFF 1 2; EXPLAIN FIND spaces";
+            USE demo AT REVISION 2; NAME 3 AS \"Big \\\"Room\\\"\"; DIFF 1 2; EXPLAIN FIND spaces; \
+            MERGE 3, \"Hall\", (1, 2) AS \"Lobby\"; SPLIT 4 ALONG (0, 1.5) TO (9, 1.5) WITH DOOR (3, 1.5) WIDTH 0.9; \
+            SPLIT corridor 2 ALONG (0, 0) TO (1, 1); ADD DOOR BETWEEN 3 AND \"Hall\" AT (4, 4) WIDTH 1.2; \
+            ADD DOOR BETWEEN 3 AND 5 AT (4, 4); REMOVE DOOR door 31; SET 3 KIND corridor; \
+            SET \"Hall\" ATTRIBUTE restricted = TRUE; SET 3 ATTRIBUTE \"opening hours\" = \"8-18\"; \
+            SET 3 ATTRIBUTE capacity = 12; UNSET 3 ATTRIBUTE restricted";
         let parsed = parse(text).unwrap();
-        assert_eq!(parsed.len(), 11);
+        assert_eq!(parsed.len(), 22);
         for s in &parsed {
             assert_eq!(&parse_statement(&s.to_string()).unwrap(), s, "{s}");
         }

@@ -3,7 +3,7 @@
 
 use std::fmt;
 
-use super::ast::{Condition, OrderKey, SpaceRef, Statement, WalkOptions};
+use super::ast::{Condition, EditStatement, OrderKey, SpaceRef, Statement, Value, WalkOptions};
 use super::error::QueryError;
 use super::index::IndexedRevision;
 use crate::model::{Point, SpaceId, SpaceKind};
@@ -51,6 +51,9 @@ pub enum Plan {
     Use(String, Option<u64>),
     /// Rename a space, writing a revision.
     Name(SpaceId, String),
+    /// A correction (spaces resolved), writing a revision, and the
+    /// statement as written.
+    Edit(crate::edit::Edit, String),
     /// Compare two revisions of the selected map (`crate::diff::compare`).
     Diff(u64, u64),
     /// Print the inner plan instead of running it.
@@ -129,7 +132,50 @@ pub fn plan(
         Statement::Use { map, revision } => Plan::Use(map.clone(), *revision),
         Statement::Name { space, name } => Plan::Name(model()?.resolve(space)?, name.clone()),
         Statement::Diff { from, to } => Plan::Diff(*from, *to),
+        Statement::Edit(e) => Plan::Edit(resolve_edit(model()?, e)?, e.to_string()),
         Statement::Explain(inner) => Plan::Explain(Box::new(plan(inner, current, current_map)?)),
+    })
+}
+
+/// The edit `e` names, its spaces resolved in `m`.
+fn resolve_edit(m: &IndexedRevision, e: &EditStatement) -> Result<crate::edit::Edit, QueryError> {
+    use crate::edit::{Edit, NewDoor};
+    Ok(match e {
+        EditStatement::Merge { spaces, name } => Edit::Merge {
+            spaces: spaces.iter().map(|r| m.resolve(r)).collect::<Result<_, _>>()?,
+            name: name.clone(),
+        },
+        EditStatement::Split { space, line, door } => Edit::Split {
+            space: m.resolve(space)?,
+            line: *line,
+            door: door.map(|(at, width_m)| NewDoor { at, width_m }),
+        },
+        EditStatement::AddDoor { a, b, at, width } => Edit::AddDoor {
+            a: m.resolve(a)?,
+            b: m.resolve(b)?,
+            at: *at,
+            width_m: *width,
+        },
+        EditStatement::RemoveDoor(d) => Edit::RemoveDoor { door: m.resolve(d)? },
+        EditStatement::SetKind(s, kind) => Edit::SetKind {
+            space: m.resolve(s)?,
+            kind: *kind,
+        },
+        EditStatement::SetAttribute(s, key, value) => Edit::SetAttribute {
+            space: m.resolve(s)?,
+            key: key.clone(),
+            value: match value {
+                Value::Number(x) => serde_json::Number::from_f64(*x)
+                    .map_or(serde_json::Value::Null, serde_json::Value::Number),
+                Value::Text(t) => serde_json::Value::String(t.clone()),
+                Value::Bool(b) => serde_json::Value::Bool(*b),
+                Value::Null => serde_json::Value::Null,
+            },
+        },
+        EditStatement::UnsetAttribute(s, key) => Edit::UnsetAttribute {
+            space: m.resolve(s)?,
+            key: key.clone(),
+        },
     })
 }
 
@@ -267,6 +313,10 @@ impl fmt::Display for Plan {
                 None => write!(f, "Select map '{m}' latest revision"),
             },
             Plan::Name(id, name) => write!(f, "RenameSpace {id} to '{name}' (new revision)"),
+            Plan::Edit(_, statement) => write!(
+                f,
+                "Correct: {statement}\n  ApplyAndCheck (the checks of `nrgdb check`)\n  CommitRevision with the correction kept as a rule"
+            ),
             Plan::Diff(a, b) => write!(
                 f,
                 "Diff revision {a} -> {b}\n  AlignIfFramesDiffer (walls of the stored grids, else of the space polygons)\n  \

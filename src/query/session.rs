@@ -161,6 +161,27 @@ impl<S: Source> Session<S> {
                     "named space {id} '{name}' in map '{map}': revision {revision} (was {old})"
                 )))
             }
+            Plan::Edit(edit, statement) => {
+                let current = self.current.as_ref().ok_or(QueryError::NoMapSelected)?;
+                let (map, old) = (current.map.clone(), current.revision);
+                let before = std::sync::Arc::clone(&current.nrg);
+                let done = self.source.edit(&map, old, edit, statement)?;
+                self.use_map(&map, Some(done.revision))?;
+                let what = edit.describe(&before);
+                let kept = done
+                    .correction
+                    .map_or_else(String::new, |c| format!("; kept as correction {c}, re-applied at every import"));
+                let made = if done.created.is_empty() {
+                    String::new()
+                } else {
+                    let ids: Vec<String> = done.created.iter().map(ToString::to_string).collect();
+                    format!("; new space {}", ids.join(", "))
+                };
+                Ok(QueryResult::Message(format!(
+                    "{what} in map '{map}': revision {} (was {old}){made}{kept}",
+                    done.revision
+                )))
+            }
             Plan::Diff(from, to) => {
                 let current = self.current.as_ref().ok_or(QueryError::NoMapSelected)?;
                 let map = current.map.clone();
@@ -312,6 +333,16 @@ mod tests {
         ) -> Result<u64, SourceError> {
             self.tick();
             self.inner.rename_space(map, revision, id, name)
+        }
+        fn edit(
+            &mut self,
+            map: &str,
+            revision: u64,
+            edit: &crate::edit::Edit,
+            statement: &str,
+        ) -> Result<crate::query::EditDone, SourceError> {
+            self.tick();
+            self.inner.edit(map, revision, edit, statement)
         }
     }
 

@@ -6,6 +6,7 @@ use std::collections::BTreeMap;
 use super::error::SourceError;
 use super::suggest::suggest;
 use crate::grid::OccupancyGrid;
+use crate::edit::Edit;
 use crate::model::{Nrg, SpaceId};
 
 /// A map and how many revisions it has.
@@ -30,6 +31,20 @@ pub struct RevisionInfo {
     pub connections: usize,
     /// A note saying where it came from ("imported from willow.yaml").
     pub note: String,
+}
+
+/// What a correction wrote.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct EditDone {
+    /// The revision it made.
+    pub revision: u64,
+    /// The correction's number, when the source keeps corrections (the
+    /// store does; a [`MemorySource`] does not).
+    pub correction: Option<u32>,
+    /// Spaces it made.
+    pub created: Vec<SpaceId>,
+    /// Spaces it removed.
+    pub removed: Vec<SpaceId>,
 }
 
 /// What the query executor needs from storage. `store::Store` implements
@@ -61,6 +76,17 @@ pub trait Source {
         id: SpaceId,
         name: &str,
     ) -> Result<u64, SourceError>;
+    /// Applies the correction `edit` (written as `statement`) to `map` at
+    /// `revision`, which must be its latest, writing a new revision; a
+    /// source that keeps corrections keeps it for later imports. A refused
+    /// edit is [`SourceError::Edit`].
+    fn edit(
+        &mut self,
+        map: &str,
+        revision: u64,
+        edit: &Edit,
+        statement: &str,
+    ) -> Result<EditDone, SourceError>;
 }
 
 /// Maps held in memory: name → revisions (revision `n` at index `n - 1`).
@@ -192,6 +218,35 @@ impl Source for MemorySource {
         let note = format!("renamed space {id} to '{name}' (from revision {revision})");
         Ok(self.insert_with_note(map, nrg, &note))
     }
+
+    fn edit(
+        &mut self,
+        map: &str,
+        revision: u64,
+        edit: &Edit,
+        statement: &str,
+    ) -> Result<EditDone, SourceError> {
+        let latest = self.map(map)?.len() as u64;
+        if revision != latest {
+            return Err(SourceError::NotLatest {
+                map: map.to_string(),
+                revision,
+                latest,
+            });
+        }
+        let nrg = &self.revision(map, revision)?.nrg;
+        // New spaces take ids above any the map ever used.
+        let next = self.map(map)?.iter().map(|s| s.nrg.next_id()).max().unwrap_or(SpaceId(1));
+        let done = crate::edit::apply(nrg, edit, next)?;
+        let walked = crate::route::walked_model(&done.nrg).nrg;
+        let note = format!("{statement} (on revision {revision})");
+        Ok(EditDone {
+            revision: self.insert_with_note(map, walked, &note),
+            correction: None,
+            created: done.created,
+            removed: done.removed,
+        })
+    }
 }
 
 impl<S: Source + ?Sized> Source for Box<S> {
@@ -215,5 +270,48 @@ impl<S: Source + ?Sized> Source for Box<S> {
         name: &str,
     ) -> Result<u64, SourceError> {
         (**self).rename_space(map, revision, id, name)
+    }
+    fn edit(
+        &mut self,
+        map: &str,
+        revision: u64,
+        edit: &Edit,
+        statement: &str,
+    ) -> Result<EditDone, SourceError> {
+        (**self).edit(map, revision, edit, statement)
+    }
+}
+
+/// A borrowed source (a session over a store the caller keeps).
+impl<S: Source + ?Sized> Source for &mut S {
+    fn maps(&self) -> Result<Vec<MapInfo>, SourceError> {
+        (**self).maps()
+    }
+    fn revisions(&self, map: &str) -> Result<Vec<RevisionInfo>, SourceError> {
+        (**self).revisions(map)
+    }
+    fn load(&self, map: &str, revision: u64) -> Result<Nrg, SourceError> {
+        (**self).load(map, revision)
+    }
+    fn grid(&self, map: &str, revision: u64) -> Result<Option<OccupancyGrid>, SourceError> {
+        (**self).grid(map, revision)
+    }
+    fn rename_space(
+        &mut self,
+        map: &str,
+        revision: u64,
+        id: SpaceId,
+        name: &str,
+    ) -> Result<u64, SourceError> {
+        (**self).rename_space(map, revision, id, name)
+    }
+    fn edit(
+        &mut self,
+        map: &str,
+        revision: u64,
+        edit: &Edit,
+        statement: &str,
+    ) -> Result<EditDone, SourceError> {
+        (**self).edit(map, revision, edit, statement)
     }
 }

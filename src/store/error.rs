@@ -124,6 +124,31 @@ pub enum StoreError {
         /// The database file (empty until the store names it).
         path: PathBuf,
     },
+    /// A correction number the map does not have.
+    #[error("map '{map}' has no correction {id}")]
+    NoSuchCorrection {
+        /// The map.
+        map: String,
+        /// The number asked for.
+        id: u32,
+    },
+    /// Another writer changed the map (a revision or a correction) between
+    /// reading it and writing; nothing was stored.
+    #[error("map '{map}' changed while this change was being prepared; nothing was stored, retry")]
+    Stale {
+        /// The map.
+        map: String,
+    },
+    /// A stored correction that cannot be read back.
+    #[error("correction {id} of map '{map}' is unreadable: {message}")]
+    BadCorrection {
+        /// The map.
+        map: String,
+        /// The correction.
+        id: u32,
+        /// What is wrong.
+        message: String,
+    },
     /// Another writer added a revision to the map every time this import
     /// had matched its spaces against the latest one; nothing was stored.
     #[error(

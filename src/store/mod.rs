@@ -26,12 +26,12 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod corrections;
 mod error;
 mod geometry_blob;
 mod grids;
 mod read;
 mod schema;
-mod source;
 mod write;
 
 use std::collections::BTreeMap;
@@ -45,6 +45,7 @@ use sha2::{Digest, Sha256};
 use crate::diff::MatchParams;
 use crate::model::SpaceId;
 
+pub use corrections::{Correction, CorrectionState, CorrectionsKey, CorrectionResults};
 pub use error::StoreError;
 pub use schema::SCHEMA_VERSION;
 

@@ -11,6 +11,7 @@ use std::collections::BTreeMap;
 use rusqlite::{Connection, OptionalExtension, TransactionBehavior, params};
 
 use super::read::{REVISION_COLUMNS, latest, load_at, map_id, revision_info};
+use super::corrections::{CorrectionResults, record_results};
 use super::{ImportMeta, Imported, RevisionInfo, Store, StoreError, geometry_blob};
 use crate::diff::{MAX_MATCH_PAIRS, MatchParams, match_spaces_within};
 use crate::model::{Connection as Link, Nrg, Space, SpaceId};
@@ -50,6 +51,32 @@ impl Store {
         meta: ImportMeta,
         grid: Option<&crate::grid::OccupancyGrid>,
     ) -> Result<Imported, StoreError> {
+        self.import_inner(map, nrg, meta, grid, None)
+    }
+
+    /// [`Store::import_with_grid`] of a model the map's corrections were
+    /// applied to, recording each one's result with the revision; refused
+    /// with [`StoreError::Stale`] (nothing stored) when the corrections
+    /// changed since `reapplied` was computed.
+    pub fn import_corrected(
+        &mut self,
+        map: &str,
+        nrg: &Nrg,
+        meta: ImportMeta,
+        grid: Option<&crate::grid::OccupancyGrid>,
+        reapplied: &CorrectionResults,
+    ) -> Result<Imported, StoreError> {
+        self.import_inner(map, nrg, meta, grid, Some(reapplied))
+    }
+
+    fn import_inner(
+        &mut self,
+        map: &str,
+        nrg: &Nrg,
+        meta: ImportMeta,
+        grid: Option<&crate::grid::OccupancyGrid>,
+        reapplied: Option<&CorrectionResults>,
+    ) -> Result<Imported, StoreError> {
         check_map_name(map)?;
         check_meta(&meta)?;
         let grid = grid.map(super::grids::encode_grid).transpose()?;
@@ -68,7 +95,7 @@ impl Store {
                 hook();
             }
             let done = self
-                .commit_import(map, prepared, &meta, grid.as_ref())
+                .commit_import(map, prepared, &meta, grid.as_ref(), reapplied)
                 .map_err(|e| e.in_file(&self.path))?;
             if let Some(imported) = done {
                 return Ok(imported);
@@ -126,6 +153,7 @@ impl Store {
         prepared: PreparedImport,
         meta: &ImportMeta,
         grid: Option<&super::grids::EncodedGrid<'_>>,
+        reapplied: Option<&CorrectionResults>,
     ) -> Result<Option<Imported>, StoreError> {
         let tx = self
             .conn
@@ -161,6 +189,9 @@ impl Store {
         )?;
         if let Some(grid) = grid {
             super::grids::insert_grid(&tx, map_id, revision.seq, grid)?;
+        }
+        if let Some(reapplied) = reapplied {
+            record_results(&tx, map, map_id, revision.seq, reapplied)?;
         }
         tx.commit()?;
         Ok(Some(Imported {
@@ -287,7 +318,7 @@ fn check_map_name(name: &str) -> Result<(), StoreError> {
 }
 
 /// One above the largest space id the map ever used.
-fn next_space_id(conn: &Connection, map_id: i64) -> Result<u32, StoreError> {
+pub(super) fn next_space_id(conn: &Connection, map_id: i64) -> Result<u32, StoreError> {
     let max: Option<u32> = conn.query_row(
         "SELECT MAX(space_id) FROM spaces WHERE map_id = ?1",
         [map_id],
@@ -347,7 +378,7 @@ fn continue_identity(
 
 /// Writes `nrg` as revision `parent + 1` of the map, as a delta against
 /// the parent (whose open rows are exactly `parent`'s model).
-fn commit_revision(
+pub(super) fn commit_revision(
     conn: &Connection,
     map_id: i64,
     map: &str,

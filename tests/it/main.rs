@@ -15,6 +15,7 @@ mod support;
 
 mod demo;
 mod doorway_formats;
+mod corrections;
 mod edits;
 mod eval_loo;
 mod extract;

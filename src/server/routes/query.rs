@@ -76,6 +76,21 @@ impl Source for QuerySource<'_> {
         }
         <Store as Source>::rename_space(self.store, map, revision, id, name)
     }
+    fn edit(
+        &mut self,
+        map: &str,
+        revision: u64,
+        edit: &crate::edit::Edit,
+        statement: &str,
+    ) -> Result<crate::query::EditDone, SourceError> {
+        if !self.writable {
+            return Err(SourceError::Backend(
+                "a correction writes a revision: send 'Authorization: Bearer <token>' to a server started with --token"
+                    .into(),
+            ));
+        }
+        <Store as Source>::edit(self.store, map, revision, edit, statement)
+    }
 }
 
 fn result_json(result: Result<QueryResult, QueryError>) -> Value {

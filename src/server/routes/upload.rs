@@ -133,9 +133,16 @@ pub async fn upload(
                 prepared.grid.as_ref(),
             )?;
             let repairs: Vec<String> = prepared.repairs.iter().map(|r| r.to_string()).collect();
-            Ok((done.imported, prepared.weights_fixed.total(), repairs))
+            Ok((done, prepared.weights_fixed.total(), repairs))
         })
         .await?;
+    let corrections = json!({
+        "reapplied": done.corrections_applied.len(),
+        "failed": done.corrections_failed.iter().map(|(id, statement, reason)| {
+            json!({"id": id, "statement": statement, "reason": reason})
+        }).collect::<Vec<_>>(),
+    });
+    let done = done.imported;
     let info = &done.revision;
     // Stable ids: a space continuing one of the parent keeps its id, new
     // spaces get fresh ones; clients map their ids with this.
@@ -153,6 +160,7 @@ pub async fn upload(
             "ids": ids,
             "weights_fixed": weights_fixed,
             "repairs": repairs,
+            "corrections": corrections,
         })),
     )
         .into_response();

@@ -1,7 +1,12 @@
-//! The store as the query engine's [`Source`]: queries, `USE` and `NAME …
-//! AS …` run against SQLite revisions.
+//! The store as the query engine's [`Source`]: queries, `USE`, `NAME …
+//! AS …` and the corrections run against SQLite revisions. It sits here,
+//! above the store, because a correction is written through the one edit
+//! path ([`super::edit`]: connection lengths walked on the navigation
+//! layer, the correction kept), which the store must not know about.
 
-use super::{ImportMeta, Store, StoreError};
+use crate::edit::Edit;
+use crate::query::EditDone;
+use crate::store::{ImportMeta, Store, StoreError};
 use crate::grid::OccupancyGrid;
 use crate::model::{Nrg, SpaceId};
 use crate::query::{MapInfo, RevisionInfo, Source, SourceError};
@@ -82,5 +87,33 @@ impl Source for Store {
         let meta = ImportMeta::new(format!("name space {id} \"{name}\""), "nrgdb query");
         let info = Store::rename_space(self, map, id, Some(name), meta).map_err(to_source)?;
         Ok(u64::from(info.seq))
+    }
+
+    fn edit(
+        &mut self,
+        map: &str,
+        revision: u64,
+        edit: &Edit,
+        statement: &str,
+    ) -> Result<EditDone, SourceError> {
+        let latest = Store::revision(self, map, None).map_err(to_source)?.seq;
+        if revision != u64::from(latest) {
+            return Err(SourceError::NotLatest {
+                map: map.to_string(),
+                revision,
+                latest: u64::from(latest),
+            });
+        }
+        let meta = ImportMeta::new(statement, "nrgdb query");
+        match super::edit(self, map, edit, statement, meta) {
+            Ok(done) => Ok(EditDone {
+                revision: u64::from(done.revision.seq),
+                correction: Some(done.correction),
+                created: done.created,
+                removed: done.removed,
+            }),
+            Err(super::CorrectError::Edit(e)) => Err(SourceError::Edit(e)),
+            Err(super::CorrectError::Store(e)) => Err(to_source(e)),
+        }
     }
 }
