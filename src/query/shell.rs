@@ -21,6 +21,11 @@ statements end with ';' and may span lines; -- starts a comment
   USE m [AT REVISION n]    NAME a AS \"Kitchen\"
   DIFF r1 r2               (what changed from revision r1 to r2 of the map)
   EXPLAIN <statement>
+corrections (each a new revision, kept and re-applied when the map is re-imported):
+  MERGE a, b [, ...] [AS \"Lobby\"]
+  SPLIT a ALONG (x1, y1) TO (x2, y2) [WITH DOOR (x, y) [WIDTH w]]
+  ADD DOOR BETWEEN a AND b AT (x, y) [WIDTH w]    REMOVE DOOR d
+  SET a KIND room|corridor|other    SET a ATTRIBUTE key = value    UNSET a ATTRIBUTE key
 a reference is an id (12, room 12), a \"name\" or a point (x, y) in metres
 commands: \\help  \\timing (toggle)  \\json  \\csv  \\table  \\quit";
 
@@ -128,7 +133,9 @@ impl Vocabulary {
             self.spaces.iter().collect()
         };
         let keywords = KEYWORDS.iter().map(|k| k.to_string());
-        let candidates = if wants_map {
+        // Inside quotes only names complete, not keywords.
+        let quoted = line[start..pos].starts_with('"');
+        let candidates = if wants_map || quoted {
             words.into_iter().cloned().collect::<Vec<_>>()
         } else {
             keywords.chain(words.into_iter().cloned()).collect()
