@@ -63,6 +63,9 @@ pub enum DemoError {
     /// A query failed.
     #[error(transparent)]
     Query(#[from] crate::query::QueryError),
+    /// The demo's correction was refused.
+    #[error(transparent)]
+    Correction(#[from] crate::ingest::CorrectError),
     /// Writing IndoorGML failed.
     #[error(transparent)]
     IndoorGml(#[from] crate::indoorgml::IndoorGmlError),
@@ -139,6 +142,23 @@ pub fn run(opts: &DemoOptions, out: &mut dyn Write) -> Result<(), DemoError> {
     let door = route.doors.first().copied().ok_or(DemoError::NoRoute)?;
     let stable = |id: SpaceId| rev_a.ids.get(&id).copied().unwrap_or(id);
 
+    // A correction people make on the first revision: the destination
+    // room is staff-only. It is kept as a rule and re-applied when the
+    // re-mapped revision comes in below.
+    let staff = crate::edit::Edit::SetAttribute {
+        space: stable(to),
+        key: "access".into(),
+        value: serde_json::json!("staff only"),
+    };
+    let statement = format!("SET space {} ATTRIBUTE access = \"staff only\"", stable(to));
+    let corrected = crate::ingest::edit(
+        &mut store,
+        &opts.map,
+        &staff,
+        &statement,
+        meta("demo: a correction"),
+    )?;
+
     // Shut that door in the map: its pixels become wall; re-extract.
     let mut shut = grid.clone();
     for (i, label) in first.labels.data.iter().enumerate() {
@@ -148,22 +168,34 @@ pub fn run(opts: &DemoOptions, out: &mut dyn Write) -> Result<(), DemoError> {
         }
     }
     let second = extract(&shut, &params)?;
-    let rev_b = crate::ingest::ingest(
+    let remapped = crate::ingest::ingest(
         &mut store,
         &opts.map,
         &second.nrg,
         meta(&format!("demo: door {} shut", stable(door))),
         None,
-    )?
-    .imported;
+    )?;
+    let rev_b = remapped.imported;
     let (a, b) = (rev_a.revision.seq, rev_b.revision.seq);
+    let kept = store
+        .load(&opts.map, Some(b))?
+        .spaces()
+        .iter()
+        .filter(|s| s.attributes.get("access") == Some(&serde_json::json!("staff only")))
+        .map(|s| s.id.to_string())
+        .collect::<Vec<_>>();
     say(
         out,
         format!(
-            "3. stored revisions {a} and {b} (door {} shut) of map '{}' in {}",
+            "3. stored revisions {a} and {b} (door {} shut) of map '{}' in {}; revision {} is correction {} ({statement}), re-applied to the re-mapped revision {b}: {} re-applied, {} failed; staff-only there: space {}",
             stable(door),
             opts.map,
-            opts.db.display()
+            opts.db.display(),
+            corrected.revision.seq,
+            corrected.correction,
+            remapped.corrections_applied.len(),
+            remapped.corrections_failed.len(),
+            kept.join(", ")
         ),
     )?;
 

@@ -115,7 +115,8 @@ pub fn ingest(
                     corrections_failed: failed
                         .into_iter()
                         .filter_map(|(id, r)| {
-                            let statement = corrections.iter().find(|c| c.id == id)?.statement.clone();
+                            let statement =
+                                corrections.iter().find(|c| c.id == id)?.statement.clone();
                             r.err().map(|e| (id, statement, e))
                         })
                         .collect(),

@@ -43,15 +43,24 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     }
     let list = store.corrections(&args.map).into_diagnostic()?;
     if args.json {
-        writeln!(out, "{}", serde_json::to_string_pretty(&list).into_diagnostic()?).into_diagnostic()?;
+        writeln!(
+            out,
+            "{}",
+            serde_json::to_string_pretty(&list).into_diagnostic()?
+        )
+        .into_diagnostic()?;
         return Ok(ExitCode::SUCCESS);
     }
     if list.is_empty() {
         writeln!(out, "map '{}' has no corrections", args.map).into_diagnostic()?;
         return Ok(ExitCode::SUCCESS);
     }
-    writeln!(out, "{:>3}  {:<8} {:>5} {:>7}  {:<16} statement", "id", "state", "made", "checked", "author")
-        .into_diagnostic()?;
+    writeln!(
+        out,
+        "{:>3}  {:<8} {:>5} {:>7}  {:<16} statement",
+        "id", "state", "made", "checked", "author"
+    )
+    .into_diagnostic()?;
     for c in &list {
         writeln!(
             out,
@@ -64,7 +73,11 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
             c.statement
         )
         .into_diagnostic()?;
-        if let Some(reason) = c.reason.as_deref().filter(|_| c.state == nrgdb::store::CorrectionState::Failed) {
+        if let Some(reason) = c
+            .reason
+            .as_deref()
+            .filter(|_| c.state == nrgdb::store::CorrectionState::Failed)
+        {
             writeln!(out, "     no longer applies: {reason}").into_diagnostic()?;
         }
     }

@@ -68,14 +68,28 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
 
 /// Says how many of the map's corrections were applied again, and which
 /// no longer applied.
-pub(super) fn report_corrections(done: &nrgdb::ingest::Ingested, out: &mut dyn Write) -> miette::Result<()> {
-    let (applied, failed) = (done.corrections_applied.len(), done.corrections_failed.len());
+pub(super) fn report_corrections(
+    done: &nrgdb::ingest::Ingested,
+    out: &mut dyn Write,
+) -> miette::Result<()> {
+    let (applied, failed) = (
+        done.corrections_applied.len(),
+        done.corrections_failed.len(),
+    );
     if applied + failed == 0 {
         return Ok(());
     }
-    writeln!(out, "corrections: {applied} re-applied, {failed} no longer apply").into_diagnostic()?;
+    writeln!(
+        out,
+        "corrections: {applied} re-applied, {failed} no longer apply"
+    )
+    .into_diagnostic()?;
     for (id, statement, reason) in &done.corrections_failed {
-        writeln!(out, "  correction {id} ({statement}) no longer applies: {reason}").into_diagnostic()?;
+        writeln!(
+            out,
+            "  correction {id} ({statement}) no longer applies: {reason}"
+        )
+        .into_diagnostic()?;
     }
     Ok(())
 }

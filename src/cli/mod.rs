@@ -13,6 +13,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 
+mod corrections;
 mod db;
 mod diff;
 pub mod eval;
@@ -20,7 +21,6 @@ pub mod eval_loo;
 mod export;
 pub mod extract;
 mod import;
-mod corrections;
 mod map_log;
 mod maps;
 mod model_file;

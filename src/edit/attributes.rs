@@ -35,7 +35,9 @@ pub(super) fn set_attribute(
         return Err(bad("the name is empty"));
     }
     if key.chars().count() > MAX_KEY_CHARS {
-        return Err(bad(&format!("names are at most {MAX_KEY_CHARS} characters")));
+        return Err(bad(&format!(
+            "names are at most {MAX_KEY_CHARS} characters"
+        )));
     }
     if key.chars().any(char::is_control) {
         return Err(bad("the name contains control characters"));
@@ -67,7 +69,11 @@ pub(super) fn set_attribute(
     })
 }
 
-fn replace(nrg: &Nrg, id: SpaceId, change: impl FnOnce(&mut crate::model::Space)) -> Result<Edited, EditError> {
+fn replace(
+    nrg: &Nrg,
+    id: SpaceId,
+    change: impl FnOnce(&mut crate::model::Space),
+) -> Result<Edited, EditError> {
     let (mut spaces, connections) = nrg.clone().into_parts();
     if let Some(s) = spaces.iter_mut().find(|s| s.id == id) {
         change(s);

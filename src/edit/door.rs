@@ -28,7 +28,10 @@ pub(super) fn add_door(
     let sa = nrg.space(a).ok_or(EditError::UnknownSpace(a))?;
     let sb = nrg.space(b).ok_or(EditError::UnknownSpace(b))?;
     if a == b {
-        return Err(EditError::BadDoorSides(format!("both sides are {}", sa.label())));
+        return Err(EditError::BadDoorSides(format!(
+            "both sides are {}",
+            sa.label()
+        )));
     }
     for s in [sa, sb] {
         if s.kind == SpaceKind::Door {
@@ -82,8 +85,14 @@ pub(super) fn add_door(
     let new_b = cut_out(sb, &rect).map_err(|pieces| broken(sb, pieces))?;
     let mut door = Space::new(id, SpaceKind::Door, centre, open_rectangle(&rect));
     door.doorway = Some([
-        [centre[0] - tangent[0] * width / 2.0, centre[1] - tangent[1] * width / 2.0],
-        [centre[0] + tangent[0] * width / 2.0, centre[1] + tangent[1] * width / 2.0],
+        [
+            centre[0] - tangent[0] * width / 2.0,
+            centre[1] - tangent[1] * width / 2.0,
+        ],
+        [
+            centre[0] + tangent[0] * width / 2.0,
+            centre[1] + tangent[1] * width / 2.0,
+        ],
     ]);
     door.update_doorway();
     let mut spaces: Vec<Space> = nrg
@@ -135,8 +144,16 @@ pub(super) fn remove_door(nrg: &Nrg, door: SpaceId) -> Result<Edited, EditError>
             kind: space.kind.to_string(),
         });
     }
-    let sides: Vec<SpaceId> = nrg.connections_of(door).filter_map(|c| c.other(door)).collect();
-    let spaces: Vec<Space> = nrg.spaces().iter().filter(|s| s.id != door).cloned().collect();
+    let sides: Vec<SpaceId> = nrg
+        .connections_of(door)
+        .filter_map(|c| c.other(door))
+        .collect();
+    let spaces: Vec<Space> = nrg
+        .spaces()
+        .iter()
+        .filter(|s| s.id != door)
+        .cloned()
+        .collect();
     let mut connections: Vec<_> = nrg
         .connections()
         .iter()

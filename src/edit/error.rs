@@ -158,7 +158,9 @@ pub enum EditError {
         kind: String,
     },
     /// A kind change to or from a door.
-    #[error("{0}: a door stays a door and other spaces do not become doors (use ADD DOOR and REMOVE DOOR)")]
+    #[error(
+        "{0}: a door stays a door and other spaces do not become doors (use ADD DOOR and REMOVE DOOR)"
+    )]
     DoorKind(String),
     /// An attribute name or value out of bounds.
     #[error("attribute {key:?}: {reason}")]

@@ -181,7 +181,10 @@ impl Edit {
     /// A short description naming the spaces by their labels in `nrg`
     /// ("merge of Lobby and Hall").
     pub fn describe(&self, nrg: &Nrg) -> String {
-        let label = |id: SpaceId| nrg.space(id).map_or_else(|| format!("space {id}"), |s| s.label());
+        let label = |id: SpaceId| {
+            nrg.space(id)
+                .map_or_else(|| format!("space {id}"), |s| s.label())
+        };
         match self {
             Edit::Merge { spaces, .. } => format!("merge of {}", wording_list(spaces, label)),
             Edit::Split { space, .. } => format!("split of {}", label(*space)),

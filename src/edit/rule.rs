@@ -143,7 +143,11 @@ fn find(nrg: &Nrg, f: &Footprint) -> Result<SpaceId, String> {
     let mut best: Option<(f64, SpaceId)> = None;
     let mut pieces = 0;
     let mut inside: Option<String> = None;
-    for s in nrg.spaces().iter().filter(|s| (s.kind == SpaceKind::Door) == f.door) {
+    for s in nrg
+        .spaces()
+        .iter()
+        .filter(|s| (s.kind == SpaceKind::Door) == f.door)
+    {
         let other = to_polygon(&s.polygon);
         let near = match (other.bounding_rect(), bounds) {
             (Some(x), Some(y)) => x.intersects(&y),
@@ -167,7 +171,10 @@ fn find(nrg: &Nrg, f: &Footprint) -> Result<SpaceId, String> {
     }
     match (best, inside) {
         (Some((_, id)), _) => Ok(id),
-        (None, Some(larger)) => Err(format!("{} is now part of a larger space ({larger})", f.label)),
+        (None, Some(larger)) => Err(format!(
+            "{} is now part of a larger space ({larger})",
+            f.label
+        )),
         (None, None) if pieces >= 2 => Err(format!("{} was split", f.label)),
         (None, None) => Err(format!("{} is no longer in the map", f.label)),
     }
@@ -205,7 +212,11 @@ fn renamed(nrg: &Nrg, id: SpaceId, name: Option<&str>) -> Result<Edited, EditErr
 
 fn to_polygon(ring: &[Point]) -> Polygon {
     Polygon::new(
-        LineString::new(ring.iter().map(|p| geo::Coord { x: p[0], y: p[1] }).collect()),
+        LineString::new(
+            ring.iter()
+                .map(|p| geo::Coord { x: p[0], y: p[1] })
+                .collect(),
+        ),
         vec![],
     )
 }

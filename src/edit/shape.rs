@@ -121,7 +121,11 @@ pub(super) fn link(spaces: &[Space], a: SpaceId, b: SpaceId, kind: ConnectionKin
 
 /// `connections` with every length that touches a space in `moved`
 /// recomputed as the straight line between anchors.
-pub(super) fn relength(spaces: &[Space], connections: Vec<Connection>, moved: &[SpaceId]) -> Vec<Connection> {
+pub(super) fn relength(
+    spaces: &[Space],
+    connections: Vec<Connection>,
+    moved: &[SpaceId],
+) -> Vec<Connection> {
     connections
         .into_iter()
         .map(|c| {
@@ -158,7 +162,9 @@ pub(super) fn finite(points: &[Point], what: &'static str) -> Result<(), super::
 pub(super) fn door_width(width_m: Option<f64>) -> Result<f64, super::EditError> {
     let w = width_m.unwrap_or(super::DEFAULT_DOOR_WIDTH_M);
     if !w.is_finite() {
-        return Err(super::EditError::NotFinite { what: "the door width" });
+        return Err(super::EditError::NotFinite {
+            what: "the door width",
+        });
     }
     if !(super::MIN_DOOR_WIDTH_M..=super::MAX_DOOR_WIDTH_M).contains(&w) {
         return Err(super::EditError::DoorWidth {

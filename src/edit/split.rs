@@ -8,11 +8,12 @@
 use geo::{Distance, Euclidean};
 
 use super::shape::{
-    cut_out, distance, door_width, finite, link, polygon, rectangle, reanchored, relength,
+    cut_out, distance, door_width, finite, link, polygon, reanchored, rectangle, relength,
 };
 use super::{DOOR_DEPTH_M, EditError, Edited, NewDoor};
 use crate::model::{
     ConnectionKind, Nrg, Point, Ring, Space, SpaceId, SpaceKind, point_in_ring, polygon_area,
+    segment_distance,
 };
 
 /// Shortest split line, metres.
@@ -23,6 +24,8 @@ const MIN_PIECE_M2: f64 = 0.01;
 const MAX_DOOR_OFF_M: f64 = 0.3;
 /// Two spaces closer than this (metres) touch.
 const TOUCH_M: f64 = 1e-6;
+/// A point this close (metres) to an outline lies on it.
+const CONTACT_M: f64 = 1e-7;
 
 /// `id` cut along `line`; see [`super::Edit::Split`].
 pub(super) fn split(
@@ -73,14 +76,26 @@ pub(super) fn split(
     let mut created = vec![small.id];
     let mut door_space = None;
     if let Some(d) = door {
-        let made = lay_door(space, &big, &small, cut, d, SpaceId(next_id.0.saturating_add(1)))?;
+        let made = lay_door(
+            space,
+            &big,
+            &small,
+            cut,
+            d,
+            SpaceId(next_id.0.saturating_add(1)),
+        )?;
         big = made.0;
         small = made.1;
         created.push(made.2.id);
         door_space = Some(made.2);
     }
 
-    let mut spaces: Vec<Space> = nrg.spaces().iter().filter(|s| s.id != id).cloned().collect();
+    let mut spaces: Vec<Space> = nrg
+        .spaces()
+        .iter()
+        .filter(|s| s.id != id)
+        .cloned()
+        .collect();
     spaces.push(big.clone());
     spaces.push(small.clone());
     let mut connections = Vec::new();
@@ -93,20 +108,41 @@ pub(super) fn split(
         let Some(neighbour) = nrg.space(other) else {
             continue;
         };
-        let shape = polygon(neighbour);
-        let (to_big, to_small) = (
-            Euclidean.distance(&shape, &big_shape),
-            Euclidean.distance(&shape, &small_shape),
-        );
-        let nearest = to_big.min(to_small);
-        // A door joins one piece; anything else every piece it reaches as
-        // closely as the nearest.
-        let both = neighbour.kind != SpaceKind::Door && (to_big - to_small).abs() <= TOUCH_M;
-        if both || to_big <= nearest {
-            connections.push(crate::model::Connection { a: big.id, b: other, ..c.clone() });
+        let touching = c.kind != ConnectionKind::Adjacent;
+        let (big_contact, small_contact) = (contact(neighbour, &big), contact(neighbour, &small));
+        let (to_big, to_small) = if touching && big_contact.max(small_contact) >= 2 {
+            // Along a shared edge (two or more points in common), not
+            // at a corner: the piece with the longer contact is nearer.
+            let rank = |n: usize| if n >= 2 { -(n as f64) } else { f64::INFINITY };
+            (rank(big_contact), rank(small_contact))
+        } else {
+            let shape = polygon(neighbour);
+            (
+                Euclidean.distance(&shape, &big_shape),
+                Euclidean.distance(&shape, &small_shape),
+            )
+        };
+        // A door joins one piece; anything else every piece it reaches
+        // as closely as the nearest (a corridor along both).
+        let both = neighbour.kind != SpaceKind::Door
+            && if touching {
+                big_contact >= 2 && small_contact >= 2
+            } else {
+                (to_big - to_small).abs() <= TOUCH_M
+            };
+        if both || to_big <= to_small {
+            connections.push(crate::model::Connection {
+                a: big.id,
+                b: other,
+                ..c.clone()
+            });
         }
-        if both || (to_small < to_big) {
-            connections.push(crate::model::Connection { a: small.id, b: other, ..c.clone() });
+        if both || to_small < to_big {
+            connections.push(crate::model::Connection {
+                a: small.id,
+                b: other,
+                ..c.clone()
+            });
         }
     }
     match &door_space {
@@ -132,11 +168,15 @@ fn cut_ring(space: &Space, line: [Point; 2]) -> Result<(Ring, Ring, [Point; 2]),
     let ring = &space.polygon;
     let label = || space.label();
     for hole in &space.holes {
-        if !crossings(hole, line).map_err(|()| EditError::LineCrossesHole { label: label() })?.is_empty() {
+        if !crossings(hole, line)
+            .map_err(|()| EditError::LineCrossesHole { label: label() })?
+            .is_empty()
+        {
             return Err(EditError::LineCrossesHole { label: label() });
         }
     }
-    let hits = crossings(ring, line).map_err(|()| EditError::LineAlongOutline { label: label() })?;
+    let hits =
+        crossings(ring, line).map_err(|()| EditError::LineAlongOutline { label: label() })?;
     if hits.len() != 2 {
         return Err(EditError::LineDoesNotCross {
             label: label(),
@@ -144,7 +184,10 @@ fn cut_ring(space: &Space, line: [Point; 2]) -> Result<(Ring, Ring, [Point; 2]),
         });
     }
     let (h0, h1) = (hits[0], hits[1]);
-    let mid = [(h0.point[0] + h1.point[0]) / 2.0, (h0.point[1] + h1.point[1]) / 2.0];
+    let mid = [
+        (h0.point[0] + h1.point[0]) / 2.0,
+        (h0.point[1] + h1.point[1]) / 2.0,
+    ];
     if !point_in_ring(mid, ring) {
         return Err(EditError::LineDoesNotCross {
             label: label(),
@@ -226,8 +269,17 @@ fn crossings(ring: &[Point], line: [Point; 2]) -> Result<Vec<Hit>, ()> {
         let t = (ap[0] * e[1] - ap[1] * e[0]) / denom;
         let u = (ap[0] * d[1] - ap[1] * d[0]) / denom;
         if (0.0..=1.0).contains(&t) && (0.0..1.0).contains(&u) {
-            let point = if u == 0.0 { a } else { [p[0] + d[0] * t, p[1] + d[1] * t] };
-            hits.push(Hit { t, edge: i, along: u, point });
+            let point = if u == 0.0 {
+                a
+            } else {
+                [p[0] + d[0] * t, p[1] + d[1] * t]
+            };
+            hits.push(Hit {
+                t,
+                edge: i,
+                along: u,
+                point,
+            });
         }
     }
     hits.sort_by(|x, y| x.t.total_cmp(&y.t));
@@ -248,7 +300,10 @@ fn lay_door(
     finite(&[door.at], "the door position")?;
     let width = door_width(door.width_m)?;
     let length = distance(cut[0], cut[1]);
-    let t = [(cut[1][0] - cut[0][0]) / length, (cut[1][1] - cut[0][1]) / length];
+    let t = [
+        (cut[1][0] - cut[0][0]) / length,
+        (cut[1][1] - cut[0][1]) / length,
+    ];
     let along = (door.at[0] - cut[0][0]) * t[0] + (door.at[1] - cut[0][1]) * t[1];
     let off = ((door.at[0] - cut[0][0]) * -t[1] + (door.at[1] - cut[0][1]) * t[0]).abs();
     if off > MAX_DOOR_OFF_M || along < 0.0 || along > length {
@@ -296,4 +351,31 @@ fn broken(space: &Space, pieces: usize) -> EditError {
         label: space.label(),
         pieces,
     }
+}
+
+/// How many distinct points of `a`'s and `b`'s outlines lie on the other's
+/// outline: two or more for spaces sharing an edge, one for spaces
+/// touching at a corner.
+fn contact(a: &Space, b: &Space) -> usize {
+    let rings = |s: &Space| -> Vec<Ring> {
+        std::iter::once(s.polygon.clone())
+            .chain(s.holes.iter().cloned())
+            .collect()
+    };
+    let (ra, rb) = (rings(a), rings(b));
+    let on = |p: Point, rings: &[Ring]| {
+        rings.iter().any(|r| {
+            (0..r.len()).any(|i| segment_distance(p, r[i], r[(i + 1) % r.len()]) <= CONTACT_M)
+        })
+    };
+    let mut points: Vec<Point> = ra
+        .iter()
+        .flatten()
+        .filter(|p| on(**p, &rb))
+        .chain(rb.iter().flatten().filter(|p| on(**p, &ra)))
+        .copied()
+        .collect();
+    points.sort_by(|x, y| x[0].total_cmp(&y[0]).then(x[1].total_cmp(&y[1])));
+    points.dedup_by(|x, y| (x[0] - y[0]).hypot(x[1] - y[1]) <= CONTACT_M);
+    points.len()
 }

@@ -39,7 +39,12 @@ pub(super) fn no_new_findings(before: &Nrg, edited: &Edited) -> Result<(), EditE
         .map(|s| s.id)
         .collect();
     let found = |nrg: &Nrg| -> Result<BTreeSet<String>, EditError> {
-        let spaces: Vec<Space> = nrg.spaces().iter().filter(|s| ids.contains(&s.id)).cloned().collect();
+        let spaces: Vec<Space> = nrg
+            .spaces()
+            .iter()
+            .filter(|s| ids.contains(&s.id))
+            .cloned()
+            .collect();
         let part = Nrg::new(spaces, vec![])?;
         Ok(crate::indoorgml::check(&crate::indoorgml::from_nrg(&part))
             .into_iter()
@@ -47,7 +52,10 @@ pub(super) fn no_new_findings(before: &Nrg, edited: &Edited) -> Result<(), EditE
             .collect())
     };
     let old = found(before)?;
-    let new: Vec<String> = found(&edited.nrg)?.into_iter().filter(|m| !old.contains(m)).collect();
+    let new: Vec<String> = found(&edited.nrg)?
+        .into_iter()
+        .filter(|m| !old.contains(m))
+        .collect();
     if new.is_empty() {
         Ok(())
     } else {
@@ -58,7 +66,19 @@ pub(super) fn no_new_findings(before: &Nrg, edited: &Edited) -> Result<(), EditE
 /// `[min x, min y, max x, max y]` of the space's shell.
 fn bounds(s: &Space) -> [f64; 4] {
     s.polygon.iter().fold(
-        [f64::INFINITY, f64::INFINITY, f64::NEG_INFINITY, f64::NEG_INFINITY],
-        |b, p| [b[0].min(p[0]), b[1].min(p[1]), b[2].max(p[0]), b[3].max(p[1])],
+        [
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ],
+        |b, p| {
+            [
+                b[0].min(p[0]),
+                b[1].min(p[1]),
+                b[2].max(p[0]),
+                b[3].max(p[1]),
+            ]
+        },
     )
 }

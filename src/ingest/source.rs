@@ -5,11 +5,11 @@
 //! layer, the correction kept), which the store must not know about.
 
 use crate::edit::Edit;
-use crate::query::EditDone;
-use crate::store::{ImportMeta, Store, StoreError};
 use crate::grid::OccupancyGrid;
 use crate::model::{Nrg, SpaceId};
+use crate::query::EditDone;
 use crate::query::{MapInfo, RevisionInfo, Source, SourceError};
+use crate::store::{ImportMeta, Store, StoreError};
 
 fn to_source(e: StoreError) -> SourceError {
     match e {

@@ -135,8 +135,15 @@ pub enum EditStatement {
 impl fmt::Display for EditStatement {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let point = |p: &[f64; 2]| format!("({}, {})", number(p[0]), number(p[1]));
-        let key = |k: &str| if is_identifier(k) { k.to_string() } else { quote(k) };
-        let width = |w: &Option<f64>| w.map_or_else(String::new, |w| format!(" WIDTH {}", number(w)));
+        let key = |k: &str| {
+            if is_identifier(k) {
+                k.to_string()
+            } else {
+                quote(k)
+            }
+        };
+        let width =
+            |w: &Option<f64>| w.map_or_else(String::new, |w| format!(" WIDTH {}", number(w)));
         match self {
             EditStatement::Merge { spaces, name } => {
                 let list: Vec<String> = spaces.iter().map(ToString::to_string).collect();
@@ -147,14 +154,24 @@ impl fmt::Display for EditStatement {
                 Ok(())
             }
             EditStatement::Split { space, line, door } => {
-                write!(f, "SPLIT {space} ALONG {} TO {}", point(&line[0]), point(&line[1]))?;
+                write!(
+                    f,
+                    "SPLIT {space} ALONG {} TO {}",
+                    point(&line[0]),
+                    point(&line[1])
+                )?;
                 if let Some((at, w)) = door {
                     write!(f, " WITH DOOR {}{}", point(at), width(w))?;
                 }
                 Ok(())
             }
             EditStatement::AddDoor { a, b, at, width: w } => {
-                write!(f, "ADD DOOR BETWEEN {a} AND {b} AT {}{}", point(at), width(w))
+                write!(
+                    f,
+                    "ADD DOOR BETWEEN {a} AND {b} AT {}{}",
+                    point(at),
+                    width(w)
+                )
             }
             EditStatement::RemoveDoor(d) => write!(f, "REMOVE DOOR {d}"),
             EditStatement::SetKind(s, k) => write!(f, "SET {s} KIND {k}"),

@@ -50,7 +50,9 @@ pub enum SourceError {
     #[error(transparent)]
     Edit(#[from] crate::edit::EditError),
     /// A write aimed at a revision that is not the map's latest.
-    #[error("revision {revision} is not the latest of '{map}' ({latest}); corrections apply to the latest: USE {map} first")]
+    #[error(
+        "revision {revision} is not the latest of '{map}' ({latest}); corrections apply to the latest: USE {map} first"
+    )]
     NotLatest {
         /// The map.
         map: String,

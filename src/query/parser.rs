@@ -422,10 +422,13 @@ impl Parser {
                 let space = self.space_ref()?;
                 if self.eat_word("KIND") {
                     let t = self.peek().clone();
-                    let kind = t.text.parse::<SpaceKind>().map_err(|message| QueryError::Syntax {
-                        span: t.span,
-                        message,
-                    })?;
+                    let kind =
+                        t.text
+                            .parse::<SpaceKind>()
+                            .map_err(|message| QueryError::Syntax {
+                                span: t.span,
+                                message,
+                            })?;
                     self.pos += 1;
                     EditStatement::SetKind(space, kind)
                 } else {

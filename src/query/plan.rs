@@ -142,7 +142,10 @@ fn resolve_edit(m: &IndexedRevision, e: &EditStatement) -> Result<crate::edit::E
     use crate::edit::{Edit, NewDoor};
     Ok(match e {
         EditStatement::Merge { spaces, name } => Edit::Merge {
-            spaces: spaces.iter().map(|r| m.resolve(r)).collect::<Result<_, _>>()?,
+            spaces: spaces
+                .iter()
+                .map(|r| m.resolve(r))
+                .collect::<Result<_, _>>()?,
             name: name.clone(),
         },
         EditStatement::Split { space, line, door } => Edit::Split {
@@ -156,7 +159,9 @@ fn resolve_edit(m: &IndexedRevision, e: &EditStatement) -> Result<crate::edit::E
             at: *at,
             width_m: *width,
         },
-        EditStatement::RemoveDoor(d) => Edit::RemoveDoor { door: m.resolve(d)? },
+        EditStatement::RemoveDoor(d) => Edit::RemoveDoor {
+            door: m.resolve(d)?,
+        },
         EditStatement::SetKind(s, kind) => Edit::SetKind {
             space: m.resolve(s)?,
             kind: *kind,

@@ -168,9 +168,9 @@ impl<S: Source> Session<S> {
                 let done = self.source.edit(&map, old, edit, statement)?;
                 self.use_map(&map, Some(done.revision))?;
                 let what = edit.describe(&before);
-                let kept = done
-                    .correction
-                    .map_or_else(String::new, |c| format!("; kept as correction {c}, re-applied at every import"));
+                let kept = done.correction.map_or_else(String::new, |c| {
+                    format!("; kept as correction {c}, re-applied at every import")
+                });
                 let made = if done.created.is_empty() {
                     String::new()
                 } else {

@@ -5,8 +5,8 @@ use std::collections::BTreeMap;
 
 use super::error::SourceError;
 use super::suggest::suggest;
-use crate::grid::OccupancyGrid;
 use crate::edit::Edit;
+use crate::grid::OccupancyGrid;
 use crate::model::{Nrg, SpaceId};
 
 /// A map and how many revisions it has.
@@ -236,7 +236,12 @@ impl Source for MemorySource {
         }
         let nrg = &self.revision(map, revision)?.nrg;
         // New spaces take ids above any the map ever used.
-        let next = self.map(map)?.iter().map(|s| s.nrg.next_id()).max().unwrap_or(SpaceId(1));
+        let next = self
+            .map(map)?
+            .iter()
+            .map(|s| s.nrg.next_id())
+            .max()
+            .unwrap_or(SpaceId(1));
         let done = crate::edit::apply(nrg, edit, next)?;
         let walked = crate::route::walked_model(&done.nrg).nrg;
         let note = format!("{statement} (on revision {revision})");

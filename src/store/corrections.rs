@@ -241,7 +241,11 @@ fn key(conn: &Connection, map_id: i64) -> Result<CorrectionsKey, StoreError> {
     )?)
 }
 
-fn read_corrections(conn: &Connection, map_id: i64, map: &str) -> Result<Vec<Correction>, StoreError> {
+fn read_corrections(
+    conn: &Connection,
+    map_id: i64,
+    map: &str,
+) -> Result<Vec<Correction>, StoreError> {
     let mut stmt = conn.prepare_cached(&format!(
         "SELECT {COLUMNS} FROM corrections WHERE map_id = ?1 ORDER BY id"
     ))?;
@@ -261,7 +265,8 @@ fn read_corrections(conn: &Connection, map_id: i64, map: &str) -> Result<Vec<Cor
     })?;
     let mut out = Vec::new();
     for row in rows {
-        let (id, made_on, created_at, author, statement, rule, state, reason, checked_on, dropped) = row?;
+        let (id, made_on, created_at, author, statement, rule, state, reason, checked_on, dropped) =
+            row?;
         let rule: Rule = serde_json::from_str(&rule).map_err(|e| StoreError::BadCorrection {
             map: map.to_string(),
             id,

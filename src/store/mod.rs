@@ -45,7 +45,7 @@ use sha2::{Digest, Sha256};
 use crate::diff::MatchParams;
 use crate::model::SpaceId;
 
-pub use corrections::{Correction, CorrectionState, CorrectionsKey, CorrectionResults};
+pub use corrections::{Correction, CorrectionResults, CorrectionState, CorrectionsKey};
 pub use error::StoreError;
 pub use schema::SCHEMA_VERSION;
 

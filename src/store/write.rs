@@ -10,8 +10,8 @@ use std::collections::BTreeMap;
 
 use rusqlite::{Connection, OptionalExtension, TransactionBehavior, params};
 
-use super::read::{REVISION_COLUMNS, latest, load_at, map_id, revision_info};
 use super::corrections::{CorrectionResults, record_results};
+use super::read::{REVISION_COLUMNS, latest, load_at, map_id, revision_info};
 use super::{ImportMeta, Imported, RevisionInfo, Store, StoreError, geometry_blob};
 use crate::diff::{MAX_MATCH_PAIRS, MatchParams, match_spaces_within};
 use crate::model::{Connection as Link, Nrg, Space, SpaceId};

@@ -61,7 +61,10 @@ fn without(nrg: &Nrg, gone: &[u32]) -> Nrg {
     let keep = |id: SpaceId| !gone.contains(&id.0);
     Nrg::new(
         spaces.into_iter().filter(|s| keep(s.id)).collect(),
-        connections.into_iter().filter(|c| keep(c.a) && keep(c.b)).collect(),
+        connections
+            .into_iter()
+            .filter(|c| keep(c.a) && keep(c.b))
+            .collect(),
     )
     .unwrap()
 }
@@ -76,7 +79,14 @@ fn containing(nrg: &Nrg, p: [f64; 2]) -> Vec<SpaceId> {
 
 fn corrected_store() -> Store {
     let mut store = Store::open_in_memory().unwrap();
-    ingest(&mut store, "lab", &corridor_building(4), meta("mapped"), None).unwrap();
+    ingest(
+        &mut store,
+        "lab",
+        &corridor_building(4),
+        meta("mapped"),
+        None,
+    )
+    .unwrap();
     for (text, revision) in [
         ("ADD DOOR BETWEEN 10 AND 11 AT (4, 4) WIDTH 1.0", 2),
         ("MERGE 10, 11 AS \"Lab\"", 3),
@@ -94,9 +104,16 @@ fn corrected_store() -> Store {
 fn edits_write_revisions_and_are_kept_as_corrections() {
     let store = corrected_store();
     let latest = store.load("lab", None).unwrap();
-    let lab = latest.spaces().iter().find(|s| s.name.as_deref() == Some("Lab")).unwrap();
+    let lab = latest
+        .spaces()
+        .iter()
+        .find(|s| s.name.as_deref() == Some("Lab"))
+        .unwrap();
     assert!(point_in_ring([2.0, 4.0], &lab.polygon) && point_in_ring([6.0, 4.0], &lab.polygon));
-    assert_eq!(latest.space(SpaceId(12)).unwrap().attributes["restricted"], serde_json::json!(true));
+    assert_eq!(
+        latest.space(SpaceId(12)).unwrap().attributes["restricted"],
+        serde_json::json!(true)
+    );
     let corridors: Vec<f64> = latest
         .spaces()
         .iter()
@@ -117,7 +134,10 @@ fn edits_write_revisions_and_are_kept_as_corrections() {
 fn report(done: &Ingested) -> (Vec<u32>, Vec<(u32, String)>) {
     (
         done.corrections_applied.clone(),
-        done.corrections_failed.iter().map(|(id, _, r)| (*id, r.clone())).collect(),
+        done.corrections_failed
+            .iter()
+            .map(|(id, _, r)| (*id, r.clone()))
+            .collect(),
     )
 }
 
@@ -130,16 +150,33 @@ fn a_remapped_revision_keeps_every_correction() {
     assert_eq!(report(&done), (vec![1, 2, 3, 4], vec![]));
     let latest = store.load("lab", None).unwrap();
     let lab = containing(&latest, [2.0, 4.0]);
-    assert_eq!(lab, containing(&latest, [6.0, 4.0]), "rooms 10 and 11 are one again");
+    assert_eq!(
+        lab,
+        containing(&latest, [6.0, 4.0]),
+        "rooms 10 and 11 are one again"
+    );
     let lab = latest.space(lab[0]).unwrap();
     assert_eq!(lab.name.as_deref(), Some("Lab"));
     let restricted = latest.space(containing(&latest, [10.0, 4.0])[0]).unwrap();
     assert_eq!(restricted.attributes["restricted"], serde_json::json!(true));
-    assert_ne!(containing(&latest, [6.0, 1.0]), containing(&latest, [6.4, 1.0]), "corridor split at 6.2");
+    assert_ne!(
+        containing(&latest, [6.0, 1.0]),
+        containing(&latest, [6.4, 1.0]),
+        "corridor split at 6.2"
+    );
     // Identity carried across: the lab keeps the id it had.
     let before = store.load("lab", Some(5)).unwrap();
-    assert_eq!(containing(&before, [2.0, 4.0]), containing(&latest, [2.0, 4.0]));
-    assert!(store.corrections("lab").unwrap().iter().all(|c| c.checked_on == 6));
+    assert_eq!(
+        containing(&before, [2.0, 4.0]),
+        containing(&latest, [2.0, 4.0])
+    );
+    assert!(
+        store
+            .corrections("lab")
+            .unwrap()
+            .iter()
+            .all(|c| c.checked_on == 6)
+    );
 }
 
 #[test]
@@ -151,11 +188,21 @@ fn a_change_that_breaks_one_correction_reports_that_one() {
     let done = ingest(&mut store, "lab", &fresh, meta("room 12 walled off"), None).unwrap();
     let (applied, failed) = report(&done);
     assert_eq!(applied, vec![1, 2, 4]);
-    assert_eq!(failed, vec![(3, "room 12 is no longer in the map".to_string())]);
-    assert!(done.corrections_failed[0].1.contains("SET space 12 ATTRIBUTE restricted = TRUE"));
+    assert_eq!(
+        failed,
+        vec![(3, "room 12 is no longer in the map".to_string())]
+    );
+    assert!(
+        done.corrections_failed[0]
+            .1
+            .contains("SET space 12 ATTRIBUTE restricted = TRUE")
+    );
     let list = store.corrections("lab").unwrap();
     assert_eq!(list[2].state, CorrectionState::Failed);
-    assert_eq!(list[2].reason.as_deref(), Some("room 12 is no longer in the map"));
+    assert_eq!(
+        list[2].reason.as_deref(),
+        Some("room 12 is no longer in the map")
+    );
     // Dropped, it is no longer tried.
     let dropped = store.drop_correction("lab", 3).unwrap();
     assert_eq!(dropped.state, CorrectionState::Dropped);
@@ -172,7 +219,10 @@ fn refused_edits_store_nothing_and_say_why() {
         ("MERGE 12, 13", "do not touch"),
         ("MERGE 12, 99", "99"),
         ("REMOVE DOOR 12", "not a door"),
-        ("ADD DOOR BETWEEN 12 AND 13 AT (12, 4) WIDTH 90", "doors are 0.3 to 5 m wide"),
+        (
+            "ADD DOOR BETWEEN 12 AND 13 AT (12, 4) WIDTH 90",
+            "doors are 0.3 to 5 m wide",
+        ),
         ("SPLIT 13 ALONG (13, 4) TO (14, 4)", "does not cut"),
         ("SET 13 KIND door", "a door stays a door"),
         ("UNSET 13 ATTRIBUTE nothing", "no such attribute"),

@@ -17,7 +17,9 @@ fn demo_runs_end_to_end_and_writes_valid_indoorgml() {
     for want in [
         "simulated building",
         "extracted the NRG",
-        "stored revisions 1 and 2",
+        "stored revisions 1 and 3",
+        "is correction 1 (SET space",
+        "1 re-applied, 0 failed",
         "route 1:",
         "removed",
         "building.gml",
@@ -32,7 +34,7 @@ fn demo_runs_end_to_end_and_writes_valid_indoorgml() {
         "truth.json",
         "building.gml",
         "building-rev1.png",
-        "building-rev2.png",
+        "building-rev3.png",
     ] {
         assert!(demo.join(file).is_file(), "{file} not written");
     }
@@ -77,11 +79,11 @@ fn issue_21_paper_cut_demo_draws_each_revision_and_says_which() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(
         stdout.contains("building-rev1.png (revision 1, as mapped)")
-            && stdout.contains("building-rev2.png (revision 2, door"),
+            && stdout.contains("building-rev3.png (revision 3, door"),
         "{stdout}"
     );
     let demo = dir.path().join("nrgdb-demo");
     let a = std::fs::read(demo.join("building-rev1.png")).unwrap();
-    let b = std::fs::read(demo.join("building-rev2.png")).unwrap();
+    let b = std::fs::read(demo.join("building-rev3.png")).unwrap();
     assert_ne!(a, b, "the two revisions look the same");
 }

@@ -13,10 +13,11 @@ mod sim;
 mod sim_accuracy;
 mod support;
 
+mod corrections;
 mod demo;
 mod doorway_formats;
-mod corrections;
 mod edits;
+mod edits_props;
 mod eval_loo;
 mod extract;
 mod extract_doors;
