@@ -25,6 +25,11 @@ pub struct Args {
     /// Commit message recorded with the revision.
     #[arg(short, long, default_value = "applied a change set")]
     pub message: String,
+    /// When NAME@REV is not the latest revision: carry the change over
+    /// onto the latest instead of refusing (conflicts are reported and
+    /// nothing is stored).
+    #[arg(long)]
+    pub rebase: bool,
     /// Author recorded with the revision [default: $USER].
     #[arg(long, env = "NRGDB_AUTHOR")]
     pub author: Option<String>,
@@ -42,13 +47,46 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         .into_diagnostic()
         .wrap_err_with(|| format!("{}: not a change set", args.changes.display()))?;
     let mut store = args.db.open()?;
+    let latest = store
+        .revision(&map, None)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("loading {}", args.map))?
+        .seq;
+    let base_seq = rev.unwrap_or(latest);
+    // A change set computed from a stored revision names it; applying it
+    // to another would put its changes on the wrong model.
+    if let Some((from_map, from_rev)) = changes.from.as_deref().and_then(|f| f.rsplit_once('@'))
+        && let Ok(from_rev) = from_rev.parse::<u32>()
+        && (from_map != map || from_rev != base_seq)
+    {
+        miette::bail!(
+            "{} was computed from {from_map}@{from_rev}, not {map}@{base_seq}; nothing was stored",
+            args.changes.display()
+        );
+    }
     let base = store
-        .load(&map, rev)
+        .load(&map, Some(base_seq))
         .into_diagnostic()
         .wrap_err_with(|| format!("loading {}", args.map))?;
-    let result = apply(&base, &changes)
+    let mut result = apply(&base, &changes)
         .into_diagnostic()
         .wrap_err_with(|| format!("applying {} to {}", args.changes.display(), args.map))?;
+    if base_seq != latest {
+        if !args.rebase {
+            miette::bail!(
+                "{map}@{base_seq} is not the latest revision ({latest}): storing the change on it would undo revisions {} to {latest}; pass --rebase to carry it over onto {map}@{latest}; nothing was stored",
+                base_seq + 1
+            );
+        }
+        let now = store.load(&map, Some(latest)).into_diagnostic()?;
+        result = nrgdb::diff::rebase(&base, &result, &now).map_err(|conflicts| {
+            miette::miette!(
+                "cannot carry the change from {map}@{base_seq} over onto {map}@{latest}; nothing was stored:\n  {}",
+                conflicts.join("\n  ")
+            )
+        })?;
+        writeln!(out, "rebased from {map}@{base_seq} onto {map}@{latest}").into_diagnostic()?;
+    }
     let name = args.changes.file_name().map_or_else(
         || args.changes.display().to_string(),
         |n| n.to_string_lossy().into_owned(),
@@ -59,6 +97,10 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         .into_diagnostic()
         .wrap_err_with(|| format!("storing the result in map '{map}'"))?;
     let r = &done.imported.revision;
+    if done.imported.unchanged {
+        writeln!(out, "nothing changed: {}@{} already is the result", r.map, r.seq).into_diagnostic()?;
+        return Ok(ExitCode::SUCCESS);
+    }
     writeln!(
         out,
         "{}@{}: {} spaces ({} new, {} changed, {} gone), {} connections",

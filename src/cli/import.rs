@@ -56,6 +56,16 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     spinner.finish_and_clear();
     report_fixes(&model.weights_fixed, out)?;
     let r = &done.imported.revision;
+    if done.imported.unchanged {
+        writeln!(
+            out,
+            "nothing changed: the model is {}@{} exactly; no revision was written",
+            r.map, r.seq
+        )
+        .into_diagnostic()?;
+        report_corrections(&done, out)?;
+        return Ok(ExitCode::SUCCESS);
+    }
     writeln!(
         out,
         "{}@{}: {} spaces ({} new, {} changed, {} gone), {} connections",

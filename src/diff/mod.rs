@@ -44,6 +44,7 @@ mod matching;
 mod overlap_area;
 mod overlaps;
 mod params;
+mod rebase;
 mod report;
 mod split_merge;
 mod transform;
@@ -62,6 +63,7 @@ pub use matching::{
     match_spaces_within, overlap_iou, overlaps,
 };
 pub use overlaps::Overlaps;
+pub use rebase::rebase;
 pub use params::{AlignMode, AlignParams, DiffOptions, DiffParams, MatchParams};
 pub use report::ChangeRow;
 pub use transform::RigidTransform;

@@ -173,8 +173,11 @@ pub struct RevisionInfo {
 /// The result of [`Store::import`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Imported {
-    /// The new revision.
+    /// The new revision, or the latest one when nothing changed.
     pub revision: RevisionInfo,
+    /// Whether the model was the latest revision's exactly, so that no
+    /// revision was written ("nothing changed").
+    pub unchanged: bool,
     /// Stable id given to each space of the imported model (input id →
     /// stored id).
     pub ids: BTreeMap<SpaceId, SpaceId>,

@@ -179,6 +179,23 @@ impl Store {
                 tx.last_insert_rowid()
             }
         };
+        // The same model again (a map re-imported unchanged): no revision.
+        if let Some((seq, _)) = prepared.parent.as_ref().filter(|(_, p)| same_model(p, &prepared.stable)) {
+            if let Some(reapplied) = reapplied {
+                record_results(&tx, map, map_id, *seq, reapplied)?;
+            }
+            let revision = tx.query_row(
+                &format!("SELECT {REVISION_COLUMNS} FROM revisions WHERE map_id = ?1 AND seq = ?2"),
+                params![map_id, seq],
+                |r| revision_info(map, r),
+            )?;
+            tx.commit()?;
+            return Ok(Some(Imported {
+                revision,
+                unchanged: true,
+                ids: prepared.ids,
+            }));
+        }
         let revision = commit_revision(
             &tx,
             map_id,
@@ -196,6 +213,7 @@ impl Store {
         tx.commit()?;
         Ok(Some(Imported {
             revision,
+            unchanged: false,
             ids: prepared.ids,
         }))
     }
@@ -514,6 +532,15 @@ fn insert_space(conn: &Connection, map_id: i64, seq: u32, s: &Space) -> Result<(
     Ok(())
 }
 
+/// Whether two models store the same rows: every space and connection
+/// equal bit for bit.
+fn same_model(a: &Nrg, b: &Nrg) -> bool {
+    a.spaces().len() == b.spaces().len()
+        && a.connections().len() == b.connections().len()
+        && a.spaces().iter().zip(b.spaces()).all(|(x, y)| same_space(x, y))
+        && a.connections().iter().zip(b.connections()).all(|(x, y)| same_link(x, y))
+}
+
 /// Bit-exact equality of what a space row stores (see [`Space::same_but_id`]).
 fn same_space(a: &Space, b: &Space) -> bool {
     a.id == b.id && a.same_but_id(b)
@@ -621,8 +648,12 @@ mod tests {
     fn issue_21_defect_3_a_map_that_keeps_changing_fails_clearly() {
         let (_dir, path, mut store) = store_with_map();
         let mut other = impatient_writer(&path);
+        let mut dx = 0.0;
         store.before_write_lock = Some(Box::new(move || {
-            other.import("m", &rooms(4, 0.1), meta()).unwrap();
+            // A different model each time (the same one again would
+            // write nothing).
+            dx += 0.1;
+            other.import("m", &rooms(4, dx), meta()).unwrap();
         }));
         let e = store.import("m", &rooms(4, 0.5), meta()).unwrap_err();
         assert!(
@@ -708,5 +739,29 @@ mod tests {
         for bad in ["", "  ", "a@b", "x\ny"] {
             assert!(check_map_name(bad).is_err(), "{bad:?}");
         }
+    }
+}
+
+#[cfg(test)]
+mod unchanged_tests {
+    use super::*;
+    use crate::store::ImportMeta;
+
+    /// Issue 22: re-importing the latest revision's model writes nothing
+    /// and says so; a different one writes the next revision.
+    #[test]
+    fn an_identical_import_makes_no_revision() {
+        let mut store = Store::open_in_memory().unwrap();
+        let nrg = crate::fixtures::corridor_building(3);
+        let first = store.import("m", &nrg, ImportMeta::new("a", "me")).unwrap();
+        assert!(!first.unchanged);
+        let again = store.import("m", &nrg, ImportMeta::new("b", "me")).unwrap();
+        assert!(again.unchanged);
+        assert_eq!(again.revision.seq, 1);
+        assert_eq!(store.revisions("m").unwrap().len(), 1);
+        let other = crate::fixtures::corridor_building(4);
+        let next = store.import("m", &other, ImportMeta::new("c", "me")).unwrap();
+        assert!(!next.unchanged);
+        assert_eq!(next.revision.seq, 2);
     }
 }

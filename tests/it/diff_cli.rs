@@ -73,21 +73,27 @@ fn diff_apply_and_update_through_the_store() {
         cs.spaces.iter().filter(|e| e.new.is_some()).count()
     );
 
-    let (code, out, err) = run(dir, &["apply", "floor@1", "cs.json", "--db", "db.sqlite"]);
-    assert_eq!(code, 0, "{err}");
-    assert!(out.starts_with("floor@3:"), "{out}");
-    for (rev, file) in [("floor@2", "r2.json"), ("floor@3", "r3.json")] {
-        let (code, _, err) = run(dir, &["export", rev, "-o", file, "--db", "db.sqlite"]);
-        assert_eq!(code, 0, "{err}");
-    }
-    assert_eq!(
-        std::fs::read_to_string(dir.join("r2.json")).unwrap(),
-        std::fs::read_to_string(dir.join("r3.json")).unwrap()
+    // Issue 22: applying to a revision that is not the latest would undo
+    // the later ones; it is refused, and --rebase carries the change over
+    // (here revision 2 already is the result: nothing to store).
+    let (code, _, err) = run(dir, &["apply", "floor@1", "cs.json", "--db", "db.sqlite"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("not the latest revision (2)") && err.contains("--rebase"), "{err}");
+    let (code, out, err) = run(
+        dir,
+        &["apply", "floor@1", "cs.json", "--rebase", "--db", "db.sqlite"],
     );
-    // Applying to the wrong base is refused.
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("rebased from floor@1 onto floor@2"), "{out}");
+    assert!(out.contains("nothing changed"), "{out}");
+    let (code, out, _) = run(dir, &["revisions", "floor", "--db", "db.sqlite"]);
+    assert_eq!(code, 0);
+    let revs: Vec<&str> = out.lines().skip(1).filter_map(|l| l.split_whitespace().next()).collect();
+    assert_eq!(revs, ["1", "2"], "{out}");
+    // A change set computed from another revision is refused by name.
     let (code, _, err) = run(dir, &["apply", "floor@2", "cs.json", "--db", "db.sqlite"]);
     assert_eq!(code, 2);
-    assert!(err.contains("does not fit this model"), "{err}");
+    assert!(err.contains("computed from floor@1, not floor@2"), "{err}");
     let (code, _, err) = run(dir, &["diff", "floor", "1", "9", "--db", "db.sqlite"]);
     assert_eq!(code, 2);
     assert!(err.contains("revision 9"), "{err}");

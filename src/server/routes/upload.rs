@@ -144,6 +144,11 @@ pub async fn upload(
     });
     let done = done.imported;
     let info = &done.revision;
+    let status = if done.unchanged {
+        StatusCode::OK
+    } else {
+        StatusCode::CREATED
+    };
     // Stable ids: a space continuing one of the parent keeps its id, new
     // spaces get fresh ones; clients map their ids with this.
     let ids: serde_json::Map<String, serde_json::Value> = done
@@ -154,9 +159,10 @@ pub async fn upload(
     tracing::info!(map = %info.map, revision = info.seq, spaces = info.spaces, "revision uploaded");
     let location = format!("/maps/{}/revisions/{}/geojson", info.map, info.seq);
     let mut response = (
-        StatusCode::CREATED,
+        status,
         Json(json!({
             "revision": info,
+            "unchanged": done.unchanged,
             "ids": ids,
             "weights_fixed": weights_fixed,
             "repairs": repairs,
