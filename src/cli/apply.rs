@@ -98,7 +98,12 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         .wrap_err_with(|| format!("storing the result in map '{map}'"))?;
     let r = &done.imported.revision;
     if done.imported.unchanged {
-        writeln!(out, "nothing changed: {}@{} already is the result", r.map, r.seq).into_diagnostic()?;
+        writeln!(
+            out,
+            "nothing changed: {}@{} already is the result",
+            r.map, r.seq
+        )
+        .into_diagnostic()?;
         return Ok(ExitCode::SUCCESS);
     }
     writeln!(

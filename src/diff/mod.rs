@@ -63,7 +63,7 @@ pub use matching::{
     match_spaces_within, overlap_iou, overlaps,
 };
 pub use overlaps::Overlaps;
-pub use rebase::rebase;
 pub use params::{AlignMode, AlignParams, DiffOptions, DiffParams, MatchParams};
+pub use rebase::rebase;
 pub use report::ChangeRow;
 pub use transform::RigidTransform;

@@ -58,11 +58,17 @@ pub fn rebase(base: &Nrg, changed: &Nrg, latest: &Nrg) -> Result<Nrg, Vec<String
     }
     let key = |c: &Connection| c.key();
     let links = |nrg: &Nrg| -> BTreeMap<(SpaceId, SpaceId), Connection> {
-        nrg.connections().iter().map(|c| (key(c), c.clone())).collect()
+        nrg.connections()
+            .iter()
+            .map(|c| (key(c), c.clone()))
+            .collect()
     };
     let (base_links, changed_links, mut out_links) = (links(base), links(changed), links(latest));
-    let keys: BTreeSet<(SpaceId, SpaceId)> =
-        base_links.keys().chain(changed_links.keys()).copied().collect();
+    let keys: BTreeSet<(SpaceId, SpaceId)> = base_links
+        .keys()
+        .chain(changed_links.keys())
+        .copied()
+        .collect();
     for k in keys {
         let (b, c) = (base_links.get(&k), changed_links.get(&k));
         if same_link(b, c) {

@@ -20,6 +20,9 @@ pub enum Statement {
         via: Vec<SpaceRef>,
         /// Excluded spaces.
         avoid: Vec<SpaceRef>,
+        /// `AVOID WHERE …`: spaces excluded by a condition (e.g. an
+        /// attribute a correction set: `attr.restricted = TRUE`).
+        avoid_where: Option<Condition>,
         /// Number of routes, if given.
         alternatives: Option<u32>,
         /// `WITH …` options of the walker.
@@ -364,6 +367,7 @@ impl fmt::Display for Statement {
                 to,
                 via,
                 avoid,
+                avoid_where,
                 alternatives,
                 with,
             } => {
@@ -371,8 +375,14 @@ impl fmt::Display for Statement {
                 if !via.is_empty() {
                     write!(f, " VIA {}", list(via))?;
                 }
+                if !avoid.is_empty() || avoid_where.is_some() {
+                    f.write_str(" AVOID")?;
+                }
                 if !avoid.is_empty() {
-                    write!(f, " AVOID {}", list(avoid))?;
+                    write!(f, " {}", list(avoid))?;
+                }
+                if let Some(c) = avoid_where {
+                    write!(f, " WHERE {c}")?;
                 }
                 if let Some(k) = alternatives {
                     write!(f, " ALTERNATIVES {k}")?;

@@ -489,11 +489,15 @@ impl Parser {
         } else {
             Vec::new()
         };
-        let avoid = if self.eat_word("AVOID") {
-            self.ref_list()?
-        } else {
-            Vec::new()
-        };
+        let (mut avoid, mut avoid_where) = (Vec::new(), None);
+        if self.eat_word("AVOID") {
+            if !self.at_word("WHERE") {
+                avoid = self.ref_list()?;
+            }
+            if self.eat_word("WHERE") {
+                avoid_where = Some(self.or()?);
+            }
+        }
         let alternatives = if self.eat_word("ALTERNATIVES") {
             let span = self.peek().span;
             let k = self.integer()?;
@@ -513,6 +517,7 @@ impl Parser {
             to,
             via,
             avoid,
+            avoid_where,
             alternatives,
             with,
         })
@@ -912,6 +917,7 @@ mod tests {
     #[test]
     fn statements_round_trip() {
         let text = "ROUTE FROM room 3 TO \"Lounge\" VIA (1.5, 2.0), 7 AVOID door 4 ALTERNATIVES 2;\
+            ROUTE FROM 1 TO 2 AVOID WHERE attr.restricted = TRUE; ROUTE FROM 1 TO 2 AVOID 5 WHERE kind = door;\
             NEIGHBORS OF space 1 DEPTH 2; FIND doors WHERE NOT (width < 1 OR attr.\"a b\" = NULL) \
             AND name LIKE 'K%' ORDER BY area DESC, id LIMIT 3; LOCATE (1, -2); \
             REACHABLE FROM 1 WITHIN 10; SHOW MAPS; SHOW REVISIONS OF \"willow-full\"; \
@@ -922,7 +928,7 @@ mod tests {
             SET \"Hall\" ATTRIBUTE restricted = TRUE; SET 3 ATTRIBUTE \"opening hours\" = \"8-18\"; \
             SET 3 ATTRIBUTE capacity = 12; UNSET 3 ATTRIBUTE restricted";
         let parsed = parse(text).unwrap();
-        assert_eq!(parsed.len(), 22);
+        assert_eq!(parsed.len(), 24);
         for s in &parsed {
             assert_eq!(&parse_statement(&s.to_string()).unwrap(), s, "{s}");
         }

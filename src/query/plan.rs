@@ -74,21 +74,39 @@ pub fn plan(
             to,
             via,
             avoid,
+            avoid_where,
             alternatives,
             with,
         } => {
             let m = model()?;
-            let resolve = |refs: &[SpaceRef]| -> Result<Vec<SpaceId>, QueryError> {
-                refs.iter().map(|r| m.resolve(r)).collect()
-            };
+            let (from, to) = (endpoint(m, from)?, endpoint(m, to)?);
+            let mut avoid: Vec<SpaceId> = avoid
+                .iter()
+                .map(|r| m.resolve(r))
+                .collect::<Result<_, _>>()?;
+            if let Some(cond) = avoid_where {
+                // The route's own ends are never avoided.
+                let ends: Vec<SpaceId> = [&from, &to]
+                    .into_iter()
+                    .filter_map(|e| match e {
+                        Endpoint::Space(id) => Some(*id),
+                        _ => None,
+                    })
+                    .collect();
+                for s in m.nrg.spaces() {
+                    if !ends.contains(&s.id) && super::filter::matches(cond, s, m)? {
+                        avoid.push(s.id);
+                    }
+                }
+            }
             let ends = |refs: &[SpaceRef]| -> Result<Vec<Endpoint>, QueryError> {
                 refs.iter().map(|r| endpoint(m, r)).collect()
             };
             Plan::Route(RouteRequest {
-                from: endpoint(m, from)?,
-                to: endpoint(m, to)?,
+                from,
+                to,
                 via: ends(via)?,
-                avoid: resolve(avoid)?,
+                avoid,
                 alternatives: alternatives.unwrap_or(1).max(1) as usize,
                 profile: profile(with)?,
             })

@@ -149,7 +149,9 @@ mod tests {
             .import_with_grid("m", &nrg, ImportMeta::new("a", "b"), Some(&grid))
             .unwrap();
         let other = crate::fixtures::corridor_building(2);
-        store.import("m", &other, ImportMeta::new("c", "d")).unwrap();
+        store
+            .import("m", &other, ImportMeta::new("c", "d"))
+            .unwrap();
         assert_eq!(store.grid("m", Some(1)).unwrap(), Some(grid));
         assert_eq!(store.grid("m", None).unwrap(), None);
         assert!(store.grid("m", Some(3)).is_err());

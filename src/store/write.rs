@@ -180,7 +180,11 @@ impl Store {
             }
         };
         // The same model again (a map re-imported unchanged): no revision.
-        if let Some((seq, _)) = prepared.parent.as_ref().filter(|(_, p)| same_model(p, &prepared.stable)) {
+        if let Some((seq, _)) = prepared
+            .parent
+            .as_ref()
+            .filter(|(_, p)| same_model(p, &prepared.stable))
+        {
             if let Some(reapplied) = reapplied {
                 record_results(&tx, map, map_id, *seq, reapplied)?;
             }
@@ -537,8 +541,14 @@ fn insert_space(conn: &Connection, map_id: i64, seq: u32, s: &Space) -> Result<(
 fn same_model(a: &Nrg, b: &Nrg) -> bool {
     a.spaces().len() == b.spaces().len()
         && a.connections().len() == b.connections().len()
-        && a.spaces().iter().zip(b.spaces()).all(|(x, y)| same_space(x, y))
-        && a.connections().iter().zip(b.connections()).all(|(x, y)| same_link(x, y))
+        && a.spaces()
+            .iter()
+            .zip(b.spaces())
+            .all(|(x, y)| same_space(x, y))
+        && a.connections()
+            .iter()
+            .zip(b.connections())
+            .all(|(x, y)| same_link(x, y))
 }
 
 /// Bit-exact equality of what a space row stores (see [`Space::same_but_id`]).
@@ -760,7 +770,9 @@ mod unchanged_tests {
         assert_eq!(again.revision.seq, 1);
         assert_eq!(store.revisions("m").unwrap().len(), 1);
         let other = crate::fixtures::corridor_building(4);
-        let next = store.import("m", &other, ImportMeta::new("c", "me")).unwrap();
+        let next = store
+            .import("m", &other, ImportMeta::new("c", "me"))
+            .unwrap();
         assert!(!next.unchanged);
         assert_eq!(next.revision.seq, 2);
     }

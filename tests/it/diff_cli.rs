@@ -78,17 +78,31 @@ fn diff_apply_and_update_through_the_store() {
     // (here revision 2 already is the result: nothing to store).
     let (code, _, err) = run(dir, &["apply", "floor@1", "cs.json", "--db", "db.sqlite"]);
     assert_eq!(code, 2);
-    assert!(err.contains("not the latest revision (2)") && err.contains("--rebase"), "{err}");
+    assert!(
+        err.contains("not the latest revision (2)") && err.contains("--rebase"),
+        "{err}"
+    );
     let (code, out, err) = run(
         dir,
-        &["apply", "floor@1", "cs.json", "--rebase", "--db", "db.sqlite"],
+        &[
+            "apply",
+            "floor@1",
+            "cs.json",
+            "--rebase",
+            "--db",
+            "db.sqlite",
+        ],
     );
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("rebased from floor@1 onto floor@2"), "{out}");
     assert!(out.contains("nothing changed"), "{out}");
     let (code, out, _) = run(dir, &["revisions", "floor", "--db", "db.sqlite"]);
     assert_eq!(code, 0);
-    let revs: Vec<&str> = out.lines().skip(1).filter_map(|l| l.split_whitespace().next()).collect();
+    let revs: Vec<&str> = out
+        .lines()
+        .skip(1)
+        .filter_map(|l| l.split_whitespace().next())
+        .collect();
     assert_eq!(revs, ["1", "2"], "{out}");
     // A change set computed from another revision is refused by name.
     let (code, _, err) = run(dir, &["apply", "floor@2", "cs.json", "--db", "db.sqlite"]);

@@ -99,6 +99,7 @@ fn statement() -> impl Strategy<Value = Statement> {
         )
             .prop_map(
                 |(from, to, via, avoid, alternatives, with)| Statement::Route {
+                    avoid_where: None,
                     from,
                     to,
                     via,

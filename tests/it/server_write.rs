@@ -151,10 +151,13 @@ async fn upload_is_visible_to_the_next_request() {
         )
         .await;
     assert_eq!(r.status, 201, "{}", r.text());
+    let gml6 = nrgdb::indoorgml::write_string(&nrgdb::indoorgml::from_nrg(
+        &nrgdb::fixtures::corridor_building(6),
+    ));
     let body = multipart(
         "b0undary",
         &[
-            ("model", Some("floor.gml"), gml.as_bytes()),
+            ("model", Some("floor.gml"), gml6.as_bytes()),
             ("message", None, b"again"),
         ],
     );
@@ -170,7 +173,22 @@ async fn upload_is_visible_to_the_next_request() {
         .await;
     assert_eq!(r.status, 201, "{}", r.text());
     assert_eq!(r.json()["revision"]["message"], "again");
-    assert_eq!(r.json()["revision"]["spaces_changed"], 0);
+    assert_eq!(r.json()["revision"]["spaces_added"], 2);
+    let r = s
+        .post(
+            "/maps/other/revisions",
+            &[
+                ("Content-Type", "multipart/form-data; boundary=b0undary"),
+                AUTH,
+            ],
+            &body,
+        )
+        .await;
+    // The same building again (issue 22): nothing changed, no revision.
+    assert_eq!(r.status, 200, "{}", r.text());
+    assert_eq!(r.json()["unchanged"], true);
+    assert_eq!(r.json()["revision"]["seq"], 2);
+    assert_eq!(r.json()["corrections"]["reapplied"], 0);
     s.stop().await;
 }
 
@@ -333,6 +351,61 @@ async fn name_query_with_token_writes_a_revision() {
     assert_eq!(v["results"][0]["type"], "message", "{v}");
     assert_eq!(v["results"][1]["rows"][0]["id"], 11);
     assert_eq!(s.revision_count("building"), 2);
+    s.stop().await;
+}
+
+/// Issue 22: corrections go through `/query` with the token, write a
+/// revision each and are kept; a refused one says why and writes nothing;
+/// without the token nothing is written.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn corrections_through_query_need_the_token_and_are_kept() {
+    let s = TestServer::writable().await;
+    let r = s
+        .post(
+            "/query?map=building",
+            &[],
+            b"SET 11 ATTRIBUTE restricted = TRUE;",
+        )
+        .await;
+    assert_eq!(r.status, 401, "{}", r.text());
+    assert_eq!(s.revision_count("building"), 1);
+    let r = s
+        .post(
+            "/query?map=building",
+            &[AUTH],
+            b"SET 11 ATTRIBUTE restricted = TRUE; MERGE 11, 13; \
+              ADD DOOR BETWEEN 10 AND 11 AT (4, 4); ADD DOOR BETWEEN 11 AND 12 AT (8, 4); \
+              ROUTE FROM 10 TO 12; ROUTE FROM 10 TO 12 AVOID WHERE attr.restricted = TRUE;",
+        )
+        .await;
+    let v = r.json();
+    assert_eq!(v["results"][0]["type"], "message", "{v}");
+    assert!(
+        v["results"][0]["message"]
+            .as_str()
+            .unwrap()
+            .contains("kept as correction 1"),
+        "{v}"
+    );
+    assert_eq!(v["results"][1]["type"], "error", "{v}");
+    assert!(
+        v["results"][1]["message"]
+            .as_str()
+            .unwrap()
+            .contains("do not touch"),
+        "{v}"
+    );
+    // Through the new doors the way from 10 to 12 crosses room 11; once
+    // it is restricted, AVOID WHERE keeps the route in the corridor.
+    let through = |k: usize| {
+        v["results"][k]["routes"][0]["spaces"]
+            .as_array()
+            .unwrap()
+            .contains(&serde_json::json!(11))
+    };
+    assert!(through(4), "{v}");
+    assert!(!through(5), "{v}");
+    assert_eq!(s.revision_count("building"), 4);
     s.stop().await;
 }
 
