@@ -51,13 +51,25 @@ pub enum EditError {
     },
     /// A split line that does not enter and leave the outline once each.
     #[error(
-        "the line does not cut {label} in two: it crosses its outline {crossings} times (draw it from outside, across one part of the space, to outside)"
+        "the line does not cut {label} in two: it crosses its outline {crossings} times (draw it across one part of the space, from wall to wall; its ends may stop up to 1 m short of the walls)"
     )]
     LineDoesNotCross {
         /// The space.
         label: String,
         /// How often it crosses the outline.
         crossings: usize,
+    },
+    /// A split line whose middle is not in the space.
+    #[error(
+        "the line's middle ({x:.2}, {y:.2}) is not inside {label}; draw the line across the space"
+    )]
+    MiddleOutside {
+        /// The space.
+        label: String,
+        /// The middle.
+        x: f64,
+        /// The middle.
+        y: f64,
     },
     /// A split line that runs along the outline.
     #[error("the line runs along the outline of {label}; draw it across the space")]

@@ -24,6 +24,9 @@ const MIN_PIECE_M2: f64 = 0.01;
 const MAX_DOOR_OFF_M: f64 = 0.3;
 /// Two spaces closer than this (metres) touch.
 const TOUCH_M: f64 = 1e-6;
+/// How far (metres) a split line may stop short of the outline at
+/// either end: it is extended that far.
+const END_SLACK_M: f64 = 1.0;
 /// A point this close (metres) to an outline lies on it.
 const CONTACT_M: f64 = 1e-7;
 
@@ -167,32 +170,67 @@ pub(super) fn split(
 fn cut_ring(space: &Space, line: [Point; 2]) -> Result<(Ring, Ring, [Point; 2]), EditError> {
     let ring = &space.polygon;
     let label = || space.label();
+    // The line is read as drawn by hand: its ends may fall short of the
+    // outline (inside the space, at most END_SLACK_M from where it
+    // leaves); the cut is the piece of the extended line around the
+    // drawn line's middle, between the crossings on either side of it.
+    let length = distance(line[0], line[1]);
+    let d = [
+        (line[1][0] - line[0][0]) / length,
+        (line[1][1] - line[0][1]) / length,
+    ];
+    let long = [
+        [
+            line[0][0] - d[0] * END_SLACK_M,
+            line[0][1] - d[1] * END_SLACK_M,
+        ],
+        [
+            line[1][0] + d[0] * END_SLACK_M,
+            line[1][1] + d[1] * END_SLACK_M,
+        ],
+    ];
+    let total = length + 2.0 * END_SLACK_M;
+    let (start, end) = (END_SLACK_M / total, (END_SLACK_M + length) / total);
+    let hits =
+        crossings(ring, long).map_err(|()| EditError::LineAlongOutline { label: label() })?;
+    let drawn = hits.iter().filter(|h| (start..=end).contains(&h.t)).count();
+    let before = hits.iter().rev().find(|h| h.t < 0.5).copied();
+    let after = hits.iter().find(|h| h.t > 0.5).copied();
+    let middle = [
+        (line[0][0] + line[1][0]) / 2.0,
+        (line[0][1] + line[1][1]) / 2.0,
+    ];
+    let (Some(h0), Some(h1)) = (before, after) else {
+        return Err(EditError::LineDoesNotCross {
+            label: label(),
+            crossings: drawn,
+        });
+    };
+    // Crossings of the drawn line besides the cut's two: it would cut
+    // the space more than once.
+    let extra = hits
+        .iter()
+        .filter(|h| (start..=end).contains(&h.t) && h.t != h0.t && h.t != h1.t)
+        .count();
+    if !point_in_ring(middle, ring) {
+        return Err(EditError::MiddleOutside {
+            label: label(),
+            x: middle[0],
+            y: middle[1],
+        });
+    }
+    if extra > 0 {
+        return Err(EditError::LineDoesNotCross {
+            label: label(),
+            crossings: drawn,
+        });
+    }
     for hole in &space.holes {
-        if !crossings(hole, line)
-            .map_err(|()| EditError::LineCrossesHole { label: label() })?
-            .is_empty()
-        {
+        let inside = crossings(hole, [h0.point, h1.point])
+            .map_err(|()| EditError::LineCrossesHole { label: label() })?;
+        if !inside.is_empty() {
             return Err(EditError::LineCrossesHole { label: label() });
         }
-    }
-    let hits =
-        crossings(ring, line).map_err(|()| EditError::LineAlongOutline { label: label() })?;
-    if hits.len() != 2 {
-        return Err(EditError::LineDoesNotCross {
-            label: label(),
-            crossings: hits.len(),
-        });
-    }
-    let (h0, h1) = (hits[0], hits[1]);
-    let mid = [
-        (h0.point[0] + h1.point[0]) / 2.0,
-        (h0.point[1] + h1.point[1]) / 2.0,
-    ];
-    if !point_in_ring(mid, ring) {
-        return Err(EditError::LineDoesNotCross {
-            label: label(),
-            crossings: 0,
-        });
     }
     let n = ring.len();
     // Walk from crossing `from` along the ring to crossing `to`.

@@ -176,6 +176,28 @@ fn a_split_cuts_exactly_along_the_line_and_shares_the_cut() {
 }
 
 #[test]
+fn a_split_line_drawn_short_of_the_walls_still_cuts_wall_to_wall() {
+    let nrg = corridor_building(3);
+    // Drawn from 0.3 m inside the corridor's bottom to 0.4 m below its top.
+    let done = apply(
+        &nrg,
+        &Edit::Split {
+            space: id(1),
+            line: [[5.0, 0.3], [5.0, 1.6]],
+            door: None,
+        },
+        nrg.next_id(),
+    )
+    .unwrap();
+    let (big, small) = (
+        done.nrg.space(id(1)).unwrap(),
+        done.nrg.space(done.created[0]).unwrap(),
+    );
+    assert!((big.area_m2 - 14.0).abs() < 1e-9 && (small.area_m2 - 10.0).abs() < 1e-9);
+    checked(&done.nrg);
+}
+
+#[test]
 fn a_split_with_a_door_makes_a_wall_with_that_doorway() {
     let nrg = corridor_building(2);
     // Room 10 (x 0.1–3.9, y 2.2–7) cut at y = 5 with a 0.8 m door at x = 2.
@@ -244,10 +266,11 @@ fn refused_edits_say_why_and_change_nothing() {
             },
             "named twice",
         ),
+        // Inside room 10, more than 1 m from its walls at both ends.
         (
             Edit::Split {
-                space: id(1),
-                line: [[5.0, 0.5], [5.0, 1.5]],
+                space: id(10),
+                line: [[2.0, 4.0], [2.0, 5.0]],
                 door: None,
             },
             "crosses its outline 0 times",
@@ -255,10 +278,19 @@ fn refused_edits_say_why_and_change_nothing() {
         (
             Edit::Split {
                 space: id(1),
-                line: [[5.0, -1.0], [5.0, 1.0]],
+                line: [[5.0, -3.0], [5.0, 0.5]],
                 door: None,
             },
             "crosses its outline 1 times",
+        ),
+        // Across the corridor and on through the wall into room 11.
+        (
+            Edit::Split {
+                space: id(1),
+                line: [[5.0, -1.0], [5.0, 9.0]],
+                door: None,
+            },
+            "crosses its outline 2 times",
         ),
         (
             Edit::Split {
