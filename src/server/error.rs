@@ -199,7 +199,11 @@ impl From<StoreError> for ApiError {
             StoreError::TooManyOverlaps { .. } => ApiError::BadUpload(e.to_string()),
             // Another writer kept adding revisions while this import was
             // matched: retrying later is the answer, as for a held lock.
-            StoreError::Busy | StoreError::MapChanged { .. } => ApiError::Busy,
+            StoreError::NoSuchCorrection { .. } => ApiError::not_found("id", e.to_string()),
+            StoreError::CannotUndo { .. } => ApiError::bad("id", e.to_string()),
+            StoreError::Busy | StoreError::MapChanged { .. } | StoreError::Stale { .. } => {
+                ApiError::Busy
+            }
             other => ApiError::Internal(other.to_string()),
         }
     }

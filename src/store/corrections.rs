@@ -126,6 +126,51 @@ impl Store {
         }
     }
 
+    /// Undoes correction `id` of `map`, which must have made the map's
+    /// latest revision: writes a revision whose model is the one before
+    /// the edit and drops the correction, in one transaction. Returns the
+    /// new revision.
+    pub fn undo_correction(&mut self, map: &str, id: u32) -> Result<RevisionInfo, StoreError> {
+        self.undo_in_lock(map, id)
+            .map_err(|e| e.in_file(&self.path))
+    }
+
+    fn undo_in_lock(&mut self, map: &str, id: u32) -> Result<RevisionInfo, StoreError> {
+        let tx = self
+            .conn
+            .transaction_with_behavior(TransactionBehavior::Immediate)?;
+        let map_id = map_id(&tx, map)?;
+        let correction = read_corrections(&tx, map_id, map)?
+            .into_iter()
+            .find(|c| c.id == id)
+            .ok_or_else(|| StoreError::NoSuchCorrection {
+                map: map.to_string(),
+                id,
+            })?;
+        let seq = latest(&tx, map_id)?;
+        if correction.state == CorrectionState::Dropped || correction.made_on != seq || seq < 2 {
+            return Err(StoreError::CannotUndo {
+                map: map.to_string(),
+                id,
+                made_on: correction.made_on,
+                latest: seq,
+            });
+        }
+        let before = load_at(&tx, map_id, map, correction.made_on - 1)?;
+        let now = load_at(&tx, map_id, map, seq)?;
+        let meta = ImportMeta::new(
+            format!("undo: {}", correction.statement),
+            correction.author.clone(),
+        );
+        let info = commit_revision(&tx, map_id, map, Some(&(seq, now)), &before, &meta)?;
+        tx.execute(
+            "UPDATE corrections SET dropped_at = strftime('%Y-%m-%dT%H:%M:%fZ', 'now') WHERE map_id = ?1 AND id = ?2",
+            params![map_id, id],
+        )?;
+        tx.commit()?;
+        Ok(info)
+    }
+
     /// One above the largest space id `map` ever used (1 for a new map):
     /// the first id an edit may give a new space.
     pub fn next_space_id(&self, map: &str) -> Result<SpaceId, StoreError> {

@@ -132,6 +132,21 @@ pub enum StoreError {
         /// The number asked for.
         id: u32,
     },
+    /// A correction that is not the map's last edit (or already dropped)
+    /// cannot be undone.
+    #[error(
+        "correction {id} of map '{map}' made revision {made_on}, but the latest is {latest} (or it was dropped): only the last edit can be undone; drop it instead (nrgdb corrections {map} --drop {id})"
+    )]
+    CannotUndo {
+        /// The map.
+        map: String,
+        /// The correction.
+        id: u32,
+        /// The revision it made.
+        made_on: u32,
+        /// The latest revision.
+        latest: u32,
+    },
     /// Another writer changed the map (a revision or a correction) between
     /// reading it and writing; nothing was stored.
     #[error("map '{map}' changed while this change was being prepared; nothing was stored, retry")]

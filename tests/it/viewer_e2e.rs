@@ -358,3 +358,99 @@ async fn issue_21_paper_cut_viewer_says_the_map_or_revision_does_not_exist() {
     }
     server.stop().await;
 }
+
+/// The client coordinates of the map point `p` (metres) in the page.
+fn client_of(browser: &mut crate::viewer_cdp::Browser, p: [f64; 2]) -> (f64, f64) {
+    let v = browser.eval(&format!(
+        "(() => {{ const q = state.toPx([{}, {}]); const pt = state.svg.createSVGPoint(); \
+         pt.x = q[0]; pt.y = q[1]; const c = pt.matrixTransform(state.svg.getScreenCTM()); return [c.x, c.y]; }})()",
+        p[0], p[1]
+    ));
+    (v[0].as_f64().unwrap(), v[1].as_f64().unwrap())
+}
+
+/// Issue 22: the viewer's edit mode. With the token given once: pick two
+/// rooms and click the wall between them (a door), merge them, see a
+/// refused merge say why, and undo the last edit; each edit is a revision
+/// and the picture follows.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn viewer_edits_add_a_door_merge_refuse_and_undo() {
+    let Some(chromium) = chromium_or_skip() else {
+        return;
+    };
+    let server = TestServer::writable().await;
+    let url = format!("http://{}/?map=building", server.addr);
+    let chromium = chromium.to_string();
+    let outcome = tokio::task::spawn_blocking(move || {
+        let mut b = crate::viewer_cdp::Browser::start(&chromium);
+        b.call("Page.enable", serde_json::json!({}));
+        b.call("Page.navigate", serde_json::json!({ "url": url }));
+        let secs = Duration::from_secs(20);
+        assert!(b.wait_for("document.body && document.body.dataset.state === 'ready'", secs));
+        b.eval(&format!("document.getElementById('token').value = '{}'", crate::server_client::TOKEN));
+        let pick_two = |b: &mut crate::viewer_cdp::Browser, x: u32, y: u32| {
+            let (cx, cy) = centre_of(b, x);
+            b.click(cx, cy);
+            let (cx, cy) = centre_of(b, y);
+            b.click(cx, cy);
+            assert!(b.wait_for("document.body.dataset.state === 'route-drawn' || document.body.dataset.state === 'no-route'", secs));
+        };
+        let button = |b: &mut crate::viewer_cdp::Browser, id: &str| {
+            b.eval(&format!("document.getElementById('{id}').click()"));
+        };
+        let info = |b: &mut crate::viewer_cdp::Browser| b.eval("document.getElementById('edit-info').textContent").as_str().unwrap_or("").to_string();
+        let mut seen = Vec::new();
+        // A door through the wall at x = 4 between rooms 10 and 11.
+        pick_two(&mut b, 10, 11);
+        button(&mut b, "ed-door");
+        let (x, y) = client_of(&mut b, [4.0, 4.0]);
+        b.click(x, y);
+        assert!(b.wait_for("document.body.dataset.state === 'edited'", secs), "{}", info(&mut b));
+        seen.push((info(&mut b), b.eval("document.getElementById('rev').value").as_str().unwrap_or("").to_string()));
+        // Merge them.
+        pick_two(&mut b, 10, 11);
+        button(&mut b, "ed-merge");
+        assert!(b.wait_for("document.body.dataset.state === 'edited'", secs), "{}", info(&mut b));
+        let spaces_after_merge = b.eval("document.querySelectorAll('#stage .space[data-space=\"11\"]').length");
+        seen.push((info(&mut b), b.eval("document.getElementById('rev').value").as_str().unwrap_or("").to_string()));
+        // Rooms 12 and 14 do not touch: refused, with the reason.
+        pick_two(&mut b, 12, 14);
+        button(&mut b, "ed-merge");
+        assert!(b.wait_for("document.body.dataset.state === 'edit-refused'", secs));
+        seen.push((info(&mut b), String::new()));
+        // Undo the merge.
+        button(&mut b, "ed-undo");
+        assert!(b.wait_for("document.body.dataset.state === 'edited'", secs), "{}", info(&mut b));
+        seen.push((info(&mut b), b.eval("document.getElementById('rev').value").as_str().unwrap_or("").to_string()));
+        (seen, spaces_after_merge)
+    })
+    .await
+    .unwrap();
+    let (seen, spaces_after_merge) = outcome;
+    assert!(
+        seen[0].0.contains("door between Office 1 and room 11"),
+        "{seen:?}"
+    );
+    assert_eq!(seen[0].1, "2");
+    assert!(
+        seen[1].0.contains("merge of Office 1 and room 11"),
+        "{seen:?}"
+    );
+    assert_eq!(seen[1].1, "3");
+    assert_eq!(spaces_after_merge, 0, "room 11 still drawn after the merge");
+    assert!(seen[2].0.contains("do not touch"), "{seen:?}");
+    assert!(seen[3].0.contains("Undid correction 2"), "{seen:?}");
+    assert_eq!(seen[3].1, "4");
+    // Independent of the page: the store holds the revisions, the undo
+    // restored revision 2's model, and correction 2 is dropped.
+    let store = nrgdb::store::Store::open(&server.db).unwrap();
+    assert_eq!(store.revisions("building").unwrap().len(), 4);
+    assert_eq!(
+        store.load("building", Some(4)).unwrap(),
+        store.load("building", Some(2)).unwrap()
+    );
+    let corrections = store.corrections("building").unwrap();
+    assert_eq!(corrections.len(), 2);
+    assert_eq!(corrections[1].state, nrgdb::store::CorrectionState::Dropped);
+    server.stop().await;
+}

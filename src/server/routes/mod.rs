@@ -5,6 +5,7 @@
 //! [`ParamDoc`]) live in `server/endpoint.rs`, which the handlers and the
 //! OpenAPI builder import; nothing here is imported back by them.
 
+mod corrections;
 mod diff;
 mod maps;
 mod query;
@@ -46,6 +47,8 @@ pub fn endpoints() -> Vec<Endpoint> {
         ep(M::GET, "/maps/{map}/diff", "What changed between two revisions (spaces, connections, door widths), aligned when the frames differ", &diff::PARAMS, get(diff::diff)),
         ep(M::GET, "/", "The web viewer (one HTML page)", &[], get(crate::server::viewer::page)),
         ep(M::GET, "/maps/{map}/revisions/{rev}/svg", "A revision drawn as SVG, optionally with a route or a diff", &crate::server::viewer::SVG_PARAMS, get(crate::server::viewer::svg)),
+        ep(M::GET, "/maps/{map}/corrections", "The corrections kept with a map (MERGE, SPLIT, ADD DOOR, …) and their state at the last import", &[], get(corrections::list)),
+        ep(M::POST, "/maps/{map}/corrections/{id}/undo", "Undo the map's last edit: a revision restoring the model before it; needs the bearer token", &[], post(corrections::undo)),
         ep(M::POST, "/query", "Run query-language statements; JSON results", &query::PARAMS, post(query::query)),
     ]
 }
