@@ -68,6 +68,13 @@ impl Parser {
                 "DIFF demo@1 demo@1",
                 "LIKE '%_%_%'",
                 "NAME 3 AS ",
+                "MERGE 1, 2, 3 ",
+                "SPLIT 3 ALONG (1e308, -1e308) TO ",
+                "WITH DOOR (NaN, 0) WIDTH ",
+                "ADD DOOR BETWEEN 3 AND ",
+                "REMOVE DOOR ",
+                "SET 3 ATTRIBUTE ",
+                "UNSET 3 ATTRIBUTE ",
                 "USE nosuch;",
                 "@4294967295",
                 "FIND rooms WHERE ",
@@ -220,7 +227,7 @@ impl Parser {
 }
 
 /// Valid statements the query inputs start from.
-const QUERIES: [&str; 10] = [
+const QUERIES: [&str; 15] = [
     "FIND rooms WHERE area > 10 ORDER BY area DESC LIMIT 3;",
     "ROUTE FROM \"Kitchen\" TO 5 VIA 3 AVOID door 4 WITH CLEARANCE 0.3;",
     "ROUTE FROM (2.0, 9.0) TO (10.0, 3.0) ALTERNATIVES 3;",
@@ -231,6 +238,11 @@ const QUERIES: [&str; 10] = [
     "EXPLAIN FIND doors WHERE width >= 0.8 AND NOT (kind = 'door' OR area < 1);",
     "NAME 3 AS \"Lab\";",
     "FIND spaces WHERE name LIKE 'K%' ;",
+    "MERGE 3, 4 AS \"Lobby\";",
+    "SPLIT 2 ALONG (0, 1) TO (30, 1) WITH DOOR (5, 1) WIDTH 0.9;",
+    "ADD DOOR BETWEEN 3 AND 4 AT (4, 4) WIDTH 1;",
+    "SET 3 ATTRIBUTE restricted = TRUE; UNSET 3 ATTRIBUTE restricted;",
+    "REMOVE DOOR 5; SET 3 KIND corridor; ROUTE FROM 1 TO 2 AVOID WHERE attr.restricted = TRUE;",
 ];
 
 /// A parser with its seeds, run over one input at a time.
