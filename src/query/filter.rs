@@ -161,3 +161,19 @@ pub fn like(text: &str, pattern: &str) -> bool {
     }
     p[j..].iter().all(|c| *c == '%')
 }
+
+/// The spaces of `rev` for which `cond` holds, in id order, leaving out
+/// `except` (a route's own ends for `AVOID WHERE`).
+pub fn matching_spaces(
+    cond: &Condition,
+    rev: &IndexedRevision,
+    except: &[crate::model::SpaceId],
+) -> Result<Vec<crate::model::SpaceId>, QueryError> {
+    let mut out = Vec::new();
+    for s in rev.nrg.spaces() {
+        if !except.contains(&s.id) && matches(cond, s, rev)? {
+            out.push(s.id);
+        }
+    }
+    Ok(out)
+}

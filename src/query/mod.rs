@@ -49,10 +49,10 @@ pub use ast::{
 pub use compare_revisions::{LoadedRevision, RevisionComparison, compare_revisions};
 pub use error::{QueryError, SourceError, Span};
 pub use exec::{Limits, execute};
-pub use filter::like;
+pub use filter::{like, matching_spaces};
 pub use index::IndexedRevision;
 pub use lexer::{Token, TokenKind, lex};
-pub use parser::{KEYWORDS, STATEMENT_KEYWORDS, parse, parse_statement};
+pub use parser::{KEYWORDS, STATEMENT_KEYWORDS, parse, parse_condition, parse_statement};
 pub use plan::{Plan, plan};
 pub use result::{Cell, Format, QueryResult, Table};
 pub use script::{OnError, ScriptStep, StatementText, split_statements};

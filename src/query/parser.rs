@@ -5,7 +5,7 @@
 use super::ast::{
     CompareOp, Condition, EditStatement, Field, OrderKey, SpaceRef, Statement, Value, WalkOptions,
 };
-use super::error::QueryError;
+use super::error::{QueryError, Span};
 use super::lexer::{Token, TokenKind, lex};
 use super::suggest::suggest;
 use crate::model::{SpaceId, SpaceKind};
@@ -122,6 +122,24 @@ pub fn parse(text: &str) -> Result<Vec<Statement>, QueryError> {
         if p.peek().kind != TokenKind::Eof && !p.eat_punct(";") {
             return Err(p.expected(&["';'", "end of input"]));
         }
+    }
+}
+
+/// Parses a condition of the `FIND … WHERE` language on its own
+/// (`attr.restricted = TRUE`), as `AVOID WHERE` and HTTP `avoid_where=`
+/// take it.
+pub fn parse_condition(text: &str) -> Result<Condition, QueryError> {
+    match parse_statement(&format!("FIND spaces WHERE {text}"))? {
+        Statement::Find {
+            filter: Some(cond),
+            order,
+            limit: None,
+            ..
+        } if order.is_empty() => Ok(cond),
+        _ => Err(QueryError::Syntax {
+            span: Span::default(),
+            message: format!("'{text}' is not a condition (e.g. attr.restricted = TRUE)"),
+        }),
     }
 }
 

@@ -93,11 +93,7 @@ pub fn plan(
                         _ => None,
                     })
                     .collect();
-                for s in m.nrg.spaces() {
-                    if !ends.contains(&s.id) && super::filter::matches(cond, s, m)? {
-                        avoid.push(s.id);
-                    }
-                }
+                avoid.extend(super::filter::matching_spaces(cond, m, &ends)?);
             }
             let ends = |refs: &[SpaceRef]| -> Result<Vec<Endpoint>, QueryError> {
                 refs.iter().map(|r| endpoint(m, r)).collect()

@@ -406,6 +406,29 @@ async fn corrections_through_query_need_the_token_and_are_kept() {
     assert!(through(4), "{v}");
     assert!(!through(5), "{v}");
     assert_eq!(s.revision_count("building"), 4);
+    // The same over GET /route.
+    let ids = |r: &super::server_client::Reply| -> Vec<u64> {
+        r.json()["routes"][0]["spaces"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .filter_map(|s| s["id"].as_u64())
+            .collect()
+    };
+    let r = s
+        .get("/maps/building/route?from=10&to=12&avoid_where=attr.restricted%20%3D%20TRUE")
+        .await;
+    assert_eq!(r.status, 200, "{}", r.text());
+    let avoiding = ids(&r);
+    assert!(
+        avoiding.contains(&1) && !avoiding.contains(&11),
+        "{avoiding:?}"
+    );
+    let direct = ids(&s.get("/maps/building/route?from=10&to=12").await);
+    assert!(direct.contains(&11), "{direct:?}");
+    s.get("/maps/building/route?from=10&to=12&avoid_where=restricted%20%3D%3D")
+        .await
+        .assert_error(400, "avoid_where");
     s.stop().await;
 }
 

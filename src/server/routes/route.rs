@@ -17,7 +17,7 @@ use crate::server::state::{AppState, Ctx};
 use crate::route::MAX_ALTERNATIVES;
 
 /// Query parameters of the route endpoint.
-pub const PARAMS: [ParamDoc; 9] = [
+pub const PARAMS: [ParamDoc; 10] = [
     q(
         "from",
         "string",
@@ -41,6 +41,12 @@ pub const PARAMS: [ParamDoc; 9] = [
         "string",
         false,
         "spaces not to enter: comma-separated ids or names",
+    ),
+    q(
+        "avoid_where",
+        "string",
+        false,
+        "spaces not to enter: a FIND condition, e.g. attr.restricted = TRUE (the route's ends excepted)",
     ),
     q(
         "alternatives",
@@ -179,7 +185,7 @@ fn alternatives(raw: Option<&str>) -> Result<usize, ApiError> {
     }
 }
 
-/// `GET /maps/{map}/route?from=&to=&via=&avoid=&alternatives=&clearance=&min_door_width=&speed=&rev=`.
+/// `GET /maps/{map}/route?from=&to=&via=&avoid=&avoid_where=&alternatives=&clearance=&min_door_width=&speed=&rev=`.
 pub async fn route(
     State(state): State<AppState>,
     Path(map): Path<String>,
@@ -192,6 +198,7 @@ pub async fn route(
             "to",
             "via",
             "avoid",
+            "avoid_where",
             "alternatives",
             "clearance",
             "min_door_width",
@@ -204,6 +211,11 @@ pub async fn route(
     let to = p.required("to")?.to_string();
     let via = p.get("via").map(str::to_string);
     let avoid = p.get("avoid").map(str::to_string);
+    let avoid_where = p
+        .get("avoid_where")
+        .map(crate::query::parse_condition)
+        .transpose()
+        .map_err(|e| ApiError::bad("avoid_where", e.to_string()))?;
     let k = alternatives(p.get("alternatives"))?;
     if k > 1 && via.is_some() {
         return Err(ApiError::bad(
@@ -218,11 +230,26 @@ pub async fn route(
     let deadline = std::time::Instant::now().checked_add(timeout);
     let work = move |ctx: &mut Ctx<'_>| {
         let r = ctx.revision(&map, rev)?;
+        let (from, to) = (endpoint("from", &from, &r)?, endpoint("to", &to, &r)?);
+        let mut avoided = list("avoid", avoid.as_deref(), &r)?;
+        if let Some(cond) = &avoid_where {
+            let ends: Vec<SpaceId> = [&from, &to]
+                .into_iter()
+                .filter_map(|e| match e {
+                    Endpoint::Space(id) => Some(*id),
+                    _ => None,
+                })
+                .collect();
+            avoided.extend(
+                crate::query::matching_spaces(cond, &r, &ends)
+                    .map_err(|e| ApiError::bad("avoid_where", e.to_string()))?,
+            );
+        }
         let request = RouteRequest {
-            from: endpoint("from", &from, &r)?,
-            to: endpoint("to", &to, &r)?,
+            from,
+            to,
             via: endpoints("via", via.as_deref(), &r)?,
-            avoid: list("avoid", avoid.as_deref(), &r)?,
+            avoid: avoided,
             alternatives: k,
             profile: walker,
         };
