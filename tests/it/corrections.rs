@@ -3,6 +3,7 @@
 //! longer fits is reported alone; dropped ones stop applying; refused
 //! edits store nothing.
 
+use crate::support::remapped;
 use nrgdb::fixtures::corridor_building;
 use nrgdb::ingest::{Ingested, ingest};
 use nrgdb::model::{Nrg, SpaceId, SpaceKind, point_in_ring};
@@ -24,35 +25,6 @@ fn run(store: &mut Store, map: &str, text: &str) -> Result<String, String> {
         Some(Err(e)) => Err(e.to_string()),
         None => Err("no statement".into()),
     }
-}
-
-/// The building re-mapped: ids and names as a fresh extraction gives them
-/// (other numbers, no names), every outline 3 cm off.
-fn remapped(nrg: &Nrg) -> Nrg {
-    let (spaces, connections) = nrg.clone().into_parts();
-    let shift = |s: SpaceId| SpaceId(s.0 + 700);
-    let spaces = spaces
-        .into_iter()
-        .map(|mut s| {
-            s.id = shift(s.id);
-            s.name = None;
-            s.attributes.clear();
-            for p in s.polygon.iter_mut().chain(s.doorway.iter_mut().flatten()) {
-                p[1] += 0.03;
-            }
-            s.anchor[1] += 0.03;
-            s
-        })
-        .collect();
-    let connections = connections
-        .into_iter()
-        .map(|mut c| {
-            c.a = shift(c.a);
-            c.b = shift(c.b);
-            c
-        })
-        .collect();
-    Nrg::new(spaces, connections).unwrap()
 }
 
 /// `nrg` without the spaces in `gone` (and their connections).
@@ -145,7 +117,10 @@ fn report(done: &Ingested) -> (Vec<u32>, Vec<(u32, String)>) {
 fn a_remapped_revision_keeps_every_correction() {
     let mut store = corrected_store();
     // Re-mapped, with a small change elsewhere: room 13's door shut.
-    let fresh = without(&remapped(&corridor_building(4)), &[10_703]);
+    let fresh = without(
+        &remapped(&corridor_building(4), [0.0, 0.03], 700),
+        &[10_703],
+    );
     let done = ingest(&mut store, "lab", &fresh, meta("re-mapped"), None).unwrap();
     assert_eq!(report(&done), (vec![1, 2, 3, 4], vec![]));
     let latest = store.load("lab", None).unwrap();
@@ -184,7 +159,10 @@ fn a_change_that_breaks_one_correction_reports_that_one() {
     let mut store = corrected_store();
     // Room 12 (and its door) gone from the new map: only the attribute
     // set on it no longer applies.
-    let fresh = without(&remapped(&corridor_building(4)), &[712, 10_702]);
+    let fresh = without(
+        &remapped(&corridor_building(4), [0.0, 0.03], 700),
+        &[712, 10_702],
+    );
     let done = ingest(&mut store, "lab", &fresh, meta("room 12 walled off"), None).unwrap();
     let (applied, failed) = report(&done);
     assert_eq!(applied, vec![1, 2, 4]);

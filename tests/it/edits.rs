@@ -3,6 +3,7 @@
 //! Geometry is checked against the building's drawn rectangles, not
 //! against the edit code's own output.
 
+use crate::support::remapped;
 use nrgdb::edit::{Edit, EditError, NewDoor, Rule, apply};
 use nrgdb::fixtures::corridor_building;
 use nrgdb::model::{ConnectionKind, Nrg, SpaceId, SpaceKind, point_in_ring};
@@ -477,36 +478,6 @@ fn kinds_and_attributes_change_and_a_removed_door_leaves_a_wall() {
     );
 }
 
-/// `nrg` re-mapped: every outline moved by `dx` metres and every id
-/// shifted by 500, as a new extraction of the same building would number
-/// and trace it.
-fn remapped(nrg: &Nrg, dx: f64) -> Nrg {
-    let (spaces, connections) = nrg.clone().into_parts();
-    let shift = |s: SpaceId| SpaceId(s.0 + 500);
-    let spaces = spaces
-        .into_iter()
-        .map(|mut s| {
-            s.id = shift(s.id);
-            s.name = None;
-            s.anchor[0] += dx;
-            s.polygon.iter_mut().for_each(|p| p[0] += dx);
-            if let Some(line) = s.doorway.as_mut() {
-                line.iter_mut().for_each(|p| p[0] += dx);
-            }
-            s
-        })
-        .collect();
-    let connections = connections
-        .into_iter()
-        .map(|mut c| {
-            c.a = shift(c.a);
-            c.b = shift(c.b);
-            c
-        })
-        .collect();
-    Nrg::new(spaces, connections).unwrap()
-}
-
 #[test]
 fn rules_find_their_spaces_again_by_overlap_or_say_what_happened() {
     let nrg = corridor_building(3);
@@ -536,7 +507,7 @@ fn rules_find_their_spaces_again_by_overlap_or_say_what_happened() {
         .unwrap(),
     ];
     // Re-mapped 5 cm off with other ids: every rule applies again.
-    let mut model = remapped(&nrg, 0.05);
+    let mut model = remapped(&nrg, [0.05, 0.0], 500);
     for rule in &rules {
         let done = rule
             .reapply(&model, model.next_id())
@@ -562,7 +533,7 @@ fn rules_find_their_spaces_again_by_overlap_or_say_what_happened() {
     let again = rules[0].reapply(&model, model.next_id());
     assert!(again.is_err() || again.unwrap().note.is_some());
     // A map where room 11 was cut in two: the merge no longer applies.
-    let fresh = remapped(&nrg, 0.0);
+    let fresh = remapped(&nrg, [0.0, 0.0], 500);
     // Cut in three strips, none holding half of it.
     let fresh = edit(
         &fresh,

@@ -59,3 +59,36 @@ pub fn nrgdb(dir: &std::path::Path, args: &[&str]) -> Output {
 pub fn building(rooms: usize) -> Nrg {
     nrgdb::fixtures::corridor_building(rooms)
 }
+
+/// `nrg` as a fresh extraction of the same building would give it: every
+/// id shifted by `id_shift`, names and attributes gone, every outline,
+/// anchor and doorway moved by `offset` metres.
+pub fn remapped(nrg: &Nrg, offset: [f64; 2], id_shift: u32) -> Nrg {
+    let (spaces, connections) = nrg.clone().into_parts();
+    let shift = |s: nrgdb::model::SpaceId| nrgdb::model::SpaceId(s.0 + id_shift);
+    let spaces = spaces
+        .into_iter()
+        .map(|mut s| {
+            s.id = shift(s.id);
+            s.name = None;
+            s.attributes.clear();
+            let moved = std::iter::once(&mut s.anchor)
+                .chain(s.polygon.iter_mut())
+                .chain(s.doorway.iter_mut().flatten());
+            for p in moved {
+                p[0] += offset[0];
+                p[1] += offset[1];
+            }
+            s
+        })
+        .collect();
+    let connections = connections
+        .into_iter()
+        .map(|mut c| {
+            c.a = shift(c.a);
+            c.b = shift(c.b);
+            c
+        })
+        .collect();
+    Nrg::new(spaces, connections).unwrap()
+}
