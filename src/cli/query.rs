@@ -38,6 +38,10 @@ pub struct SourceArgs {
     /// Most rows a statement may return.
     #[arg(long, value_name = "N", default_value_t = 10_000)]
     pub max_rows: usize,
+    /// Who corrections (MERGE, SPLIT, …) are recorded as made by
+    /// [default: $USER].
+    #[arg(long, env = "NRGDB_AUTHOR")]
+    pub author: Option<String>,
 }
 
 /// Run query statements (ROUTE, FIND, NEIGHBOURS, LOCATE, REACHABLE, SHOW,
@@ -104,6 +108,7 @@ pub fn open_source(args: &SourceArgs) -> miette::Result<Box<dyn Source>> {
 pub fn open_session(args: &SourceArgs) -> miette::Result<Session<Box<dyn Source>>> {
     let source = open_source(args)?;
     let mut session = Session::with_default_map(source).into_diagnostic()?;
+    session.set_author(super::db::author(args.author.clone()));
     if let Some(map) = &args.map {
         session.use_map(map, args.rev).into_diagnostic()?;
     }

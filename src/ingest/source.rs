@@ -95,6 +95,7 @@ impl Source for Store {
         revision: u64,
         edit: &Edit,
         statement: &str,
+        author: &str,
     ) -> Result<EditDone, SourceError> {
         let latest = Store::revision(self, map, None).map_err(to_source)?.seq;
         if revision != u64::from(latest) {
@@ -104,7 +105,7 @@ impl Source for Store {
                 latest: u64::from(latest),
             });
         }
-        let meta = ImportMeta::new(statement, "nrgdb query");
+        let meta = ImportMeta::new(statement, author);
         match super::edit(self, map, edit, statement, meta) {
             Ok(done) => Ok(EditDone {
                 revision: u64::from(done.revision.seq),

@@ -27,6 +27,8 @@ pub struct Session<S: Source> {
     source: S,
     current: Option<IndexedRevision>,
     limits: Limits,
+    /// Who the corrections this session writes are recorded as made by.
+    author: String,
 }
 
 impl<S: Source> Session<S> {
@@ -36,7 +38,14 @@ impl<S: Source> Session<S> {
             source,
             current: None,
             limits: Limits::default(),
+            author: "nrgdb query".to_string(),
         }
+    }
+
+    /// Records the corrections this session writes as made by `author`
+    /// (default "nrgdb query").
+    pub fn set_author(&mut self, author: impl Into<String>) {
+        self.author = author.into();
     }
 
     /// A session on the latest revision of the first map (by name), if any.
@@ -165,7 +174,7 @@ impl<S: Source> Session<S> {
                 let current = self.current.as_ref().ok_or(QueryError::NoMapSelected)?;
                 let (map, old) = (current.map.clone(), current.revision);
                 let before = std::sync::Arc::clone(&current.nrg);
-                let done = self.source.edit(&map, old, edit, statement)?;
+                let done = self.source.edit(&map, old, edit, statement, &self.author)?;
                 self.use_map(&map, Some(done.revision))?;
                 let what = edit.describe(&before);
                 let kept = done.correction.map_or_else(String::new, |c| {
@@ -340,9 +349,10 @@ mod tests {
             revision: u64,
             edit: &crate::edit::Edit,
             statement: &str,
+            author: &str,
         ) -> Result<crate::query::EditDone, SourceError> {
             self.tick();
-            self.inner.edit(map, revision, edit, statement)
+            self.inner.edit(map, revision, edit, statement, author)
         }
     }
 

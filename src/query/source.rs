@@ -76,8 +76,9 @@ pub trait Source {
         id: SpaceId,
         name: &str,
     ) -> Result<u64, SourceError>;
-    /// Applies the correction `edit` (written as `statement`) to `map` at
-    /// `revision`, which must be its latest, writing a new revision; a
+    /// Applies the correction `edit` (written as `statement`, by `author`)
+    /// to `map` at `revision`, which must be its latest, writing a new
+    /// revision; a
     /// source that keeps corrections keeps it for later imports. A refused
     /// edit is [`SourceError::Edit`].
     fn edit(
@@ -86,6 +87,7 @@ pub trait Source {
         revision: u64,
         edit: &Edit,
         statement: &str,
+        author: &str,
     ) -> Result<EditDone, SourceError>;
 }
 
@@ -225,6 +227,7 @@ impl Source for MemorySource {
         revision: u64,
         edit: &Edit,
         statement: &str,
+        author: &str,
     ) -> Result<EditDone, SourceError> {
         let latest = self.map(map)?.len() as u64;
         if revision != latest {
@@ -244,7 +247,7 @@ impl Source for MemorySource {
             .unwrap_or(SpaceId(1));
         let done = crate::edit::apply(nrg, edit, next)?;
         let walked = crate::route::walked_model(&done.nrg).nrg;
-        let note = format!("{statement} (on revision {revision})");
+        let note = format!("{statement} (by {author}, on revision {revision})");
         Ok(EditDone {
             revision: self.insert_with_note(map, walked, &note),
             correction: None,
@@ -282,8 +285,9 @@ impl<S: Source + ?Sized> Source for Box<S> {
         revision: u64,
         edit: &Edit,
         statement: &str,
+        author: &str,
     ) -> Result<EditDone, SourceError> {
-        (**self).edit(map, revision, edit, statement)
+        (**self).edit(map, revision, edit, statement, author)
     }
 }
 
@@ -316,7 +320,8 @@ impl<S: Source + ?Sized> Source for &mut S {
         revision: u64,
         edit: &Edit,
         statement: &str,
+        author: &str,
     ) -> Result<EditDone, SourceError> {
-        (**self).edit(map, revision, edit, statement)
+        (**self).edit(map, revision, edit, statement, author)
     }
 }

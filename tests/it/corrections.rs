@@ -98,6 +98,7 @@ fn edits_write_revisions_and_are_kept_as_corrections() {
     assert!(list.iter().all(|c| c.state == CorrectionState::Applied));
     assert_eq!(list[1].statement, "MERGE space 10, space 11 AS \"Lab\"");
     assert_eq!((list[1].made_on, list[1].checked_on), (3, 3));
+    assert_eq!(list[1].author, "nrgdb query");
     // Stored lengths are walked lengths, as for an import.
     let walked = nrgdb::route::walked_model(&latest);
     assert_eq!(walked.lengths_changed, 0);

@@ -371,7 +371,7 @@ async fn corrections_through_query_need_the_token_and_are_kept() {
     assert_eq!(s.revision_count("building"), 1);
     let r = s
         .post(
-            "/query?map=building",
+            "/query?map=building&author=ada",
             &[AUTH],
             b"SET 11 ATTRIBUTE restricted = TRUE; MERGE 11, 13; \
               ADD DOOR BETWEEN 10 AND 11 AT (4, 4); ADD DOOR BETWEEN 11 AND 12 AT (8, 4); \
@@ -426,6 +426,15 @@ async fn corrections_through_query_need_the_token_and_are_kept() {
     );
     let direct = ids(&s.get("/maps/building/route?from=10&to=12").await);
     assert!(direct.contains(&11), "{direct:?}");
+    let store = nrgdb::store::Store::open(&s.db).unwrap();
+    let authors: Vec<String> = store
+        .corrections("building")
+        .unwrap()
+        .into_iter()
+        .map(|c| c.author)
+        .collect();
+    assert_eq!(authors, ["ada", "ada", "ada"]);
+    assert_eq!(store.revision("building", None).unwrap().author, "ada");
     s.get("/maps/building/route?from=10&to=12&avoid_where=restricted%20%3D%3D")
         .await
         .assert_error(400, "avoid_where");

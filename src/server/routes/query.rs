@@ -24,7 +24,7 @@ use crate::server::state::AppState;
 use crate::store::Store;
 
 /// Query parameters of `POST /query` (the JSON body may give them too).
-pub const PARAMS: [ParamDoc; 2] = [
+pub const PARAMS: [ParamDoc; 3] = [
     q(
         "map",
         "string",
@@ -32,6 +32,12 @@ pub const PARAMS: [ParamDoc; 2] = [
         "map to USE first (default: the first map by name)",
     ),
     REV,
+    q(
+        "author",
+        "string",
+        false,
+        "who corrections are recorded as made by (default: nrgdb serve)",
+    ),
 ];
 
 #[derive(Deserialize)]
@@ -82,6 +88,7 @@ impl Source for QuerySource<'_> {
         revision: u64,
         edit: &crate::edit::Edit,
         statement: &str,
+        author: &str,
     ) -> Result<crate::query::EditDone, SourceError> {
         if !self.writable {
             return Err(SourceError::Backend(
@@ -89,7 +96,7 @@ impl Source for QuerySource<'_> {
                     .into(),
             ));
         }
-        <Store as Source>::edit(self.store, map, revision, edit, statement)
+        <Store as Source>::edit(self.store, map, revision, edit, statement, author)
     }
 }
 
@@ -118,7 +125,8 @@ pub async fn query(
     // The deadline of the whole request: past it the client has had its
     // 503 (`server::timeout`), so the statements stop too.
     let deadline = std::time::Instant::now().checked_add(state.config().timeout);
-    let p = Params::parse(&uri, &["map", "rev"])?;
+    let p = Params::parse(&uri, &["map", "rev", "author"])?;
+    let author = p.get("author").unwrap_or("nrgdb serve").to_string();
     let config = state.config();
     let bytes = read_limited(&headers, body, config.max_body_bytes, config.body_timeout).await?;
     let is_json = headers
@@ -181,6 +189,7 @@ pub async fn query(
             // must not start past the deadline either.
             let mut session = Session::new(source);
             session.set_limits(limits);
+            session.set_author(author);
             match &map {
                 Some(m) => {
                     session
