@@ -371,8 +371,8 @@ fn client_of(browser: &mut crate::viewer_cdp::Browser, p: [f64; 2]) -> (f64, f64
 
 /// Issue 22: the viewer's edit mode. With the token given once: pick two
 /// rooms and click the wall between them (a door), merge them, see a
-/// refused merge say why, and undo the last edit; each edit is a revision
-/// and the picture follows.
+/// refused merge say why, undo the last edit, and split the corridor by two
+/// clicks; each edit is a revision and the picture follows.
 #[tokio::test(flavor = "multi_thread", worker_threads = 2)]
 async fn viewer_edits_add_a_door_merge_refuse_and_undo() {
     let Some(chromium) = chromium_or_skip() else {
@@ -422,6 +422,18 @@ async fn viewer_edits_add_a_door_merge_refuse_and_undo() {
         button(&mut b, "ed-undo");
         assert!(b.wait_for("document.body.dataset.state === 'edited'", secs), "{}", info(&mut b));
         seen.push((info(&mut b), b.eval("document.getElementById('rev').value").as_str().unwrap_or("").to_string()));
+        // Split the corridor by two clicks across it at x = 5 (drawn short
+        // of its walls, as a hand does).
+        let (cx, cy) = centre_of(&mut b, 1);
+        b.click(cx, cy);
+        assert!(b.wait_for("document.getElementById('details').textContent.includes('Main corridor')", secs));
+        button(&mut b, "ed-split");
+        for p in [[5.0, 0.3], [5.0, 1.7]] {
+            let (x, y) = client_of(&mut b, p);
+            b.click(x, y);
+        }
+        assert!(b.wait_for("document.body.dataset.state === 'edited'", secs), "{}", info(&mut b));
+        seen.push((info(&mut b), b.eval("document.getElementById('rev').value").as_str().unwrap_or("").to_string()));
         (seen, spaces_after_merge)
     })
     .await
@@ -441,16 +453,41 @@ async fn viewer_edits_add_a_door_merge_refuse_and_undo() {
     assert!(seen[2].0.contains("do not touch"), "{seen:?}");
     assert!(seen[3].0.contains("Undid correction 2"), "{seen:?}");
     assert_eq!(seen[3].1, "4");
+    assert!(seen[4].0.contains("split of Main corridor"), "{seen:?}");
+    assert_eq!(seen[4].1, "5");
     // Independent of the page: the store holds the revisions, the undo
-    // restored revision 2's model, and correction 2 is dropped.
+    // restored revision 2's model, correction 2 is dropped, and the split
+    // left two corridors where there was one, the smaller about 10 m² (the
+    // corridor runs from x = 0 to 15 and is 2 m wide; the cut is at x = 5).
     let store = nrgdb::store::Store::open(&server.db).unwrap();
-    assert_eq!(store.revisions("building").unwrap().len(), 4);
+    assert_eq!(store.revisions("building").unwrap().len(), 5);
     assert_eq!(
         store.load("building", Some(4)).unwrap(),
         store.load("building", Some(2)).unwrap()
     );
     let corrections = store.corrections("building").unwrap();
-    assert_eq!(corrections.len(), 2);
+    assert_eq!(corrections.len(), 3);
     assert_eq!(corrections[1].state, nrgdb::store::CorrectionState::Dropped);
+    assert_eq!(corrections[2].state, nrgdb::store::CorrectionState::Applied);
+    let before = store.load("building", Some(4)).unwrap();
+    let after = store.load("building", Some(5)).unwrap();
+    let corridors = |nrg: &nrgdb::model::Nrg| -> Vec<f64> {
+        let mut areas: Vec<f64> = nrg
+            .spaces()
+            .iter()
+            .filter(|s| s.kind == nrgdb::model::SpaceKind::Corridor)
+            .map(|s| s.area_m2)
+            .collect();
+        areas.sort_by(f64::total_cmp);
+        areas
+    };
+    assert_eq!(corridors(&before).len(), 1);
+    let split = corridors(&after);
+    assert_eq!(split.len(), 2, "{split:?}");
+    assert!((split[0] - 10.0).abs() < 0.15, "{split:?}");
+    assert!(
+        (split[0] + split[1] - corridors(&before)[0]).abs() < 0.05,
+        "{split:?}"
+    );
     server.stop().await;
 }
