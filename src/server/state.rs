@@ -1,21 +1,20 @@
 //! State shared by all requests: the configuration, a small pool of store
 //! connections, the revision cache and the metrics.
 //!
-//! `Store` (rusqlite) is not `Sync`, so every request borrows a connection
-//! of its own inside `spawn_blocking`; SQLite's WAL lets readers run while
-//! one writer imports.
+//! A [`Store`] holds one connection to its engine and is not `Sync`, so
+//! every request borrows a store of its own inside `spawn_blocking`;
+//! SQLite's WAL lets readers run while one writer imports.
 //!
-//! Each pooled connection remembers the latest revision of the maps it has
-//! looked up, valid while SQLite's `PRAGMA data_version` (which changes
-//! whenever any other connection or process commits) stays the same: the
-//! per-request "which revision is latest" check costs one pragma, and a
-//! new revision is still seen by the next request.
+//! Each pooled store remembers the latest revision of the maps it has
+//! looked up, valid while the engine's change token (which changes
+//! whenever anyone commits, see [`crate::store::ReadStore::change_token`])
+//! stays the same: the per-request "which revision is latest" check costs
+//! one cheap call, and a new revision is still seen by the next request.
+//! An engine without a cheap token is asked for the latest every time.
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
-
-use rusqlite::{Connection, OpenFlags};
 
 use super::cache::RevisionCache;
 use super::config::ServerConfig;
@@ -24,28 +23,20 @@ use super::metrics::Metrics;
 use crate::query::IndexedRevision;
 use crate::store::{Store, StoreError};
 
-/// A pooled connection: the store, a read-only probe connection for
-/// `PRAGMA data_version`, and the latest revisions seen at that version.
+/// A pooled store and the latest revisions it saw at its change token.
 #[derive(Debug)]
 pub struct Slot {
     /// The store.
     pub store: Store,
-    probe: Connection,
-    data_version: i64,
+    token: Option<u64>,
     latest: HashMap<String, u32>,
 }
 
 impl Slot {
     fn open(path: &Path) -> Result<Slot, StoreError> {
-        let store = Store::open(path)?;
-        let probe = Connection::open_with_flags(
-            path,
-            OpenFlags::SQLITE_OPEN_READ_ONLY | OpenFlags::SQLITE_OPEN_NO_MUTEX,
-        )?;
         Ok(Slot {
-            store,
-            probe,
-            data_version: -1,
+            store: Store::open(path)?,
+            token: None,
             latest: HashMap::new(),
         })
     }
@@ -53,15 +44,10 @@ impl Slot {
     /// The latest revision of `map`, from the memo while the database is
     /// unchanged, else from the store.
     fn latest(&mut self, map: &str) -> Result<u32, StoreError> {
-        let version: i64 = self
-            .probe
-            .prepare_cached("PRAGMA data_version")?
-            .query_row([], |r| r.get(0))?;
-        // The probe never writes, so every commit (any connection, any
-        // process) changes its data_version and clears the memo.
-        if version != self.data_version {
+        let token = self.store.change_token()?;
+        if token.is_none() || token != self.token {
             self.latest.clear();
-            self.data_version = version;
+            self.token = token;
         }
         if let Some(seq) = self.latest.get(map) {
             return Ok(*seq);

@@ -1,6 +1,6 @@
 //! Errors of the store.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use crate::model::{ModelError, SpaceId};
 
@@ -15,13 +15,14 @@ pub enum StoreError {
         /// The path given.
         path: PathBuf,
     },
-    /// The file could not be opened as an SQLite database.
-    #[error("cannot open database {path}: {source} (is it an nrgdb database?)")]
+    /// The database could not be opened (not an nrgdb database, no such
+    /// server, refused login).
+    #[error("cannot open database {location}: {source} (is it an nrgdb database?)")]
     Open {
-        /// The database file.
-        path: PathBuf,
-        /// What SQLite said.
-        source: rusqlite::Error,
+        /// The database file or URL (without its password).
+        location: String,
+        /// What the engine said.
+        source: Box<dyn std::error::Error + Send + Sync>,
     },
     /// The database was written by a newer nrgdb; it was not modified.
     #[error(
@@ -29,8 +30,8 @@ pub enum StoreError {
          it was left untouched (upgrade nrgdb to use it)"
     )]
     TooNew {
-        /// The database file.
-        path: PathBuf,
+        /// The database file or URL.
+        path: String,
         /// `user_version` found in the file.
         found: i64,
         /// The newest schema version this build knows.
@@ -39,8 +40,8 @@ pub enum StoreError {
     /// Applying the schema migrations failed.
     #[error("cannot bring database {path} to schema version {known}: {message}")]
     Migration {
-        /// The database file.
-        path: PathBuf,
+        /// The database file or URL.
+        path: String,
         /// The schema version aimed at.
         known: i64,
         /// What went wrong.
@@ -105,24 +106,23 @@ pub enum StoreError {
     #[error("model refused: {0}")]
     Model(#[from] ModelError),
     /// A stored row could not be decoded.
-    #[error(
-        "database is damaged: map '{map}' space row {row}: {what} (run `PRAGMA integrity_check`)"
-    )]
+    #[error("database is damaged: map '{map}' row {row}: {what}")]
     Corrupt {
         /// The map.
         map: String,
-        /// The row id in table `spaces` (0 for a connection).
+        /// The row id in the engine's table of spaces (0 for a connection
+        /// or another record).
         row: i64,
         /// What is wrong with it.
         what: String,
     },
-    /// The disk holding the database is full (SQLite's `SQLITE_FULL`, or
-    /// `SQLITE_IOERR_SHMSIZE`: no room to grow the WAL index next to it);
-    /// the transaction was rolled back.
-    #[error("disk full: {} (nothing was stored; free some space and retry)", path.display())]
+    /// The disk holding the database is full (SQLite's `SQLITE_FULL` or
+    /// `SQLITE_IOERR_SHMSIZE`, PostgreSQL's `disk_full`); the transaction
+    /// was rolled back.
+    #[error("disk full: {location} (nothing was stored; free some space and retry)")]
     DiskFull {
-        /// The database file (empty until the store names it).
-        path: PathBuf,
+        /// The database file or URL.
+        location: String,
     },
     /// A correction number the map does not have.
     #[error("map '{map}' has no correction {id}")]
@@ -185,82 +185,46 @@ pub enum StoreError {
         /// The bound on overlapping pairs.
         limit: usize,
     },
-    /// Any other SQLite error.
-    #[error("sqlite: {0}")]
-    Sqlite(rusqlite::Error),
+    /// Any other fault of the engine (I/O, a lost connection, a bug).
+    #[error("{engine}: {source}")]
+    Backend {
+        /// Which engine ("sqlite", "postgres").
+        engine: &'static str,
+        /// What it said.
+        source: Box<dyn std::error::Error + Send + Sync>,
+    },
 }
 
 impl StoreError {
-    /// Names the database file in errors that should name it (disk full).
-    pub(crate) fn in_file(self, file: &Path) -> StoreError {
-        match self {
-            StoreError::DiskFull { path } if path.as_os_str().is_empty() => StoreError::DiskFull {
-                path: file.to_path_buf(),
-            },
-            other => other,
+    /// [`StoreError::NoSuchMap`] for `name`, listing the maps there are
+    /// and suggesting the closest when it looks like a typo.
+    pub(crate) fn no_such_map(name: &str, names: &[String]) -> StoreError {
+        let known = if names.is_empty() {
+            "(none)".to_string()
+        } else {
+            names.join(", ")
+        };
+        StoreError::NoSuchMap {
+            name: name.to_string(),
+            known,
+            suggestion: crate::query::suggest(name, names.iter().map(String::as_str))
+                .map(str::to_string),
         }
     }
-}
 
-impl From<rusqlite::Error> for StoreError {
-    fn from(e: rusqlite::Error) -> Self {
-        match e.sqlite_error_code() {
-            Some(rusqlite::ErrorCode::DatabaseBusy | rusqlite::ErrorCode::DatabaseLocked) => {
-                StoreError::Busy
-            }
-            Some(rusqlite::ErrorCode::DiskFull) => StoreError::DiskFull {
-                path: PathBuf::new(),
-            },
-            // The unix VFS reports ENOSPC on the database or WAL file as
-            // SQLITE_FULL, but a failed write growing the `-shm` WAL index
-            // (the one-byte write that extends it) as SQLITE_IOERR_SHMSIZE,
-            // "Error code 4874: disk I/O error" (issue 21, defect 10).
-            _ if extended_code(&e) == Some(rusqlite::ffi::SQLITE_IOERR_SHMSIZE) => {
-                StoreError::DiskFull {
-                    path: PathBuf::new(),
-                }
-            }
-            _ => StoreError::Sqlite(e),
-        }
-    }
-}
-
-fn extended_code(e: &rusqlite::Error) -> Option<std::ffi::c_int> {
-    match e {
-        rusqlite::Error::SqliteFailure(f, _) => Some(f.extended_code),
-        _ => None,
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn sqlite(extended_code: std::ffi::c_int) -> rusqlite::Error {
-        rusqlite::Error::SqliteFailure(rusqlite::ffi::Error::new(extended_code), None)
-    }
-
-    /// Issue 21, defect 10: a full disk said "Error code 4874: disk I/O
-    /// error"; SQLITE_FULL and SQLITE_IOERR_SHMSIZE now say "disk full"
-    /// and name the file, other I/O errors stay as SQLite put them.
-    #[test]
-    fn issue_21_defect_10_disk_full_is_named() {
-        for code in [
-            rusqlite::ffi::SQLITE_FULL,
-            rusqlite::ffi::SQLITE_IOERR_SHMSIZE,
-        ] {
-            let e = StoreError::from(sqlite(code)).in_file(Path::new("/data/x.sqlite"));
-            assert!(matches!(e, StoreError::DiskFull { .. }), "{code}: {e:?}");
-            assert!(
-                e.to_string().starts_with("disk full: /data/x.sqlite"),
-                "{e}"
-            );
-        }
-        let e = StoreError::from(sqlite(rusqlite::ffi::SQLITE_IOERR_READ));
-        assert!(matches!(e, StoreError::Sqlite(_)), "{e:?}");
-        assert!(matches!(
-            StoreError::from(sqlite(rusqlite::ffi::SQLITE_BUSY)),
-            StoreError::Busy
-        ));
+    /// Whether this is a fault of the storage (disk, database, engine)
+    /// rather than a mistake in the request: servers answer it 500/503
+    /// and log the details.
+    pub fn is_fault(&self) -> bool {
+        matches!(
+            self,
+            StoreError::Open { .. }
+                | StoreError::TooNew { .. }
+                | StoreError::Migration { .. }
+                | StoreError::Corrupt { .. }
+                | StoreError::DiskFull { .. }
+                | StoreError::BadCorrection { .. }
+                | StoreError::Backend { .. }
+        )
     }
 }

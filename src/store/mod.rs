@@ -1,14 +1,16 @@
-//! The versioned SQLite store: maps, immutable revisions, stable space
-//! identity, crash-safe imports.
+//! The versioned store: maps, immutable revisions, stable space identity,
+//! corrections, crash-safe imports — on any engine.
 //!
-//! Owns the database schema (`migrations/*.sql`, applied on open), the
-//! revision history of every map and point location over stored spaces.
-//! Spaces and connections are kept as rows valid over a revision range
-//! `[valid_from, valid_to)`, so a revision costs only what changed while
-//! every revision reads back exactly as it was imported. On import each
-//! space is matched to the space it continues in the parent revision
-//! ([`crate::diff::match_spaces`]) and keeps its stable id, name and
-//! attributes.
+//! [`Store`] is what the rest of nrgdb uses (the query language, the
+//! server, the CLI, the demo). It holds an engine behind the traits of
+//! [`engine`] — [`memory`] (tests, one-off conversions), [`sqlite`] (the
+//! embedded default) — and does once, above them, everything that is the
+//! same on each: matching a new model's spaces to the parent revision so
+//! they keep their stable id, name and attributes; "nothing changed";
+//! renames; undo; retries when another writer got in first; limits.
+//! Engines keep spaces and connections as rows valid over a revision range
+//! `[valid_from, valid_to)` ([`delta`]), so a revision costs only what
+//! changed while every revision reads back exactly as it was imported.
 //!
 //! Uses `model` and `diff`; must not use the terminal, HTTP or XML.
 //!
@@ -26,36 +28,42 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-mod corrections;
+mod correction;
+pub mod delta;
+pub mod engine;
 mod error;
-mod geometry_blob;
-mod grids;
+mod grid_png;
+mod history;
+mod identity;
+mod limits;
+pub mod memory;
 mod read;
-mod schema;
-mod write;
+pub mod sqlite;
 
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::Duration;
 
-use rusqlite::Connection;
 use serde::Serialize;
 use sha2::{Digest, Sha256};
 
 use crate::diff::MatchParams;
 use crate::model::SpaceId;
 
-pub use corrections::{Correction, CorrectionResults, CorrectionState, CorrectionsKey};
+pub use correction::{Correction, CorrectionResults, CorrectionState, CorrectionsKey};
+pub use engine::{Commit, Committed, Engine, NewCorrection, ReadStore, WriteStore};
 pub use error::StoreError;
-pub use schema::SCHEMA_VERSION;
+pub use grid_png::EncodedGrid;
+pub use history::MAX_IMPORT_ATTEMPTS;
+pub use limits::MAX_MESSAGE_CHARS;
+pub use sqlite::SCHEMA_VERSION;
 
 /// How long a writer waits for another writer before [`StoreError::Busy`].
 pub const DEFAULT_BUSY_TIMEOUT: Duration = Duration::from_secs(5);
 
-/// An open nrgdb database.
+/// An open nrgdb database, on any engine.
 pub struct Store {
-    conn: Connection,
-    path: PathBuf,
+    engine: Box<dyn Engine>,
     match_params: MatchParams,
     /// Called by an import between matching and taking the write lock
     /// (tests make another writer get in first there).
@@ -65,7 +73,9 @@ pub struct Store {
 
 impl std::fmt::Debug for Store {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Store").field("path", &self.path).finish()
+        f.debug_struct("Store")
+            .field("engine", &self.engine)
+            .finish()
     }
 }
 
@@ -184,15 +194,11 @@ pub struct Imported {
 }
 
 impl Store {
-    /// Opens (creating if needed) the database at `path`, bringing its
-    /// schema up to date. A database from a newer nrgdb is refused with
+    /// Opens (creating if needed) the SQLite database at `path`, bringing
+    /// its schema up to date. A database from a newer nrgdb is refused with
     /// [`StoreError::TooNew`] and not modified.
     pub fn open(path: &Path) -> Result<Store, StoreError> {
-        let conn = Connection::open(path).map_err(|source| StoreError::Open {
-            path: path.to_path_buf(),
-            source,
-        })?;
-        Store::setup(conn, path.to_path_buf()).map_err(|e| e.in_file(path))
+        Ok(Store::on(Box::new(sqlite::SqliteStore::open(path)?)))
     }
 
     /// Opens an existing database, refusing with [`StoreError::NoDatabase`]
@@ -207,29 +213,26 @@ impl Store {
         Store::open(path)
     }
 
-    /// A fresh database in memory (tests, one-off conversions).
+    /// A fresh, empty database in memory ([`memory::MemoryStore`]: tests,
+    /// one-off conversions).
     pub fn open_in_memory() -> Result<Store, StoreError> {
-        let conn = Connection::open_in_memory()?;
-        Store::setup(conn, PathBuf::from(":memory:"))
+        Ok(Store::on(Box::new(memory::MemoryStore::new())))
     }
 
-    fn setup(mut conn: Connection, path: PathBuf) -> Result<Store, StoreError> {
-        conn.busy_timeout(DEFAULT_BUSY_TIMEOUT)?;
-        schema::prepare(&mut conn, &path)?;
-        Ok(Store {
-            conn,
-            path,
+    /// A store on `engine`.
+    pub fn on(engine: Box<dyn Engine>) -> Store {
+        Store {
+            engine,
             match_params: MatchParams::default(),
             #[cfg(test)]
             before_write_lock: None,
-        })
+        }
     }
 
     /// How long a writer waits for another one before giving up with
     /// [`StoreError::Busy`] (default [`DEFAULT_BUSY_TIMEOUT`]).
     pub fn set_busy_timeout(&mut self, timeout: Duration) -> Result<(), StoreError> {
-        self.conn.busy_timeout(timeout)?;
-        Ok(())
+        self.engine.set_busy_timeout(timeout)
     }
 
     /// How spaces are matched to their parent revision on import.
@@ -237,15 +240,19 @@ impl Store {
         self.match_params = params;
     }
 
-    /// The database file (`:memory:` for an in-memory store).
-    pub fn path(&self) -> &Path {
-        &self.path
+    /// Where the data lives (a file path, or a URL without its password).
+    pub fn location(&self) -> String {
+        self.engine.location()
     }
 
-    /// Runs `PRAGMA integrity_check`; `Ok(vec!["ok"])` on a sound file.
+    /// The engine's consistency check (SQLite's `PRAGMA integrity_check`);
+    /// `Ok(vec!["ok"])` when sound.
     pub fn integrity_check(&self) -> Result<Vec<String>, StoreError> {
-        let mut stmt = self.conn.prepare("PRAGMA integrity_check")?;
-        let rows = stmt.query_map([], |r| r.get::<_, String>(0))?;
-        Ok(rows.collect::<Result<_, _>>()?)
+        self.engine.integrity_check()
+    }
+
+    /// The engine, for reading directly.
+    pub fn engine(&self) -> &dyn Engine {
+        &*self.engine
     }
 }

@@ -1,42 +1,18 @@
-//! Reading the store: maps, revision histories, a revision as an [`Nrg`]
-//! and point location (R*Tree, then point-in-polygon).
+//! Reading the store: the engine's read side, with grids decoded.
 
-use std::str::FromStr;
-
-use rusqlite::{Connection, OptionalExtension, Row, params};
-
-use super::{MapInfo, RevisionInfo, Store, StoreError, geometry_blob};
-use crate::model::{
-    Connection as Link, ConnectionKind, Nrg, Space, SpaceId, SpaceKind, point_in_ring, polygon_area,
-};
+use super::{Correction, CorrectionsKey, MapInfo, RevisionInfo, Store, StoreError};
+use crate::grid::OccupancyGrid;
+use crate::model::{Nrg, SpaceId};
 
 impl Store {
     /// All maps, by name.
     pub fn maps(&self) -> Result<Vec<MapInfo>, StoreError> {
-        let mut stmt = self.conn.prepare(
-            "SELECT m.name, m.created_at, COALESCE(MAX(r.seq), 0)
-             FROM maps m LEFT JOIN revisions r ON r.map_id = m.id
-             GROUP BY m.id ORDER BY m.name",
-        )?;
-        let rows = stmt.query_map([], |r| {
-            Ok(MapInfo {
-                name: r.get(0)?,
-                created_at: r.get(1)?,
-                latest: r.get(2)?,
-            })
-        })?;
-        Ok(rows.collect::<Result<_, _>>()?)
+        self.engine.maps()
     }
 
     /// The revisions of `map`, oldest first.
     pub fn revisions(&self, map: &str) -> Result<Vec<RevisionInfo>, StoreError> {
-        let tx = self.conn.unchecked_transaction()?;
-        let map_id = map_id(&tx, map)?;
-        let mut stmt = tx.prepare(&format!(
-            "SELECT {REVISION_COLUMNS} FROM revisions WHERE map_id = ?1 ORDER BY seq"
-        ))?;
-        let rows = stmt.query_map([map_id], |r| revision_info(map, r))?;
-        Ok(rows.collect::<Result<_, _>>()?)
+        self.engine.revisions(map)
     }
 
     /// The history of `map`, newest first (what `nrgdb log` prints).
@@ -48,31 +24,19 @@ impl Store {
 
     /// One revision's record; the latest when `rev` is `None`.
     pub fn revision(&self, map: &str, rev: Option<u32>) -> Result<RevisionInfo, StoreError> {
-        let tx = self.conn.unchecked_transaction()?;
-        let map_id = map_id(&tx, map)?;
-        let seq = resolve(&tx, map_id, map, rev)?;
-        let info = tx.query_row(
-            &format!("SELECT {REVISION_COLUMNS} FROM revisions WHERE map_id = ?1 AND seq = ?2"),
-            params![map_id, seq],
-            |r| revision_info(map, r),
-        )?;
-        Ok(info)
+        self.engine.revision(map, rev)
     }
 
     /// Revision `rev` of `map` (the latest when `None`) exactly as it was
     /// stored.
     pub fn load(&self, map: &str, rev: Option<u32>) -> Result<Nrg, StoreError> {
-        let tx = self.conn.unchecked_transaction()?;
-        let map_id = map_id(&tx, map)?;
-        let seq = resolve(&tx, map_id, map, rev)?;
-        load_at(&tx, map_id, map, seq)
+        self.engine.load(map, rev)
     }
 
     /// The space of revision `rev` (latest when `None`) containing the
-    /// point `(x, y)` (metres, map frame), found with the R*Tree of
-    /// bounding boxes, then point-in-polygon (holes excluded). Where
-    /// spaces overlap, the smallest wins (a door inside a wall gap before
-    /// the corridor around it).
+    /// point `(x, y)` (metres, map frame), holes excluded. Where spaces
+    /// overlap, the smallest wins (a door inside a wall gap before the
+    /// corridor around it).
     pub fn locate(
         &self,
         map: &str,
@@ -80,181 +44,45 @@ impl Store {
         x: f64,
         y: f64,
     ) -> Result<Option<SpaceId>, StoreError> {
-        let tx = self.conn.unchecked_transaction()?;
-        let map_id = map_id(&tx, map)?;
-        let seq = resolve(&tx, map_id, map, rev)?;
-        let mut stmt = tx.prepare_cached(
-            "SELECT s.row_id, s.space_id, s.geometry
-             FROM space_boxes b JOIN spaces s ON s.row_id = b.row_id
-             WHERE b.min_x <= ?3 AND b.max_x >= ?3 AND b.min_y <= ?4 AND b.max_y >= ?4
-               AND s.map_id = ?1 AND s.valid_from <= ?2
-               AND (s.valid_to IS NULL OR s.valid_to > ?2)",
-        )?;
-        let mut rows = stmt.query(params![map_id, seq, x, y])?;
-        let mut best: Option<(f64, SpaceId)> = None;
-        while let Some(row) = rows.next()? {
-            let row_id: i64 = row.get(0)?;
-            let id = SpaceId(row.get(1)?);
-            let blob: Vec<u8> = row.get(2)?;
-            let (polygon, holes) =
-                geometry_blob::decode(&blob).map_err(|what| StoreError::Corrupt {
-                    map: map.to_string(),
-                    row: row_id,
-                    what,
-                })?;
-            let p = [x, y];
-            if point_in_ring(p, &polygon) && !holes.iter().any(|h| point_in_ring(p, h)) {
-                let area = polygon_area(&polygon).abs();
-                if best.is_none_or(|(a, _)| area < a) {
-                    best = Some((area, id));
-                }
-            }
-        }
-        Ok(best.map(|(_, id)| id))
+        self.engine.locate(map, rev, x, y)
     }
-}
 
-pub(crate) const REVISION_COLUMNS: &str = "seq, parent, created_at, source_name, source_sha256, \
-     params, message, author, space_count, connection_count, spaces_added, spaces_changed, \
-     spaces_removed";
-
-pub(crate) fn revision_info(map: &str, r: &Row<'_>) -> rusqlite::Result<RevisionInfo> {
-    let params: Option<String> = r.get(5)?;
-    let count = |i| r.get::<_, i64>(i).map(|v| usize::try_from(v).unwrap_or(0));
-    Ok(RevisionInfo {
-        map: map.to_string(),
-        seq: r.get(0)?,
-        parent: r.get(1)?,
-        created_at: r.get(2)?,
-        source_name: r.get(3)?,
-        source_sha256: r.get(4)?,
-        params: params.and_then(|p| serde_json::from_str(&p).ok()),
-        message: r.get(6)?,
-        author: r.get(7)?,
-        spaces: count(8)?,
-        connections: count(9)?,
-        spaces_added: count(10)?,
-        spaces_changed: count(11)?,
-        spaces_removed: count(12)?,
-    })
-}
-
-/// The row id of map `name`, or [`StoreError::NoSuchMap`] listing the maps.
-pub(crate) fn map_id(conn: &Connection, name: &str) -> Result<i64, StoreError> {
-    let id = conn
-        .query_row("SELECT id FROM maps WHERE name = ?1", [name], |r| r.get(0))
-        .optional()?;
-    match id {
-        Some(id) => Ok(id),
-        None => {
-            let mut stmt = conn.prepare("SELECT name FROM maps ORDER BY name")?;
-            let names: Vec<String> = stmt
-                .query_map([], |r| r.get(0))?
-                .collect::<Result<_, _>>()?;
-            let known = if names.is_empty() {
-                "(none)".to_string()
-            } else {
-                names.join(", ")
-            };
-            Err(StoreError::NoSuchMap {
-                name: name.to_string(),
-                known,
-                suggestion: crate::query::suggest(name, names.iter().map(String::as_str))
-                    .map(str::to_string),
-            })
-        }
+    /// The occupancy grid revision `rev` of `map` was imported from (the
+    /// latest revision when `None`), or `None` when it came from a model
+    /// file.
+    pub fn grid(&self, map: &str, rev: Option<u32>) -> Result<Option<OccupancyGrid>, StoreError> {
+        let Some(encoded) = self.engine.grid(map, rev)? else {
+            return Ok(None);
+        };
+        let seq = match rev {
+            Some(r) => r,
+            None => self.engine.revision(map, None)?.seq,
+        };
+        encoded.decode(map, seq).map(Some)
     }
-}
 
-/// The latest revision of a map, 0 when it has none.
-pub(crate) fn latest(conn: &Connection, map_id: i64) -> Result<u32, StoreError> {
-    Ok(conn.query_row(
-        "SELECT COALESCE(MAX(seq), 0) FROM revisions WHERE map_id = ?1",
-        [map_id],
-        |r| r.get(0),
-    )?)
-}
+    /// Every correction of `map`, oldest first (none for a map without
+    /// any, or one not yet imported).
+    pub fn corrections(&self, map: &str) -> Result<Vec<Correction>, StoreError> {
+        self.engine.corrections(map)
+    }
 
-/// `rev` checked against the map's history (the latest when `None`).
-fn resolve(conn: &Connection, map_id: i64, map: &str, rev: Option<u32>) -> Result<u32, StoreError> {
-    let last = latest(conn, map_id)?;
-    match rev {
-        None if last > 0 => Ok(last),
-        Some(r) if r >= 1 && r <= last => Ok(r),
-        _ => Err(StoreError::NoSuchRevision {
-            map: map.to_string(),
-            rev: rev.unwrap_or(0),
-            latest: last,
-        }),
+    /// The key of `map`'s corrections now (see
+    /// [`super::CorrectionResults::key`]).
+    pub fn corrections_key(&self, map: &str) -> Result<CorrectionsKey, StoreError> {
+        self.engine.corrections_key(map)
     }
-}
 
-/// Revision `seq` of a map, rebuilt from the rows valid in it.
-pub(crate) fn load_at(
-    conn: &Connection,
-    map_id: i64,
-    map: &str,
-    seq: u32,
-) -> Result<Nrg, StoreError> {
-    let corrupt = |row: i64, what: String| StoreError::Corrupt {
-        map: map.to_string(),
-        row,
-        what,
-    };
-    // The latest revision is exactly the open rows (an index lookup);
-    // older ones filter the map's rows by their validity range.
-    let is_latest = seq == latest(conn, map_id)?;
-    let mut stmt = conn.prepare_cached(if is_latest {
-        "SELECT row_id, space_id, kind, name, attributes, anchor_x, anchor_y, geometry,
-                doorway_ax, doorway_ay, doorway_bx, doorway_by
-         FROM spaces WHERE map_id = ?1 AND valid_to IS NULL AND ?2 > 0"
-    } else {
-        "SELECT row_id, space_id, kind, name, attributes, anchor_x, anchor_y, geometry,
-                doorway_ax, doorway_ay, doorway_bx, doorway_by
-         FROM spaces WHERE map_id = ?1 AND valid_from <= ?2
-           AND (valid_to IS NULL OR valid_to > ?2)"
-    })?;
-    let mut rows = stmt.query(params![map_id, seq])?;
-    let mut spaces = Vec::new();
-    while let Some(r) = rows.next()? {
-        let row_id: i64 = r.get(0)?;
-        let kind: String = r.get(2)?;
-        let kind = SpaceKind::from_str(&kind).map_err(|e| corrupt(row_id, e))?;
-        let attributes: String = r.get(4)?;
-        let attributes =
-            serde_json::from_str(&attributes).map_err(|e| corrupt(row_id, e.to_string()))?;
-        let blob = r
-            .get_ref(7)?
-            .as_blob()
-            .map_err(|e| corrupt(row_id, e.to_string()))?;
-        let (polygon, holes) = geometry_blob::decode(blob).map_err(|e| corrupt(row_id, e))?;
-        let mut space = Space::new(SpaceId(r.get(1)?), kind, [r.get(5)?, r.get(6)?], polygon);
-        space.name = r.get(3)?;
-        space.holes = holes;
-        space.attributes = attributes;
-        let line: [Option<f64>; 4] = [r.get(8)?, r.get(9)?, r.get(10)?, r.get(11)?];
-        if let [Some(ax), Some(ay), Some(bx), Some(by)] = line {
-            space.doorway = Some([[ax, ay], [bx, by]]);
-        }
-        spaces.push(space);
+    /// One above the largest space id `map` ever used (1 for a new map):
+    /// the first id an edit may give a new space.
+    pub fn next_space_id(&self, map: &str) -> Result<SpaceId, StoreError> {
+        self.engine.next_space_id(map)
     }
-    let mut stmt = conn.prepare_cached(if is_latest {
-        "SELECT a, b, kind, length_m FROM connections
-         WHERE map_id = ?1 AND valid_to IS NULL AND ?2 > 0"
-    } else {
-        "SELECT a, b, kind, length_m FROM connections WHERE map_id = ?1 AND valid_from <= ?2
-           AND (valid_to IS NULL OR valid_to > ?2)"
-    })?;
-    let mut rows = stmt.query(params![map_id, seq])?;
-    let mut links = Vec::new();
-    while let Some(r) = rows.next()? {
-        let kind: String = r.get(2)?;
-        links.push(Link {
-            a: SpaceId(r.get(0)?),
-            b: SpaceId(r.get(1)?),
-            kind: ConnectionKind::from_str(&kind).map_err(|e| corrupt(0, e))?,
-            length_m: r.get(3)?,
-        });
+
+    /// A value that changes whenever anything is committed to the
+    /// database by anyone; `None` when the engine has no cheap one (see
+    /// [`super::ReadStore::change_token`]).
+    pub fn change_token(&self) -> Result<Option<u64>, StoreError> {
+        self.engine.change_token()
     }
-    Nrg::new(spaces, links).map_err(|e| corrupt(0, e.to_string()))
 }

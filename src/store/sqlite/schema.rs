@@ -6,13 +6,14 @@ use std::path::Path;
 use rusqlite::{Connection, TransactionBehavior};
 use rusqlite_migration::{M, Migrations};
 
-use super::StoreError;
+use super::fault::{R, fail};
+use crate::store::StoreError;
 
 const MIGRATIONS: &[M<'static>] = &[
-    M::up(include_str!("../../migrations/0001_init.sql")),
-    M::up(include_str!("../../migrations/0002_revision_grids.sql")),
-    M::up(include_str!("../../migrations/0003_doorways.sql")),
-    M::up(include_str!("../../migrations/0004_corrections.sql")),
+    M::up(include_str!("../../../migrations/0001_init.sql")),
+    M::up(include_str!("../../../migrations/0002_revision_grids.sql")),
+    M::up(include_str!("../../../migrations/0003_doorways.sql")),
+    M::up(include_str!("../../../migrations/0004_corrections.sql")),
 ];
 
 /// The newest schema version this build knows (the number of migrations).
@@ -20,15 +21,15 @@ pub const SCHEMA_VERSION: i64 = MIGRATIONS.len() as i64;
 
 /// Checks the schema version, refusing (without writing anything) a
 /// database newer than this build, then switches to WAL and migrates.
-pub(crate) fn prepare(conn: &mut Connection, path: &Path) -> Result<(), StoreError> {
-    let open_err = |source| StoreError::Open {
-        path: path.to_path_buf(),
-        source,
+pub(super) fn prepare(conn: &mut Connection, path: &Path) -> R<()> {
+    let open_err = |e: rusqlite::Error| StoreError::Open {
+        location: path.display().to_string(),
+        source: Box::new(e),
     };
     let found = user_version(conn).map_err(open_err)?;
     if found > SCHEMA_VERSION {
-        return Err(StoreError::TooNew {
-            path: path.to_path_buf(),
+        return fail(StoreError::TooNew {
+            path: path.display().to_string(),
             found,
             known: SCHEMA_VERSION,
         });
@@ -36,9 +37,7 @@ pub(crate) fn prepare(conn: &mut Connection, path: &Path) -> Result<(), StoreErr
     // WAL: readers never wait for a writer, and a killed writer leaves
     // nothing half-done. NORMAL sync is crash-safe in WAL mode (only a
     // power cut may lose the last commits, never corrupt the file).
-    let _mode: String = conn
-        .pragma_update_and_check(None, "journal_mode", "wal", |r| r.get(0))
-        .map_err(StoreError::from)?;
+    let _mode: String = conn.pragma_update_and_check(None, "journal_mode", "wal", |r| r.get(0))?;
     conn.pragma_update(None, "synchronous", "NORMAL")?;
     conn.pragma_update(None, "foreign_keys", "ON")?;
     if found == SCHEMA_VERSION {
@@ -50,8 +49,8 @@ pub(crate) fn prepare(conn: &mut Connection, path: &Path) -> Result<(), StoreErr
     if let Err(e) = result {
         // Another process may have migrated the file meanwhile.
         if user_version(conn).ok() != Some(SCHEMA_VERSION) {
-            return Err(StoreError::Migration {
-                path: path.to_path_buf(),
+            return fail(StoreError::Migration {
+                path: path.display().to_string(),
                 known: SCHEMA_VERSION,
                 message: e.to_string(),
             });
