@@ -79,10 +79,11 @@ impl Source for Store {
         let rev = revision_u32(map, revision)?;
         let latest = Store::revision(self, map, None).map_err(to_source)?.seq;
         if rev != latest {
-            return Err(SourceError::Backend(
-                format!("NAME works on the latest revision ({latest}) of '{map}'; USE {map} first")
-                    .into(),
-            ));
+            return Err(SourceError::NotLatest {
+                map: map.to_string(),
+                revision,
+                latest: u64::from(latest),
+            });
         }
         let meta = ImportMeta::new(format!("name space {id} \"{name}\""), "nrgdb query");
         let info = Store::rename_space(self, map, id, Some(name), meta).map_err(to_source)?;

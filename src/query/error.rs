@@ -51,7 +51,7 @@ pub enum SourceError {
     Edit(#[from] crate::edit::EditError),
     /// A write aimed at a revision that is not the map's latest.
     #[error(
-        "revision {revision} is not the latest of '{map}' ({latest}); corrections apply to the latest: USE {map} first"
+        "revision {revision} is not the latest of '{map}' ({latest}); writes (NAME and the corrections) apply to the latest: USE {map} first"
     )]
     NotLatest {
         /// The map.

@@ -212,6 +212,14 @@ impl Source for MemorySource {
         id: SpaceId,
         name: &str,
     ) -> Result<u64, SourceError> {
+        let latest = self.map(map)?.len() as u64;
+        if revision != latest {
+            return Err(SourceError::NotLatest {
+                map: map.to_string(),
+                revision,
+                latest,
+            });
+        }
         let (mut spaces, connections) = self.revision(map, revision)?.nrg.clone().into_parts();
         for s in spaces.iter_mut().filter(|s| s.id == id) {
             s.name = Some(name.to_string());

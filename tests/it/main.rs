@@ -51,6 +51,8 @@ mod viewer_e2e;
 mod store;
 mod store_building;
 mod store_cli;
+mod store_conformance;
+mod store_engines;
 
 mod server_cli;
 mod server_client;
