@@ -32,11 +32,14 @@ mod correction;
 pub mod delta;
 pub mod engine;
 mod error;
+mod geometry_blob;
 mod grid_png;
 mod history;
 mod identity;
 mod limits;
 pub mod memory;
+#[cfg(feature = "postgres")]
+pub mod postgres;
 mod read;
 pub mod sqlite;
 
@@ -211,6 +214,34 @@ impl Store {
             });
         }
         Store::open(path)
+    }
+
+    /// Opens the database `db`: a `postgres://` (or `postgresql://`) URL
+    /// names a PostgreSQL database (with PostGIS; nrgdb creates or
+    /// migrates its schema `nrgdb` there), anything else an SQLite file
+    /// (created if needed).
+    pub fn open_db(db: &str) -> Result<Store, StoreError> {
+        #[cfg(feature = "postgres")]
+        if postgres::is_postgres_url(db) {
+            return Ok(Store::on(Box::new(postgres::PostgresStore::open(db)?)));
+        }
+        #[cfg(not(feature = "postgres"))]
+        if db.starts_with("postgres://") || db.starts_with("postgresql://") {
+            return Err(StoreError::Open {
+                location: "the PostgreSQL URL".into(),
+                source: "this nrgdb was built without the `postgres` feature".into(),
+            });
+        }
+        Store::open(Path::new(db))
+    }
+
+    /// [`Store::open_db`] for commands that only read: an SQLite file must
+    /// exist already ([`StoreError::NoDatabase`]).
+    pub fn open_existing_db(db: &str) -> Result<Store, StoreError> {
+        if db.starts_with("postgres://") || db.starts_with("postgresql://") {
+            return Store::open_db(db);
+        }
+        Store::open_existing(Path::new(db))
     }
 
     /// A fresh, empty database in memory ([`memory::MemoryStore`]: tests,

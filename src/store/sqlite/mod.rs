@@ -7,7 +7,6 @@
 
 mod corrections;
 mod fault;
-mod geometry_blob;
 mod read;
 mod schema;
 mod write;

@@ -6,10 +6,10 @@ use std::str::FromStr;
 use rusqlite::{Connection, OptionalExtension, Row, params};
 
 use super::fault::{R, fail};
-use super::geometry_blob;
 use crate::model::{
     Connection as Link, ConnectionKind, Nrg, Space, SpaceId, SpaceKind, point_in_ring, polygon_area,
 };
+use crate::store::geometry_blob;
 use crate::store::{EncodedGrid, MapInfo, RevisionInfo, StoreError};
 
 /// All maps, by name.

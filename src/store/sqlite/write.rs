@@ -11,10 +11,10 @@ use rusqlite::{Connection, OptionalExtension, TransactionBehavior, params};
 
 use super::corrections::{insert_correction, mark_dropped, record_results};
 use super::fault::{R, fail};
-use super::geometry_blob;
 use super::read::{latest, load_at, map_id, revision_at};
 use crate::model::{Nrg, Space};
 use crate::store::delta::{Delta, bounding_box};
+use crate::store::geometry_blob;
 use crate::store::{Commit, Committed, EncodedGrid, ImportMeta, StoreError};
 
 /// Writes `c` in one write transaction (see [`crate::store::engine`]).

@@ -1,0 +1,181 @@
+//! The PostgreSQL/PostGIS engine (`--db postgres://…`): for campuses and
+//! fleets, several writers and several stateless servers on one database.
+//!
+//! The records are those of the SQLite engine, in the schema `nrgdb`
+//! (`migrations/postgres/*.sql`, applied on open under an advisory lock),
+//! with each space's outline also as a PostGIS polygon (GiST-indexed:
+//! `LOCATE` uses it) and each connection as a line, plus views for GIS
+//! tools (`latest_spaces`, `latest_connections`) and pgRouting
+//! (`route_edges`). Writers of one map serialise on a transaction-level
+//! advisory lock, so its history stays a line; reads run in a
+//! repeatable-read snapshot. No client type leaves this module.
+
+mod corrections;
+mod fault;
+mod read;
+mod schema;
+mod write;
+
+use std::cell::RefCell;
+use std::str::FromStr;
+use std::time::Duration;
+
+use postgres::{Client, Config, NoTls};
+
+use super::engine::{Commit, Committed, Engine, ReadStore, WriteStore};
+use super::{
+    Correction, CorrectionsKey, DEFAULT_BUSY_TIMEOUT, EncodedGrid, MapInfo, RevisionInfo,
+    StoreError,
+};
+use crate::model::{Nrg, SpaceId};
+use fault::R;
+
+pub use schema::PG_SCHEMA_VERSION;
+
+/// Whether `db` names a PostgreSQL database (`postgres://` or
+/// `postgresql://`) rather than an SQLite file.
+pub fn is_postgres_url(db: &str) -> bool {
+    db.starts_with("postgres://") || db.starts_with("postgresql://")
+}
+
+/// A connection to a PostgreSQL database with PostGIS.
+pub struct PostgresStore {
+    client: RefCell<Client>,
+    location: String,
+}
+
+impl std::fmt::Debug for PostgresStore {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("PostgresStore")
+            .field("location", &self.location)
+            .finish()
+    }
+}
+
+impl PostgresStore {
+    /// Connects to `url` (`postgres://user[:password]@host[:port]/db`),
+    /// creating or migrating nrgdb's schema. A database whose nrgdb schema
+    /// is newer than this build is refused and left untouched.
+    pub fn open(url: &str) -> Result<PostgresStore, StoreError> {
+        let mut config = Config::from_str(url).map_err(|e| StoreError::Open {
+            location: "the PostgreSQL URL".into(),
+            source: Box::new(e),
+        })?;
+        let location = describe(&config);
+        if config.get_connect_timeout().is_none() {
+            config.connect_timeout(Duration::from_secs(10));
+        }
+        config.application_name("nrgdb");
+        let mut client = config.connect(NoTls).map_err(|e| StoreError::Open {
+            location: location.clone(),
+            source: Box::new(e),
+        })?;
+        schema::prepare(&mut client, &location).map_err(StoreError::from)?;
+        let store = PostgresStore {
+            client: RefCell::new(client),
+            location,
+        };
+        store.set_lock_timeout(DEFAULT_BUSY_TIMEOUT)?;
+        Ok(store)
+    }
+
+    fn set_lock_timeout(&self, timeout: Duration) -> Result<(), StoreError> {
+        self.run(|c| {
+            c.batch_execute(&format!(
+                "SET lock_timeout = {}",
+                timeout.as_millis().max(1)
+            ))?;
+            Ok(())
+        })
+    }
+
+    /// Runs `f` on the connection, naming the database in its error.
+    fn run<T>(&self, f: impl FnOnce(&mut Client) -> R<T>) -> Result<T, StoreError> {
+        let mut client = self.client.borrow_mut();
+        f(&mut client).map_err(|e| match StoreError::from(e) {
+            StoreError::DiskFull { .. } => StoreError::DiskFull {
+                location: self.location.clone(),
+            },
+            other => other,
+        })
+    }
+}
+
+/// `postgres://user@host:port/db`, without the password.
+fn describe(config: &Config) -> String {
+    let host = match config.get_hosts().first() {
+        Some(postgres::config::Host::Tcp(h)) => h.clone(),
+        #[cfg(unix)]
+        Some(postgres::config::Host::Unix(p)) => p.display().to_string(),
+        None => "localhost".into(),
+    };
+    let port = config.get_ports().first().copied().unwrap_or(5432);
+    format!(
+        "postgres://{}@{host}:{port}/{}",
+        config.get_user().unwrap_or(""),
+        config.get_dbname().unwrap_or("")
+    )
+}
+
+impl ReadStore for PostgresStore {
+    fn location(&self) -> String {
+        self.location.clone()
+    }
+    fn maps(&self) -> Result<Vec<MapInfo>, StoreError> {
+        self.run(read::maps)
+    }
+    fn revisions(&self, map: &str) -> Result<Vec<RevisionInfo>, StoreError> {
+        self.run(|c| read::revisions(c, map))
+    }
+    fn revision(&self, map: &str, rev: Option<u32>) -> Result<RevisionInfo, StoreError> {
+        self.run(|c| read::revision(c, map, rev))
+    }
+    fn load(&self, map: &str, rev: Option<u32>) -> Result<Nrg, StoreError> {
+        self.run(|c| read::load(c, map, rev))
+    }
+    fn locate(
+        &self,
+        map: &str,
+        rev: Option<u32>,
+        x: f64,
+        y: f64,
+    ) -> Result<Option<SpaceId>, StoreError> {
+        self.run(|c| read::locate(c, map, rev, x, y))
+    }
+    fn grid(&self, map: &str, rev: Option<u32>) -> Result<Option<EncodedGrid>, StoreError> {
+        self.run(|c| read::grid(c, map, rev))
+    }
+    fn corrections(&self, map: &str) -> Result<Vec<Correction>, StoreError> {
+        self.run(|c| corrections::all(c, map))
+    }
+    fn corrections_key(&self, map: &str) -> Result<CorrectionsKey, StoreError> {
+        self.run(|c| corrections::key_of(c, map))
+    }
+    fn next_space_id(&self, map: &str) -> Result<SpaceId, StoreError> {
+        self.run(|c| write::next_space_id_of(c, map))
+    }
+    /// No cheap token: several servers share the database, and asking for
+    /// the latest revision is one indexed query, so callers ask every time
+    /// and never serve a stale "latest".
+    fn change_token(&self) -> Result<Option<u64>, StoreError> {
+        Ok(None)
+    }
+}
+
+impl WriteStore for PostgresStore {
+    fn commit(&mut self, commit: &Commit<'_>) -> Result<Committed, StoreError> {
+        self.run(|c| write::commit(c, commit))
+    }
+    fn drop_correction(&mut self, map: &str, id: u32) -> Result<Correction, StoreError> {
+        self.run(|c| corrections::drop(c, map, id))
+    }
+}
+
+impl Engine for PostgresStore {
+    fn set_busy_timeout(&mut self, timeout: Duration) -> Result<(), StoreError> {
+        self.set_lock_timeout(timeout)
+    }
+    fn integrity_check(&self) -> Result<Vec<String>, StoreError> {
+        self.run(read::integrity)
+    }
+}

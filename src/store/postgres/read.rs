@@ -1,0 +1,303 @@
+//! Reading the PostgreSQL engine, each call in one repeatable-read
+//! snapshot: maps, revisions, a revision as an [`Nrg`], point location
+//! (GiST on the PostGIS outline, then point-in-polygon on the exact one),
+//! grids, and the consistency check.
+
+use std::str::FromStr;
+
+use postgres::{Client, GenericClient, IsolationLevel, Row, Transaction};
+
+use super::fault::{R, fail};
+use crate::model::{
+    Connection as Link, ConnectionKind, Nrg, Space, SpaceId, SpaceKind, point_in_ring, polygon_area,
+};
+use crate::store::{EncodedGrid, MapInfo, RevisionInfo, StoreError, geometry_blob};
+
+/// A read-only snapshot.
+fn snapshot(client: &mut Client) -> R<Transaction<'_>> {
+    Ok(client
+        .build_transaction()
+        .isolation_level(IsolationLevel::RepeatableRead)
+        .read_only(true)
+        .start()?)
+}
+
+/// All maps, by name.
+pub(super) fn maps(client: &mut Client) -> R<Vec<MapInfo>> {
+    let rows = client.query(
+        "SELECT m.name, m.created_at, COALESCE(MAX(r.seq), 0)
+         FROM maps m LEFT JOIN revisions r ON r.map_id = m.id
+         GROUP BY m.id ORDER BY m.name",
+        &[],
+    )?;
+    Ok(rows
+        .iter()
+        .map(|r| MapInfo {
+            name: r.get(0),
+            created_at: r.get(1),
+            latest: u32_of(r.get(2)),
+        })
+        .collect())
+}
+
+pub(super) const REVISION_COLUMNS: &str = "seq, parent, created_at, source_name, source_sha256, \
+     params, message, author, space_count, connection_count, spaces_added, spaces_changed, \
+     spaces_removed";
+
+fn u32_of(v: i32) -> u32 {
+    u32::try_from(v).unwrap_or(0)
+}
+
+fn count(v: i64) -> usize {
+    usize::try_from(v).unwrap_or(0)
+}
+
+pub(super) fn revision_info(map: &str, r: &Row) -> RevisionInfo {
+    let params: Option<String> = r.get(5);
+    RevisionInfo {
+        map: map.to_string(),
+        seq: u32_of(r.get(0)),
+        parent: r.get::<_, Option<i32>>(1).map(u32_of),
+        created_at: r.get(2),
+        source_name: r.get(3),
+        source_sha256: r.get(4),
+        params: params.and_then(|p| serde_json::from_str(&p).ok()),
+        message: r.get(6),
+        author: r.get(7),
+        spaces: count(r.get(8)),
+        connections: count(r.get(9)),
+        spaces_added: count(r.get(10)),
+        spaces_changed: count(r.get(11)),
+        spaces_removed: count(r.get(12)),
+    }
+}
+
+/// The revisions of `map`, oldest first.
+pub(super) fn revisions(client: &mut Client, map: &str) -> R<Vec<RevisionInfo>> {
+    let mut tx = snapshot(client)?;
+    let map_id = map_id(&mut tx, map)?;
+    let rows = tx.query(
+        &format!("SELECT {REVISION_COLUMNS} FROM revisions WHERE map_id = $1 ORDER BY seq"),
+        &[&map_id],
+    )?;
+    Ok(rows.iter().map(|r| revision_info(map, r)).collect())
+}
+
+/// One revision's record, the latest when `rev` is `None`.
+pub(super) fn revision(client: &mut Client, map: &str, rev: Option<u32>) -> R<RevisionInfo> {
+    let mut tx = snapshot(client)?;
+    let map_id = map_id(&mut tx, map)?;
+    let seq = resolve(&mut tx, map_id, map, rev)?;
+    revision_at(&mut tx, map_id, map, seq)
+}
+
+/// The record of revision `seq`.
+pub(super) fn revision_at(
+    c: &mut impl GenericClient,
+    map_id: i64,
+    map: &str,
+    seq: u32,
+) -> R<RevisionInfo> {
+    let row = c.query_one(
+        &format!("SELECT {REVISION_COLUMNS} FROM revisions WHERE map_id = $1 AND seq = $2"),
+        &[&map_id, &(seq as i32)],
+    )?;
+    Ok(revision_info(map, &row))
+}
+
+/// Revision `rev` of `map` (the latest when `None`).
+pub(super) fn load(client: &mut Client, map: &str, rev: Option<u32>) -> R<Nrg> {
+    let mut tx = snapshot(client)?;
+    let map_id = map_id(&mut tx, map)?;
+    let seq = resolve(&mut tx, map_id, map, rev)?;
+    load_at(&mut tx, map_id, map, seq)
+}
+
+/// The smallest space of the revision containing `(x, y)`.
+pub(super) fn locate(
+    client: &mut Client,
+    map: &str,
+    rev: Option<u32>,
+    x: f64,
+    y: f64,
+) -> R<Option<SpaceId>> {
+    let mut tx = snapshot(client)?;
+    let map_id = map_id(&mut tx, map)?;
+    let seq = resolve(&mut tx, map_id, map, rev)? as i32;
+    // The GiST index finds the outlines whose box holds the point; the
+    // exact test is the same as every other engine's.
+    let rows = tx.query(
+        "SELECT row_id, space_id, geometry FROM spaces
+         WHERE map_id = $1 AND valid_from <= $2 AND (valid_to IS NULL OR valid_to > $2)
+           AND geom && ST_MakePoint($3, $4)",
+        &[&map_id, &seq, &x, &y],
+    )?;
+    let mut best: Option<(f64, SpaceId)> = None;
+    for row in rows {
+        let row_id: i64 = row.get(0);
+        let (polygon, holes) =
+            geometry_blob::decode(row.get(2)).map_err(|what| StoreError::Corrupt {
+                map: map.to_string(),
+                row: row_id,
+                what,
+            })?;
+        let p = [x, y];
+        if point_in_ring(p, &polygon) && !holes.iter().any(|h| point_in_ring(p, h)) {
+            let area = polygon_area(&polygon).abs();
+            if best.is_none_or(|(a, _)| area < a) {
+                best = Some((area, space_id(map, row_id, row.get(1))?));
+            }
+        }
+    }
+    Ok(best.map(|(_, id)| id))
+}
+
+fn space_id(map: &str, row: i64, v: i64) -> R<SpaceId> {
+    match u32::try_from(v) {
+        Ok(id) => Ok(SpaceId(id)),
+        Err(_) => fail(StoreError::Corrupt {
+            map: map.to_string(),
+            row,
+            what: format!("space id {v} out of range"),
+        }),
+    }
+}
+
+/// The grid stored with revision `rev` (latest when `None`).
+pub(super) fn grid(client: &mut Client, map: &str, rev: Option<u32>) -> R<Option<EncodedGrid>> {
+    let mut tx = snapshot(client)?;
+    let map_id = map_id(&mut tx, map)?;
+    let seq = resolve(&mut tx, map_id, map, rev)? as i32;
+    let row = tx.query_opt(
+        "SELECT width, height, resolution, origin_x, origin_y, origin_yaw, png
+         FROM revision_grids WHERE map_id = $1 AND seq = $2",
+        &[&map_id, &seq],
+    )?;
+    Ok(row.map(|r| EncodedGrid {
+        width: u32::try_from(r.get::<_, i64>(0)).unwrap_or(0),
+        height: u32::try_from(r.get::<_, i64>(1)).unwrap_or(0),
+        resolution: r.get(2),
+        origin: [r.get(3), r.get(4), r.get(5)],
+        png: r.get(6),
+    }))
+}
+
+/// Maps whose history is not a line 1..n, or whose latest revision's row
+/// count disagrees with its record; `["ok"]` when there are none.
+pub(super) fn integrity(client: &mut Client) -> R<Vec<String>> {
+    let rows = client.query(
+        "SELECT m.name, COUNT(r.seq), COALESCE(MAX(r.seq), 0),
+                (SELECT COUNT(*) FROM spaces s WHERE s.map_id = m.id AND s.valid_to IS NULL),
+                (SELECT r2.space_count FROM revisions r2 WHERE r2.map_id = m.id
+                 ORDER BY r2.seq DESC LIMIT 1)
+         FROM maps m LEFT JOIN revisions r ON r.map_id = m.id GROUP BY m.id, m.name",
+        &[],
+    )?;
+    let mut problems = Vec::new();
+    for r in rows {
+        let (name, n, max): (String, i64, i32) = (r.get(0), r.get(1), r.get(2));
+        if n != i64::from(max) {
+            problems.push(format!(
+                "map '{name}': {n} revisions but the latest is {max}"
+            ));
+        }
+        let (open, recorded): (i64, Option<i64>) = (r.get(3), r.get(4));
+        if recorded.is_some_and(|c| c != open) {
+            problems.push(format!(
+                "map '{name}': the latest revision records {} spaces, {open} rows are open",
+                recorded.unwrap_or(0)
+            ));
+        }
+    }
+    if problems.is_empty() {
+        problems.push("ok".into());
+    }
+    Ok(problems)
+}
+
+/// The id of map `name`, or [`StoreError::NoSuchMap`] listing the maps.
+pub(super) fn map_id(c: &mut impl GenericClient, name: &str) -> R<i64> {
+    if let Some(row) = c.query_opt("SELECT id FROM maps WHERE name = $1", &[&name])? {
+        return Ok(row.get(0));
+    }
+    let names: Vec<String> = c
+        .query("SELECT name FROM maps ORDER BY name", &[])?
+        .iter()
+        .map(|r| r.get(0))
+        .collect();
+    fail(StoreError::no_such_map(name, &names))
+}
+
+/// The latest revision of a map, 0 when it has none.
+pub(super) fn latest(c: &mut impl GenericClient, map_id: i64) -> R<u32> {
+    let v: i32 = c
+        .query_one(
+            "SELECT COALESCE(MAX(seq), 0) FROM revisions WHERE map_id = $1",
+            &[&map_id],
+        )?
+        .get(0);
+    Ok(u32_of(v))
+}
+
+fn resolve(c: &mut impl GenericClient, map_id: i64, map: &str, rev: Option<u32>) -> R<u32> {
+    let last = latest(c, map_id)?;
+    match rev {
+        None if last > 0 => Ok(last),
+        Some(r) if r >= 1 && r <= last => Ok(r),
+        _ => fail(StoreError::NoSuchRevision {
+            map: map.to_string(),
+            rev: rev.unwrap_or(0),
+            latest: last,
+        }),
+    }
+}
+
+/// Revision `seq` of a map, rebuilt from the rows valid in it.
+pub(super) fn load_at(c: &mut impl GenericClient, map_id: i64, map: &str, seq: u32) -> R<Nrg> {
+    let corrupt = |row: i64, what: String| StoreError::Corrupt {
+        map: map.to_string(),
+        row,
+        what,
+    };
+    let seq = seq as i32;
+    let rows = c.query(
+        "SELECT row_id, space_id, kind, name, attributes::text, anchor_x, anchor_y, geometry,
+                doorway_ax, doorway_ay, doorway_bx, doorway_by
+         FROM spaces WHERE map_id = $1 AND valid_from <= $2
+           AND (valid_to IS NULL OR valid_to > $2)",
+        &[&map_id, &seq],
+    )?;
+    let mut spaces = Vec::with_capacity(rows.len());
+    for r in rows {
+        let row_id: i64 = r.get(0);
+        let kind = SpaceKind::from_str(r.get(2)).map_err(|e| corrupt(row_id, e))?;
+        let attributes =
+            serde_json::from_str(r.get(4)).map_err(|e| corrupt(row_id, e.to_string()))?;
+        let (polygon, holes) = geometry_blob::decode(r.get(7)).map_err(|e| corrupt(row_id, e))?;
+        let id = space_id(map, row_id, r.get(1))?;
+        let mut space = Space::new(id, kind, [r.get(5), r.get(6)], polygon);
+        space.name = r.get(3);
+        space.holes = holes;
+        space.attributes = attributes;
+        let line: [Option<f64>; 4] = [r.get(8), r.get(9), r.get(10), r.get(11)];
+        if let [Some(ax), Some(ay), Some(bx), Some(by)] = line {
+            space.doorway = Some([[ax, ay], [bx, by]]);
+        }
+        spaces.push(space);
+    }
+    let rows = c.query(
+        "SELECT a, b, kind, length_m FROM connections WHERE map_id = $1 AND valid_from <= $2
+           AND (valid_to IS NULL OR valid_to > $2)",
+        &[&map_id, &seq],
+    )?;
+    let mut links = Vec::with_capacity(rows.len());
+    for r in rows {
+        links.push(Link {
+            a: space_id(map, 0, r.get(0))?,
+            b: space_id(map, 0, r.get(1))?,
+            kind: ConnectionKind::from_str(r.get(2)).map_err(|e| corrupt(0, e))?,
+            length_m: r.get(3),
+        });
+    }
+    Ok(Nrg::new(spaces, links).map_err(|e| corrupt(0, e.to_string()))?)
+}
