@@ -25,8 +25,9 @@ use crate::store::{ImportMeta, Store};
 pub struct DemoOptions {
     /// Folder for the map, ground truth, IndoorGML and picture.
     pub dir: PathBuf,
-    /// The database (created when missing).
-    pub db: PathBuf,
+    /// The database: an SQLite file (created when missing) or a
+    /// PostgreSQL URL.
+    pub db: String,
     /// The map name in the database.
     pub map: String,
     /// Seed of the simulated building.
@@ -37,7 +38,7 @@ impl Default for DemoOptions {
     fn default() -> DemoOptions {
         DemoOptions {
             dir: PathBuf::from("nrgdb-demo"),
-            db: PathBuf::from("nrgdb.sqlite"),
+            db: "nrgdb.sqlite".into(),
             map: "demo".into(),
             seed: 7,
         }
@@ -121,7 +122,7 @@ pub fn run(opts: &DemoOptions, out: &mut dyn Write) -> Result<(), DemoError> {
     let first = extract(&grid, &params)?;
     say(out, format!("2. extracted the NRG: {}", census(&first.nrg)))?;
 
-    let mut store = Store::open(&opts.db)?;
+    let mut store = Store::open_db(&opts.db)?;
     let yaml = std::fs::read(&files.yaml).map_err(io(&files.yaml))?;
     let meta = |msg: &str| {
         let mut m = ImportMeta::new(msg, "nrgdb demo").with_source("map.yaml", &yaml);
@@ -190,7 +191,7 @@ pub fn run(opts: &DemoOptions, out: &mut dyn Write) -> Result<(), DemoError> {
             "3. stored revisions {a} and {b} (door {} shut) of map '{}' in {}; revision {} is correction {} ({statement}), re-applied to the re-mapped revision {b}: {} re-applied, {} failed; staff-only there: space {}",
             stable(door),
             opts.map,
-            opts.db.display(),
+            opts.db,
             corrected.revision.seq,
             corrected.correction,
             remapped.corrections_applied.len(),
@@ -263,7 +264,7 @@ pub fn run(opts: &DemoOptions, out: &mut dyn Write) -> Result<(), DemoError> {
         format!(
             "done in {:.1} s. Try: nrgdb query --db {} --map {} 'FIND rooms ORDER BY area DESC LIMIT 5'",
             secs(start.elapsed()),
-            opts.db.display(),
+            opts.db,
             opts.map
         ),
     )?;

@@ -1,37 +1,57 @@
 //! The `--db` option shared by the store subcommands, and the `NAME[@REV]`
 //! syntax.
 
-use std::path::PathBuf;
-
 use miette::{IntoDiagnostic, WrapErr};
 use nrgdb::store::Store;
 
 /// Where the database is.
 #[derive(Debug, Clone, clap::Args)]
 pub struct DbArg {
-    /// The database file; created by `import`, `apply` or `name`.
+    /// The database: an SQLite file (created by `import`, `apply` or
+    /// `name`) or a PostgreSQL URL `postgres://user@host/db` (PostGIS
+    /// needed; nrgdb creates its schema `nrgdb` there).
     #[arg(
         long,
         env = "NRGDB_DB",
         default_value = "nrgdb.sqlite",
         value_name = "DB"
     )]
-    pub db: PathBuf,
+    pub db: String,
 }
 
 impl DbArg {
     /// Opens the database (creating it and its schema if needed): for the
     /// commands that write (`import`, `apply`, `name`).
     pub fn open(&self) -> miette::Result<Store> {
-        Store::open(&self.db)
+        Store::open_db(&self.db)
             .into_diagnostic()
-            .wrap_err_with(|| format!("opening database {}", self.db.display()))
+            .wrap_err_with(|| format!("opening database {}", self.shown()))
     }
 
     /// Opens an existing database, refusing a path with no file: for the
     /// commands that only read.
     pub fn open_existing(&self) -> miette::Result<Store> {
-        Store::open_existing(&self.db).into_diagnostic()
+        Store::open_existing_db(&self.db).into_diagnostic()
+    }
+
+    /// The database as messages name it (a URL without its password).
+    pub fn shown(&self) -> String {
+        hide_password(&self.db)
+    }
+}
+
+/// `db` with the password of a `scheme://user:password@host/…` URL
+/// replaced by `***`.
+pub fn hide_password(db: &str) -> String {
+    let Some((scheme, rest)) = db.split_once("://") else {
+        return db.to_string();
+    };
+    match rest.split_once('@') {
+        Some((user, host)) if user.contains(':') => {
+            let name = user.split(':').next().unwrap_or("");
+            format!("{scheme}://{name}:***@{host}")
+        }
+        _ => db.to_string(),
     }
 }
 

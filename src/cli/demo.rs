@@ -18,9 +18,10 @@ pub struct Args {
     /// Folder for the map, ground truth, IndoorGML and picture.
     #[arg(long, default_value = "nrgdb-demo")]
     pub dir: PathBuf,
-    /// The database (created when missing).
+    /// The database: an SQLite file (created when missing) or a
+    /// PostgreSQL URL `postgres://user@host/db`.
     #[arg(long, env = "NRGDB_DB", default_value = "nrgdb.sqlite")]
-    pub db: PathBuf,
+    pub db: String,
     /// Seed of the simulated building.
     #[arg(long, default_value_t = 7)]
     pub seed: u64,

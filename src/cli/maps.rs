@@ -37,7 +37,7 @@ pub struct LogArgs {
 pub fn run_maps(args: MapsArgs, out: &mut dyn Write) -> miette::Result<ExitCode> {
     let maps = args.db.open_existing()?.maps().into_diagnostic()?;
     if maps.is_empty() {
-        writeln!(out, "no maps in {}", args.db.db.display()).into_diagnostic()?;
+        writeln!(out, "no maps in {}", args.db.shown()).into_diagnostic()?;
         return Ok(ExitCode::from(1));
     }
     writeln!(out, "{:<24} {:>9}  created", "map", "revisions").into_diagnostic()?;

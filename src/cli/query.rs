@@ -13,10 +13,11 @@ use nrgdb::query::{
 /// Where the model comes from, shared by `query` and `repl`.
 #[derive(Debug, Clone, clap::Args)]
 pub struct SourceArgs {
-    /// SQLite database of map revisions (`nrgdb import` fills it; default
-    /// `$NRGDB_DB`, else ./nrgdb.sqlite when it exists).
+    /// Database of map revisions, an SQLite file or a PostgreSQL URL
+    /// (`nrgdb import` fills it; default `$NRGDB_DB`, else ./nrgdb.sqlite
+    /// when it exists).
     #[arg(long, value_name = "DB")]
-    pub db: Option<PathBuf>,
+    pub db: Option<String>,
     /// A model file (.json, .gml or .geojson), queried in memory as map
     /// `model` (or the name given with --map).
     #[arg(long, value_name = "FILE", conflicts_with = "db")]
@@ -77,19 +78,21 @@ pub fn open_source(args: &SourceArgs) -> miette::Result<Box<dyn Source>> {
     // $NRGDB_DB is read here rather than by clap, so that a set variable
     // does not conflict with --model or --demo (only --db does).
     let chosen = args.model.is_some() || args.demo.is_some();
-    let from_env = std::env::var_os("NRGDB_DB")
-        .filter(|v| !v.is_empty())
-        .map(PathBuf::from);
-    let default_db = PathBuf::from("nrgdb.sqlite");
+    let from_env = std::env::var("NRGDB_DB").ok().filter(|v| !v.is_empty());
+    let default_db = "nrgdb.sqlite";
     let db = args.db.clone().or_else(|| {
         if chosen {
             None
         } else {
-            from_env.or_else(|| default_db.exists().then_some(default_db))
+            from_env.or_else(|| {
+                std::path::Path::new(default_db)
+                    .exists()
+                    .then(|| default_db.to_string())
+            })
         }
     });
     if let Some(db) = db {
-        let store = nrgdb::store::Store::open_existing(&db).into_diagnostic()?;
+        let store = nrgdb::store::Store::open_existing_db(&db).into_diagnostic()?;
         return Ok(Box::new(store));
     }
     let mut source = MemorySource::new();

@@ -185,11 +185,11 @@ fn resolve(spec: &str, base: Option<&Resolved>, db: &DbArg) -> miette::Result<Re
         ),
         (Err(_), _) => parse_map_rev(spec)?,
     };
-    if !db.db.exists() {
+    if !db.db.contains("://") && !std::path::Path::new(&db.db).exists() {
         miette::bail!(
             "'{spec}' is not a file, and there is no database {} to find a map in \
              (give a model file, or --db DB / NRGDB_DB)",
-            db.db.display()
+            db.shown()
         );
     }
     let store = db.open_existing()?;
@@ -199,7 +199,7 @@ fn resolve(spec: &str, base: Option<&Resolved>, db: &DbArg) -> miette::Result<Re
         .wrap_err_with(|| {
             format!(
                 "'{spec}' is neither a file nor a revision in {}",
-                db.db.display()
+                db.shown()
             )
         })?;
     let rev = LoadedRevision::load(&store, &name, u64::from(info.seq))

@@ -99,12 +99,16 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         } else {
             "read-only"
         };
-        let state = AppState::new(config.clone())
-            .map_err(|e| miette::miette!("opening database {}: {e}", config.db.display()))?;
+        let state = AppState::new(config.clone()).map_err(|e| {
+            miette::miette!(
+                "opening database {}: {e}",
+                super::db::hide_password(&config.db)
+            )
+        })?;
         writeln!(
             out,
             "nrgdb serving {} on http://{local} ({mode}); Ctrl-C stops",
-            config.db.display()
+            super::db::hide_password(&config.db)
         )
         .into_diagnostic()?;
         out.flush().into_diagnostic()?;

@@ -25,7 +25,7 @@ use crate::diff::{ChangeSet, DiffOptions};
 /// ```
 pub struct Session<S: Source> {
     source: S,
-    current: Option<IndexedRevision>,
+    current: Option<std::sync::Arc<IndexedRevision>>,
     limits: Limits,
     /// Who the corrections this session writes are recorded as made by.
     author: String,
@@ -80,7 +80,7 @@ impl<S: Source> Session<S> {
 
     /// The selected revision, indexed.
     pub fn current(&self) -> Option<&IndexedRevision> {
-        self.current.as_ref()
+        self.current.as_deref()
     }
 
     /// Selects `map` at `revision` (latest when `None`); returns a message.
@@ -92,12 +92,7 @@ impl<S: Source> Session<S> {
             Some(r) => r,
             None => self.source.revisions(map)?.last().map_or(1, |r| r.revision),
         };
-        let nrg = self.source.load(map, revision)?;
-        // Indexing a large revision takes a while: not once the time is up.
-        if self.limits.past_deadline() {
-            return Err(self.limits.timeout_error());
-        }
-        let rev = IndexedRevision::new(map, revision, nrg);
+        let rev = self.source.indexed(map, revision)?;
         let message = format!(
             "using map '{map}' at revision {revision} ({}, {})",
             crate::wording::count(rev.nrg.spaces().len(), "space", "spaces"),
@@ -111,8 +106,8 @@ impl<S: Source> Session<S> {
     pub fn plan(&self, statement: &Statement) -> Result<Plan, QueryError> {
         plan(
             statement,
-            self.current.as_ref(),
-            self.current.as_ref().map(|c| c.map.as_str()),
+            self.current.as_deref(),
+            self.current.as_deref().map(|c| c.map.as_str()),
         )
     }
 

@@ -2,8 +2,10 @@
 //! [`MemorySource`], an in-memory implementation for tests and model files.
 
 use std::collections::BTreeMap;
+use std::sync::Arc;
 
 use super::error::SourceError;
+use super::index::IndexedRevision;
 use super::suggest::suggest;
 use crate::edit::Edit;
 use crate::grid::OccupancyGrid;
@@ -66,6 +68,13 @@ pub trait Source {
     /// aligns revisions on their grids; without them it falls back to the
     /// outlines of the spaces.
     fn grid(&self, map: &str, revision: u64) -> Result<Option<OccupancyGrid>, SourceError>;
+    /// One revision indexed for queries, shared. The default loads and
+    /// indexes it; a source with a cache of indexed revisions (the
+    /// server's, shared by every endpoint) hands out its copy.
+    fn indexed(&self, map: &str, revision: u64) -> Result<Arc<IndexedRevision>, SourceError> {
+        let nrg = self.load(map, revision)?;
+        Ok(Arc::new(IndexedRevision::new(map, revision, nrg)))
+    }
     /// Gives space `id` of `map` at `revision` the name `name`, writing a new
     /// revision (whose model is the old one with that change) and returning
     /// its number. The caller has checked that the space exists.
@@ -278,6 +287,9 @@ impl<S: Source + ?Sized> Source for Box<S> {
     fn grid(&self, map: &str, revision: u64) -> Result<Option<OccupancyGrid>, SourceError> {
         (**self).grid(map, revision)
     }
+    fn indexed(&self, map: &str, revision: u64) -> Result<Arc<IndexedRevision>, SourceError> {
+        (**self).indexed(map, revision)
+    }
     fn rename_space(
         &mut self,
         map: &str,
@@ -312,6 +324,9 @@ impl<S: Source + ?Sized> Source for &mut S {
     }
     fn grid(&self, map: &str, revision: u64) -> Result<Option<OccupancyGrid>, SourceError> {
         (**self).grid(map, revision)
+    }
+    fn indexed(&self, map: &str, revision: u64) -> Result<Arc<IndexedRevision>, SourceError> {
+        (**self).indexed(map, revision)
     }
     fn rename_space(
         &mut self,

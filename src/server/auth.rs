@@ -54,7 +54,7 @@ mod tests {
 
     #[test]
     fn read_only_unauthorized_ok() {
-        let mut c = ServerConfig::new("x".into());
+        let mut c = ServerConfig::new("x");
         let mut h = HeaderMap::new();
         assert!(matches!(require_write(&c, &h), Err(ApiError::ReadOnly)));
         c.token = Some("s3cret".into());

@@ -1,7 +1,6 @@
 //! How the server is started: address, database, token, limits, CORS.
 
 use std::net::SocketAddr;
-use std::path::PathBuf;
 use std::time::Duration;
 
 /// Everything [`super::serve`] needs. [`ServerConfig::new`] gives the safe
@@ -10,8 +9,9 @@ use std::time::Duration;
 /// connections.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ServerConfig {
-    /// The nrgdb database (created if missing).
-    pub db: PathBuf,
+    /// The nrgdb database: an SQLite file (created if missing) or a
+    /// PostgreSQL URL.
+    pub db: String,
     /// Address to listen on (default `127.0.0.1:8080`).
     pub addr: SocketAddr,
     /// Bearer token that writes must present; `None` makes the server read-only.
@@ -47,12 +47,12 @@ impl ServerConfig {
     /// Defaults for serving `db`.
     ///
     /// ```
-    /// let c = nrgdb::server::ServerConfig::new("nrgdb.sqlite".into());
+    /// let c = nrgdb::server::ServerConfig::new("nrgdb.sqlite");
     /// assert!(c.addr.ip().is_loopback() && c.token.is_none());
     /// ```
-    pub fn new(db: PathBuf) -> ServerConfig {
+    pub fn new(db: impl AsRef<std::path::Path>) -> ServerConfig {
         ServerConfig {
-            db,
+            db: db.as_ref().to_string_lossy().into_owned(),
             addr: SocketAddr::from(([127, 0, 0, 1], 8080)),
             token: None,
             cors_origins: Vec::new(),
@@ -79,7 +79,7 @@ mod tests {
 
     #[test]
     fn empty_token_is_read_only() {
-        let mut c = ServerConfig::new("x".into());
+        let mut c = ServerConfig::new("x");
         assert!(!c.writable());
         c.token = Some(String::new());
         assert!(!c.writable());

@@ -234,6 +234,12 @@ impl From<QueryError> for ApiError {
             QueryError::UnknownId(_) | QueryError::UnknownName { .. } => {
                 ApiError::not_found("id", e.to_string())
             }
+            // A storage fault during a query is the server's, not the
+            // client's: 500/503 with the details logged.
+            QueryError::Source(SourceError::Backend(e)) => match e.downcast::<StoreError>() {
+                Ok(store) => ApiError::from(*store),
+                Err(other) => ApiError::Internal(other.to_string()),
+            },
             other => ApiError::bad("query", other.to_string()),
         }
     }

@@ -15,7 +15,7 @@
 //!
 //! ```no_run
 //! # async fn run() -> Result<(), nrgdb::server::ServerError> {
-//! let config = nrgdb::server::ServerConfig::new("nrgdb.sqlite".into());
+//! let config = nrgdb::server::ServerConfig::new("nrgdb.sqlite");
 //! nrgdb::server::serve(config).await
 //! # }
 //! ```

@@ -13,7 +13,7 @@
 //! An engine without a cheap token is asked for the latest every time.
 
 use std::collections::HashMap;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::sync::{Arc, Mutex};
 
 use super::cache::RevisionCache;
@@ -33,27 +33,35 @@ pub struct Slot {
 }
 
 impl Slot {
-    fn open(path: &Path) -> Result<Slot, StoreError> {
+    fn open(db: &str) -> Result<Slot, StoreError> {
         Ok(Slot {
-            store: Store::open(path)?,
+            store: Store::open_db(db)?,
             token: None,
             latest: HashMap::new(),
         })
     }
 
-    /// The latest revision of `map`, from the memo while the database is
-    /// unchanged, else from the store.
-    fn latest(&mut self, map: &str) -> Result<u32, StoreError> {
+    /// The latest revision of `map` as remembered, while the database is
+    /// unchanged (never for an engine without a change token).
+    fn remembered(&mut self, map: &str) -> Result<Option<u32>, StoreError> {
         let token = self.store.change_token()?;
         if token.is_none() || token != self.token {
             self.latest.clear();
             self.token = token;
         }
-        if let Some(seq) = self.latest.get(map) {
-            return Ok(*seq);
+        Ok(self.latest.get(map).copied())
+    }
+
+    /// The latest revision of `map`, from the memo while the database is
+    /// unchanged, else from the store.
+    fn latest(&mut self, map: &str) -> Result<u32, StoreError> {
+        if let Some(seq) = self.remembered(map)? {
+            return Ok(seq);
         }
         let seq = self.store.revision(map, None)?.seq;
-        self.latest.insert(map.to_string(), seq);
+        if self.token.is_some() {
+            self.latest.insert(map.to_string(), seq);
+        }
         Ok(seq)
     }
 }
@@ -61,17 +69,17 @@ impl Slot {
 /// Idle store connections, opened on demand and kept for reuse.
 #[derive(Debug)]
 pub struct StorePool {
-    path: PathBuf,
+    db: String,
     idle: Mutex<Vec<Slot>>,
     max_idle: usize,
 }
 
 impl StorePool {
     /// Opens the database once (creating it and its schema if needed).
-    pub fn open(path: &Path, max_idle: usize) -> Result<StorePool, StoreError> {
-        let first = Slot::open(path)?;
+    pub fn open(db: &str, max_idle: usize) -> Result<StorePool, StoreError> {
+        let first = Slot::open(db)?;
         Ok(StorePool {
-            path: path.to_path_buf(),
+            db: db.to_string(),
             idle: Mutex::new(vec![first]),
             max_idle: max_idle.max(1),
         })
@@ -82,7 +90,7 @@ impl StorePool {
     pub fn with<R>(&self, f: impl FnOnce(&mut Slot) -> R) -> Result<R, StoreError> {
         let mut slot = match self.take_idle() {
             Some(s) => s,
-            None => Slot::open(&self.path)?,
+            None => Slot::open(&self.db)?,
         };
         let out = f(&mut slot);
         self.give_back(slot);
@@ -133,10 +141,11 @@ impl AppState {
     /// token (read-only) the database must exist; with one, uploads may
     /// create it.
     pub fn new(config: ServerConfig) -> Result<AppState, StoreError> {
-        if config.token.is_none() && !config.db.exists() {
+        let is_file = !config.db.contains("://");
+        if config.token.is_none() && is_file && !Path::new(&config.db).exists() {
             // Read-only: nothing could ever fill a database created now.
             return Err(StoreError::NoDatabase {
-                path: config.db.clone(),
+                path: config.db.clone().into(),
             });
         }
         let pool = StorePool::open(&config.db, 16)?;
@@ -217,6 +226,12 @@ impl Ctx<'_> {
         &mut self.slot.store
     }
 
+    /// The store and the revision cache shared by every request (for a
+    /// query session, which selects revisions through the cache too).
+    pub fn store_and_cache(&mut self) -> (&mut Store, &RevisionCache) {
+        (&mut self.slot.store, &self.shared.cache)
+    }
+
     /// Revision `rev` of `map` (the latest when `None`), indexed, from the
     /// cache when there. The latest revision is looked up on every call,
     /// so a new revision is served by the next request.
@@ -236,6 +251,16 @@ impl Ctx<'_> {
         }
         let seq = match rev {
             Some(r) => self.slot.store.revision(map, Some(r))?.seq,
+            // On an async worker only the memo may answer: an engine
+            // without a cheap change token (PostgreSQL) is asked on the
+            // blocking pool.
+            None if self.inline => match self.slot.remembered(map)? {
+                Some(seq) => seq,
+                None => {
+                    self.bailed = true;
+                    return Err(ApiError::Busy);
+                }
+            },
             None => self.slot.latest(map)?,
         };
         if self.inline {

@@ -53,6 +53,7 @@ mod store_building;
 mod store_cli;
 mod store_conformance;
 mod store_engines;
+mod store_replicas;
 
 mod server_cli;
 mod server_client;

@@ -2,6 +2,8 @@
 //! is the query text (`text/plain`) or `{"query", "map", "rev"}` (JSON).
 //! `NAME … AS …` writes a revision and needs the bearer token.
 
+use std::sync::Arc;
+
 use axum::Json;
 use axum::body::Body;
 use axum::extract::State;
@@ -13,10 +15,12 @@ use super::spaces::rows_as_objects;
 use crate::grid::OccupancyGrid;
 use crate::model::{Nrg, SpaceId};
 use crate::query::{
-    Limits, MapInfo, QueryError, QueryResult, RevisionInfo, Session, Source, SourceError, Statement,
+    IndexedRevision, Limits, MapInfo, QueryError, QueryResult, RevisionInfo, Session, Source,
+    SourceError, Statement,
 };
 use crate::server::auth::{has_token, require_write};
 use crate::server::body::read_limited;
+use crate::server::cache::RevisionCache;
 use crate::server::endpoint::{ParamDoc, REV, q};
 use crate::server::error::ApiError;
 use crate::server::params::{Params, parse_rev};
@@ -48,13 +52,26 @@ struct QueryBody {
     rev: Option<Value>,
 }
 
-/// The store seen by a query; NAME is refused without the token.
+/// The store seen by a query, selecting revisions through the server's
+/// cache of indexed revisions (the one every endpoint uses); NAME is
+/// refused without the token.
 struct QuerySource<'a> {
     store: &'a mut Store,
+    cache: &'a RevisionCache,
     writable: bool,
 }
 
 impl Source for QuerySource<'_> {
+    fn indexed(&self, map: &str, revision: u64) -> Result<Arc<IndexedRevision>, SourceError> {
+        let seq = u32::try_from(revision).map_err(|_| SourceError::NoRevision {
+            map: map.to_string(),
+            revision,
+        })?;
+        self.cache.get_or_load(map, seq, || {
+            let nrg = <Store as Source>::load(self.store, map, revision)?;
+            Ok(IndexedRevision::new(map, revision, nrg))
+        })
+    }
     fn maps(&self) -> Result<Vec<MapInfo>, SourceError> {
         <Store as Source>::maps(self.store)
     }
@@ -100,8 +117,10 @@ impl Source for QuerySource<'_> {
     }
 }
 
-fn result_json(result: Result<QueryResult, QueryError>) -> Value {
-    match result {
+/// A statement's result as JSON; a storage fault (500) or a busy store
+/// (503) fails the whole request instead, keeping its class.
+fn result_json(result: Result<QueryResult, QueryError>) -> Result<Value, ApiError> {
+    Ok(match result {
         Ok(QueryResult::Table(t)) => {
             json!({"type": "table", "columns": t.columns, "rows": rows_as_objects(&t)})
         }
@@ -110,9 +129,12 @@ fn result_json(result: Result<QueryResult, QueryError>) -> Value {
         Ok(QueryResult::Plan(p)) => json!({"type": "plan", "plan": p}),
         Err(e) => {
             let api = ApiError::from(e);
+            if matches!(api, ApiError::Internal(_) | ApiError::Busy) {
+                return Err(api);
+            }
             json!({"type": "error", "code": api.code(), "message": api.to_string()})
         }
-    }
+    })
 }
 
 /// `POST /query`.
@@ -181,8 +203,10 @@ pub async fn query(
     };
     state
         .blocking(move |ctx| {
+            let (store, cache) = ctx.store_and_cache();
             let source = QuerySource {
-                store: ctx.store(),
+                store,
+                cache,
                 writable,
             };
             // Limits first: selecting the map indexes a revision, which
@@ -212,7 +236,10 @@ pub async fn query(
             if limits.past_deadline() {
                 return Err(ApiError::Timeout(limits.timeout.as_millis()));
             }
-            let results: Vec<Value> = results.into_iter().map(result_json).collect();
+            let results = results
+                .into_iter()
+                .map(result_json)
+                .collect::<Result<Vec<Value>, ApiError>>()?;
             let current = session
                 .current()
                 .map(|c| json!({"map": c.map, "revision": c.revision}));

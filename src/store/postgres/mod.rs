@@ -40,8 +40,32 @@ pub fn is_postgres_url(db: &str) -> bool {
 
 /// A connection to a PostgreSQL database with PostGIS.
 pub struct PostgresStore {
-    client: RefCell<Client>,
+    /// `None` only while being dropped.
+    client: RefCell<Option<Client>>,
     location: String,
+}
+
+/// Runs `f` where the blocking client may run: the synchronous client
+/// drives a runtime of its own and must not be used from a thread inside
+/// another tokio runtime (the server's blocking pool, an async test), so
+/// there it runs on a scoped thread of its own.
+fn off_runtime<T: Send>(f: impl FnOnce() -> T + Send) -> T {
+    if tokio::runtime::Handle::try_current().is_err() {
+        return f();
+    }
+    std::thread::scope(|scope| match scope.spawn(f).join() {
+        Ok(out) => out,
+        Err(panic) => std::panic::resume_unwind(panic),
+    })
+}
+
+impl Drop for PostgresStore {
+    fn drop(&mut self) {
+        // Closing the connection blocks too.
+        if let Some(client) = self.client.get_mut().take() {
+            off_runtime(move || drop(client));
+        }
+    }
 }
 
 impl std::fmt::Debug for PostgresStore {
@@ -66,13 +90,16 @@ impl PostgresStore {
             config.connect_timeout(Duration::from_secs(10));
         }
         config.application_name("nrgdb");
-        let mut client = config.connect(NoTls).map_err(|e| StoreError::Open {
-            location: location.clone(),
-            source: Box::new(e),
+        let client = off_runtime(|| {
+            let mut client = config.connect(NoTls).map_err(|e| StoreError::Open {
+                location: location.clone(),
+                source: Box::new(e),
+            })?;
+            schema::prepare(&mut client, &location).map_err(StoreError::from)?;
+            Ok::<_, StoreError>(client)
         })?;
-        schema::prepare(&mut client, &location).map_err(StoreError::from)?;
         let store = PostgresStore {
-            client: RefCell::new(client),
+            client: RefCell::new(Some(client)),
             location,
         };
         store.set_lock_timeout(DEFAULT_BUSY_TIMEOUT)?;
@@ -90,9 +117,15 @@ impl PostgresStore {
     }
 
     /// Runs `f` on the connection, naming the database in its error.
-    fn run<T>(&self, f: impl FnOnce(&mut Client) -> R<T>) -> Result<T, StoreError> {
-        let mut client = self.client.borrow_mut();
-        f(&mut client).map_err(|e| match StoreError::from(e) {
+    fn run<T: Send>(&self, f: impl FnOnce(&mut Client) -> R<T> + Send) -> Result<T, StoreError> {
+        let mut guard = self.client.borrow_mut();
+        let Some(client) = guard.as_mut() else {
+            return Err(StoreError::Backend {
+                engine: "postgres",
+                source: "the connection is closed".into(),
+            });
+        };
+        off_runtime(|| f(client)).map_err(|e| match StoreError::from(e) {
             StoreError::DiskFull { .. } => StoreError::DiskFull {
                 location: self.location.clone(),
             },
