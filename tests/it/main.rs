@@ -53,12 +53,14 @@ mod store_building;
 mod store_cli;
 mod store_conformance;
 mod store_engines;
+mod store_killed_writer;
 mod store_replicas;
 
 mod server_cli;
 mod server_client;
 mod server_connections;
 mod server_diff;
+mod server_faults;
 mod server_openapi;
 mod server_read;
 mod server_write;

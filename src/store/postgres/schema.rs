@@ -38,12 +38,20 @@ pub(super) fn prepare(client: &mut Client, location: &str) -> R<()> {
                 ),
             })?;
     }
-    tx.batch_execute(
-        "CREATE SCHEMA IF NOT EXISTS nrgdb;
-         CREATE TABLE IF NOT EXISTS nrgdb.schema_migrations (
-             version INTEGER PRIMARY KEY,
-             applied_at TIMESTAMPTZ NOT NULL DEFAULT now())",
-    )?;
+    let known: bool = tx
+        .query_one(
+            "SELECT to_regclass('nrgdb.schema_migrations') IS NOT NULL",
+            &[],
+        )?
+        .get(0);
+    if !known {
+        tx.batch_execute(
+            "CREATE SCHEMA IF NOT EXISTS nrgdb;
+             CREATE TABLE nrgdb.schema_migrations (
+                 version INTEGER PRIMARY KEY,
+                 applied_at TIMESTAMPTZ NOT NULL DEFAULT now())",
+        )?;
+    }
     let found: i32 = tx
         .query_one(
             "SELECT COALESCE(MAX(version), 0) FROM nrgdb.schema_migrations",
