@@ -11,7 +11,7 @@ use std::hint::black_box;
 
 use criterion::Criterion;
 use nrgdb::model::SpaceId;
-use nrgdb::store::{ImportMeta, Store};
+use nrgdb::store::ImportMeta;
 
 #[path = "../tests/it/store_building.rs"]
 #[allow(dead_code)]

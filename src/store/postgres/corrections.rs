@@ -4,6 +4,7 @@
 use postgres::{Client, GenericClient};
 
 use super::fault::{R, fail};
+use super::prepared::Prepared;
 use super::read::map_id;
 use super::write::lock_map;
 use crate::edit::Rule;
@@ -15,37 +16,38 @@ use crate::store::{
 const COLUMNS: &str =
     "id, made_on, created_at, author, statement, rule, state, reason, checked_on, dropped_at";
 
-fn map_row(c: &mut impl GenericClient, map: &str) -> R<Option<i64>> {
-    Ok(c.query_opt("SELECT id FROM maps WHERE name = $1", &[&map])?
-        .map(|r| r.get(0)))
+fn map_row(c: &mut impl GenericClient, p: &mut Prepared, map: &str) -> R<Option<i64>> {
+    Ok(
+        p.query_opt(c, "SELECT id FROM maps WHERE name = $1", &[&map])?
+            .map(|r| r.get(0)),
+    )
 }
 
 /// Every correction of `map`, oldest first (none for an unknown map).
-pub(super) fn all(client: &mut Client, map: &str) -> R<Vec<Correction>> {
-    match map_row(client, map)? {
-        Some(id) => read_corrections(client, id, map),
+pub(super) fn all(client: &mut Client, p: &mut Prepared, map: &str) -> R<Vec<Correction>> {
+    match map_row(client, p, map)? {
+        Some(id) => read_corrections(client, p, id, map),
         None => Ok(Vec::new()),
     }
 }
 
 /// The key of `map`'s corrections (the default for an unknown map).
-pub(super) fn key_of(client: &mut Client, map: &str) -> R<CorrectionsKey> {
-    match map_row(client, map)? {
-        Some(id) => key(client, id),
+pub(super) fn key_of(client: &mut Client, p: &mut Prepared, map: &str) -> R<CorrectionsKey> {
+    match map_row(client, p, map)? {
+        Some(id) => key(client, p, id),
         None => Ok(CorrectionsKey::default()),
     }
 }
 
 /// Marks correction `id` dropped, under the map's write lock.
-pub(super) fn drop(client: &mut Client, map: &str, id: u32) -> R<Correction> {
+pub(super) fn drop(client: &mut Client, p: &mut Prepared, map: &str, id: u32) -> R<Correction> {
     let mut tx = client.transaction()?;
-    lock_map(&mut tx, map)?;
-    let map_id = map_id(&mut tx, map)?;
-    tx.execute(
-        "UPDATE corrections SET dropped_at = $3 WHERE map_id = $1 AND id = $2 AND dropped_at IS NULL",
+    lock_map(&mut tx, p, map)?;
+    let map_id = map_id(&mut tx, p, map)?;
+    p.execute(&mut tx, "UPDATE corrections SET dropped_at = $3 WHERE map_id = $1 AND id = $2 AND dropped_at IS NULL",
         &[&map_id, &(id as i32), &now_utc()],
     )?;
-    let found = read_corrections(&mut tx, map_id, map)?
+    let found = read_corrections(&mut tx, p, map_id, map)?
         .into_iter()
         .find(|c| c.id == id);
     match found {
@@ -61,9 +63,14 @@ pub(super) fn drop(client: &mut Client, map: &str, id: u32) -> R<Correction> {
 }
 
 /// Marks correction `id` dropped inside the caller's transaction (undo).
-pub(super) fn mark_dropped(c: &mut impl GenericClient, map: &str, map_id: i64, id: u32) -> R<()> {
-    let changed = c.execute(
-        "UPDATE corrections SET dropped_at = $3 WHERE map_id = $1 AND id = $2 AND dropped_at IS NULL",
+pub(super) fn mark_dropped(
+    c: &mut impl GenericClient,
+    p: &mut Prepared,
+    map: &str,
+    map_id: i64,
+    id: u32,
+) -> R<()> {
+    let changed = p.execute(c, "UPDATE corrections SET dropped_at = $3 WHERE map_id = $1 AND id = $2 AND dropped_at IS NULL",
         &[&map_id, &(id as i32), &now_utc()],
     )?;
     if changed == 0 {
@@ -78,19 +85,20 @@ pub(super) fn mark_dropped(c: &mut impl GenericClient, map: &str, map_id: i64, i
 /// Keeps a new correction made by revision `seq`; returns its number.
 pub(super) fn insert_correction(
     c: &mut impl GenericClient,
+    p: &mut Prepared,
     map_id: i64,
     seq: u32,
     author: &str,
     new: NewCorrection<'_>,
 ) -> R<u32> {
-    let next: i32 = c
+    let next: i32 = p
         .query_one(
+            c,
             "SELECT COALESCE(MAX(id), 0) + 1 FROM corrections WHERE map_id = $1",
             &[&map_id],
         )?
         .get(0);
-    c.execute(
-        "INSERT INTO corrections (map_id, id, made_on, created_at, author, statement, rule, state, checked_on)
+    p.execute(c, "INSERT INTO corrections (map_id, id, made_on, created_at, author, statement, rule, state, checked_on)
          VALUES ($1, $2, $3, $4, $5, $6, $7, 'applied', $3)",
         &[&map_id, &next, &(seq as i32), &now_utc(), &author, &new.statement, &new.rule_json],
     )?;
@@ -101,12 +109,13 @@ pub(super) fn insert_correction(
 /// computed from, and records each result at revision `seq`.
 pub(super) fn record_results(
     c: &mut impl GenericClient,
+    p: &mut Prepared,
     map: &str,
     map_id: i64,
     seq: u32,
     reapplied: &CorrectionResults,
 ) -> R<()> {
-    if key(c, map_id)? != reapplied.key {
+    if key(c, p, map_id)? != reapplied.key {
         return fail(StoreError::Stale {
             map: map.to_string(),
         });
@@ -116,16 +125,16 @@ pub(super) fn record_results(
             Ok(()) => ("applied", None),
             Err(reason) => ("failed", Some(reason.as_str())),
         };
-        c.execute(
-            "UPDATE corrections SET state = $3, reason = $4, checked_on = $5 WHERE map_id = $1 AND id = $2",
+        p.execute(c, "UPDATE corrections SET state = $3, reason = $4, checked_on = $5 WHERE map_id = $1 AND id = $2",
             &[&map_id, &(*id as i32), &state, &reason, &(seq as i32)],
         )?;
     }
     Ok(())
 }
 
-fn key(c: &mut impl GenericClient, map_id: i64) -> R<CorrectionsKey> {
-    let row = c.query_one(
+fn key(c: &mut impl GenericClient, p: &mut Prepared, map_id: i64) -> R<CorrectionsKey> {
+    let row = p.query_one(
+        c,
         "SELECT COUNT(*), COUNT(dropped_at) FROM corrections WHERE map_id = $1",
         &[&map_id],
     )?;
@@ -135,8 +144,14 @@ fn key(c: &mut impl GenericClient, map_id: i64) -> R<CorrectionsKey> {
     })
 }
 
-fn read_corrections(c: &mut impl GenericClient, map_id: i64, map: &str) -> R<Vec<Correction>> {
-    let rows = c.query(
+fn read_corrections(
+    c: &mut impl GenericClient,
+    p: &mut Prepared,
+    map_id: i64,
+    map: &str,
+) -> R<Vec<Correction>> {
+    let rows = p.query(
+        c,
         &format!("SELECT {COLUMNS} FROM corrections WHERE map_id = $1 ORDER BY id"),
         &[&map_id],
     )?;

@@ -12,6 +12,7 @@
 
 mod corrections;
 mod fault;
+mod prepared;
 mod read;
 mod schema;
 mod write;
@@ -29,6 +30,7 @@ use super::{
 };
 use crate::model::{Nrg, SpaceId};
 use fault::R;
+use prepared::Prepared;
 
 pub use schema::PG_SCHEMA_VERSION;
 
@@ -40,8 +42,9 @@ pub fn is_postgres_url(db: &str) -> bool {
 
 /// A connection to a PostgreSQL database with PostGIS.
 pub struct PostgresStore {
-    /// `None` only while being dropped.
-    client: RefCell<Option<Client>>,
+    /// The connection and its prepared statements; `None` only while
+    /// being dropped.
+    client: RefCell<Option<(Client, Prepared)>>,
     location: String,
 }
 
@@ -62,7 +65,7 @@ fn off_runtime<T: Send>(f: impl FnOnce() -> T + Send) -> T {
 impl Drop for PostgresStore {
     fn drop(&mut self) {
         // Closing the connection blocks too.
-        if let Some(client) = self.client.get_mut().take() {
+        if let Some((client, _)) = self.client.get_mut().take() {
             off_runtime(move || drop(client));
         }
     }
@@ -99,7 +102,7 @@ impl PostgresStore {
             Ok::<_, StoreError>(client)
         })?;
         let store = PostgresStore {
-            client: RefCell::new(Some(client)),
+            client: RefCell::new(Some((client, Prepared::default()))),
             location,
         };
         store.set_lock_timeout(DEFAULT_BUSY_TIMEOUT)?;
@@ -107,7 +110,7 @@ impl PostgresStore {
     }
 
     fn set_lock_timeout(&self, timeout: Duration) -> Result<(), StoreError> {
-        self.run(|c| {
+        self.run(|c, _| {
             c.batch_execute(&format!(
                 "SET lock_timeout = {}",
                 timeout.as_millis().max(1)
@@ -117,15 +120,18 @@ impl PostgresStore {
     }
 
     /// Runs `f` on the connection, naming the database in its error.
-    fn run<T: Send>(&self, f: impl FnOnce(&mut Client) -> R<T> + Send) -> Result<T, StoreError> {
+    fn run<T: Send>(
+        &self,
+        f: impl FnOnce(&mut Client, &mut Prepared) -> R<T> + Send,
+    ) -> Result<T, StoreError> {
         let mut guard = self.client.borrow_mut();
-        let Some(client) = guard.as_mut() else {
+        let Some((client, prepared)) = guard.as_mut() else {
             return Err(StoreError::Backend {
                 engine: "postgres",
                 source: "the connection is closed".into(),
             });
         };
-        off_runtime(|| f(client)).map_err(|e| match StoreError::from(e) {
+        off_runtime(|| f(client, prepared)).map_err(|e| match StoreError::from(e) {
             StoreError::DiskFull { .. } => StoreError::DiskFull {
                 location: self.location.clone(),
             },
@@ -158,13 +164,13 @@ impl ReadStore for PostgresStore {
         self.run(read::maps)
     }
     fn revisions(&self, map: &str) -> Result<Vec<RevisionInfo>, StoreError> {
-        self.run(|c| read::revisions(c, map))
+        self.run(|c, p| read::revisions(c, p, map))
     }
     fn revision(&self, map: &str, rev: Option<u32>) -> Result<RevisionInfo, StoreError> {
-        self.run(|c| read::revision(c, map, rev))
+        self.run(|c, p| read::revision(c, p, map, rev))
     }
     fn load(&self, map: &str, rev: Option<u32>) -> Result<Nrg, StoreError> {
-        self.run(|c| read::load(c, map, rev))
+        self.run(|c, p| read::load(c, p, map, rev))
     }
     fn locate(
         &self,
@@ -173,19 +179,19 @@ impl ReadStore for PostgresStore {
         x: f64,
         y: f64,
     ) -> Result<Option<SpaceId>, StoreError> {
-        self.run(|c| read::locate(c, map, rev, x, y))
+        self.run(|c, p| read::locate(c, p, map, rev, x, y))
     }
     fn grid(&self, map: &str, rev: Option<u32>) -> Result<Option<EncodedGrid>, StoreError> {
-        self.run(|c| read::grid(c, map, rev))
+        self.run(|c, p| read::grid(c, p, map, rev))
     }
     fn corrections(&self, map: &str) -> Result<Vec<Correction>, StoreError> {
-        self.run(|c| corrections::all(c, map))
+        self.run(|c, p| corrections::all(c, p, map))
     }
     fn corrections_key(&self, map: &str) -> Result<CorrectionsKey, StoreError> {
-        self.run(|c| corrections::key_of(c, map))
+        self.run(|c, p| corrections::key_of(c, p, map))
     }
     fn next_space_id(&self, map: &str) -> Result<SpaceId, StoreError> {
-        self.run(|c| write::next_space_id_of(c, map))
+        self.run(|c, p| write::next_space_id_of(c, p, map))
     }
     /// No cheap token: several servers share the database, and asking for
     /// the latest revision is one indexed query, so callers ask every time
@@ -197,10 +203,10 @@ impl ReadStore for PostgresStore {
 
 impl WriteStore for PostgresStore {
     fn commit(&mut self, commit: &Commit<'_>) -> Result<Committed, StoreError> {
-        self.run(|c| write::commit(c, commit))
+        self.run(|c, p| write::commit(c, p, commit))
     }
     fn drop_correction(&mut self, map: &str, id: u32) -> Result<Correction, StoreError> {
-        self.run(|c| corrections::drop(c, map, id))
+        self.run(|c, p| corrections::drop(c, p, map, id))
     }
 }
 

@@ -8,6 +8,7 @@ use std::str::FromStr;
 use postgres::{Client, GenericClient, IsolationLevel, Row, Transaction};
 
 use super::fault::{R, fail};
+use super::prepared::Prepared;
 use crate::model::{
     Connection as Link, ConnectionKind, Nrg, Space, SpaceId, SpaceKind, point_in_ring, polygon_area,
 };
@@ -23,8 +24,9 @@ fn snapshot(client: &mut Client) -> R<Transaction<'_>> {
 }
 
 /// All maps, by name.
-pub(super) fn maps(client: &mut Client) -> R<Vec<MapInfo>> {
-    let rows = client.query(
+pub(super) fn maps(client: &mut Client, p: &mut Prepared) -> R<Vec<MapInfo>> {
+    let rows = p.query(
+        client,
         "SELECT m.name, m.created_at, COALESCE(MAX(r.seq), 0)
          FROM maps m LEFT JOIN revisions r ON r.map_id = m.id
          GROUP BY m.id ORDER BY m.name",
@@ -73,10 +75,11 @@ pub(super) fn revision_info(map: &str, r: &Row) -> RevisionInfo {
 }
 
 /// The revisions of `map`, oldest first.
-pub(super) fn revisions(client: &mut Client, map: &str) -> R<Vec<RevisionInfo>> {
+pub(super) fn revisions(client: &mut Client, p: &mut Prepared, map: &str) -> R<Vec<RevisionInfo>> {
     let mut tx = snapshot(client)?;
-    let map_id = map_id(&mut tx, map)?;
-    let rows = tx.query(
+    let map_id = map_id(&mut tx, p, map)?;
+    let rows = p.query(
+        &mut tx,
         &format!("SELECT {REVISION_COLUMNS} FROM revisions WHERE map_id = $1 ORDER BY seq"),
         &[&map_id],
     )?;
@@ -84,21 +87,28 @@ pub(super) fn revisions(client: &mut Client, map: &str) -> R<Vec<RevisionInfo>> 
 }
 
 /// One revision's record, the latest when `rev` is `None`.
-pub(super) fn revision(client: &mut Client, map: &str, rev: Option<u32>) -> R<RevisionInfo> {
+pub(super) fn revision(
+    client: &mut Client,
+    p: &mut Prepared,
+    map: &str,
+    rev: Option<u32>,
+) -> R<RevisionInfo> {
     let mut tx = snapshot(client)?;
-    let map_id = map_id(&mut tx, map)?;
-    let seq = resolve(&mut tx, map_id, map, rev)?;
-    revision_at(&mut tx, map_id, map, seq)
+    let map_id = map_id(&mut tx, p, map)?;
+    let seq = resolve(&mut tx, p, map_id, map, rev)?;
+    revision_at(&mut tx, p, map_id, map, seq)
 }
 
 /// The record of revision `seq`.
 pub(super) fn revision_at(
     c: &mut impl GenericClient,
+    p: &mut Prepared,
     map_id: i64,
     map: &str,
     seq: u32,
 ) -> R<RevisionInfo> {
-    let row = c.query_one(
+    let row = p.query_one(
+        c,
         &format!("SELECT {REVISION_COLUMNS} FROM revisions WHERE map_id = $1 AND seq = $2"),
         &[&map_id, &(seq as i32)],
     )?;
@@ -106,27 +116,29 @@ pub(super) fn revision_at(
 }
 
 /// Revision `rev` of `map` (the latest when `None`).
-pub(super) fn load(client: &mut Client, map: &str, rev: Option<u32>) -> R<Nrg> {
+pub(super) fn load(client: &mut Client, p: &mut Prepared, map: &str, rev: Option<u32>) -> R<Nrg> {
     let mut tx = snapshot(client)?;
-    let map_id = map_id(&mut tx, map)?;
-    let seq = resolve(&mut tx, map_id, map, rev)?;
-    load_at(&mut tx, map_id, map, seq)
+    let map_id = map_id(&mut tx, p, map)?;
+    let seq = resolve(&mut tx, p, map_id, map, rev)?;
+    load_at(&mut tx, p, map_id, map, seq)
 }
 
 /// The smallest space of the revision containing `(x, y)`.
 pub(super) fn locate(
     client: &mut Client,
+    p: &mut Prepared,
     map: &str,
     rev: Option<u32>,
     x: f64,
     y: f64,
 ) -> R<Option<SpaceId>> {
     let mut tx = snapshot(client)?;
-    let map_id = map_id(&mut tx, map)?;
-    let seq = resolve(&mut tx, map_id, map, rev)? as i32;
+    let map_id = map_id(&mut tx, p, map)?;
+    let seq = resolve(&mut tx, p, map_id, map, rev)? as i32;
     // The GiST index finds the outlines whose box holds the point; the
     // exact test is the same as every other engine's.
-    let rows = tx.query(
+    let rows = p.query(
+        &mut tx,
         "SELECT row_id, space_id, geometry FROM spaces
          WHERE map_id = $1 AND valid_from <= $2 AND (valid_to IS NULL OR valid_to > $2)
            AND geom && ST_MakePoint($3, $4)",
@@ -164,11 +176,17 @@ fn space_id(map: &str, row: i64, v: i64) -> R<SpaceId> {
 }
 
 /// The grid stored with revision `rev` (latest when `None`).
-pub(super) fn grid(client: &mut Client, map: &str, rev: Option<u32>) -> R<Option<EncodedGrid>> {
+pub(super) fn grid(
+    client: &mut Client,
+    p: &mut Prepared,
+    map: &str,
+    rev: Option<u32>,
+) -> R<Option<EncodedGrid>> {
     let mut tx = snapshot(client)?;
-    let map_id = map_id(&mut tx, map)?;
-    let seq = resolve(&mut tx, map_id, map, rev)? as i32;
-    let row = tx.query_opt(
+    let map_id = map_id(&mut tx, p, map)?;
+    let seq = resolve(&mut tx, p, map_id, map, rev)? as i32;
+    let row = p.query_opt(
+        &mut tx,
         "SELECT width, height, resolution, origin_x, origin_y, origin_yaw, png
          FROM revision_grids WHERE map_id = $1 AND seq = $2",
         &[&map_id, &seq],
@@ -184,8 +202,9 @@ pub(super) fn grid(client: &mut Client, map: &str, rev: Option<u32>) -> R<Option
 
 /// Maps whose history is not a line 1..n, or whose latest revision's row
 /// count disagrees with its record; `["ok"]` when there are none.
-pub(super) fn integrity(client: &mut Client) -> R<Vec<String>> {
-    let rows = client.query(
+pub(super) fn integrity(client: &mut Client, p: &mut Prepared) -> R<Vec<String>> {
+    let rows = p.query(
+        client,
         "SELECT m.name, COUNT(r.seq), COALESCE(MAX(r.seq), 0),
                 (SELECT COUNT(*) FROM spaces s WHERE s.map_id = m.id AND s.valid_to IS NULL),
                 (SELECT r2.space_count FROM revisions r2 WHERE r2.map_id = m.id
@@ -216,8 +235,8 @@ pub(super) fn integrity(client: &mut Client) -> R<Vec<String>> {
 }
 
 /// The id of map `name`, or [`StoreError::NoSuchMap`] listing the maps.
-pub(super) fn map_id(c: &mut impl GenericClient, name: &str) -> R<i64> {
-    if let Some(row) = c.query_opt("SELECT id FROM maps WHERE name = $1", &[&name])? {
+pub(super) fn map_id(c: &mut impl GenericClient, p: &mut Prepared, name: &str) -> R<i64> {
+    if let Some(row) = p.query_opt(c, "SELECT id FROM maps WHERE name = $1", &[&name])? {
         return Ok(row.get(0));
     }
     let names: Vec<String> = c
@@ -229,9 +248,10 @@ pub(super) fn map_id(c: &mut impl GenericClient, name: &str) -> R<i64> {
 }
 
 /// The latest revision of a map, 0 when it has none.
-pub(super) fn latest(c: &mut impl GenericClient, map_id: i64) -> R<u32> {
-    let v: i32 = c
+pub(super) fn latest(c: &mut impl GenericClient, p: &mut Prepared, map_id: i64) -> R<u32> {
+    let v: i32 = p
         .query_one(
+            c,
             "SELECT COALESCE(MAX(seq), 0) FROM revisions WHERE map_id = $1",
             &[&map_id],
         )?
@@ -239,8 +259,14 @@ pub(super) fn latest(c: &mut impl GenericClient, map_id: i64) -> R<u32> {
     Ok(u32_of(v))
 }
 
-fn resolve(c: &mut impl GenericClient, map_id: i64, map: &str, rev: Option<u32>) -> R<u32> {
-    let last = latest(c, map_id)?;
+fn resolve(
+    c: &mut impl GenericClient,
+    p: &mut Prepared,
+    map_id: i64,
+    map: &str,
+    rev: Option<u32>,
+) -> R<u32> {
+    let last = latest(c, p, map_id)?;
     match rev {
         None if last > 0 => Ok(last),
         Some(r) if r >= 1 && r <= last => Ok(r),
@@ -253,14 +279,21 @@ fn resolve(c: &mut impl GenericClient, map_id: i64, map: &str, rev: Option<u32>)
 }
 
 /// Revision `seq` of a map, rebuilt from the rows valid in it.
-pub(super) fn load_at(c: &mut impl GenericClient, map_id: i64, map: &str, seq: u32) -> R<Nrg> {
+pub(super) fn load_at(
+    c: &mut impl GenericClient,
+    p: &mut Prepared,
+    map_id: i64,
+    map: &str,
+    seq: u32,
+) -> R<Nrg> {
     let corrupt = |row: i64, what: String| StoreError::Corrupt {
         map: map.to_string(),
         row,
         what,
     };
     let seq = seq as i32;
-    let rows = c.query(
+    let rows = p.query(
+        c,
         "SELECT row_id, space_id, kind, name, attributes::text, anchor_x, anchor_y, geometry,
                 doorway_ax, doorway_ay, doorway_bx, doorway_by
          FROM spaces WHERE map_id = $1 AND valid_from <= $2
@@ -285,7 +318,8 @@ pub(super) fn load_at(c: &mut impl GenericClient, map_id: i64, map: &str, seq: u
         }
         spaces.push(space);
     }
-    let rows = c.query(
+    let rows = p.query(
+        c,
         "SELECT a, b, kind, length_m FROM connections WHERE map_id = $1 AND valid_from <= $2
            AND (valid_to IS NULL OR valid_to > $2)",
         &[&map_id, &seq],

@@ -9,15 +9,17 @@ use postgres::{Client, GenericClient, Transaction};
 
 use super::corrections::{insert_correction, mark_dropped, record_results};
 use super::fault::{R, fail};
+use super::prepared::Prepared;
 use super::read::{latest, load_at, map_id, revision_at};
 use crate::model::{Nrg, Space, SpaceId};
 use crate::store::delta::Delta;
 use crate::store::memory::now_utc;
-use crate::store::{Commit, Committed, EncodedGrid, ImportMeta, StoreError, geometry_blob};
+use crate::store::{Commit, Committed, EncodedGrid, StoreError, geometry_blob};
 
 /// Takes the write lock of `map` for the rest of the transaction.
-pub(super) fn lock_map(tx: &mut Transaction<'_>, map: &str) -> R<()> {
-    tx.execute(
+pub(super) fn lock_map(tx: &mut Transaction<'_>, p: &mut Prepared, map: &str) -> R<()> {
+    p.execute(
+        tx,
         "SELECT pg_advisory_xact_lock(hashtextextended('nrgdb map ' || $1, 0))",
         &[&map],
     )?;
@@ -25,10 +27,10 @@ pub(super) fn lock_map(tx: &mut Transaction<'_>, map: &str) -> R<()> {
 }
 
 /// Writes `c` in one transaction (see [`crate::store::engine`]).
-pub(super) fn commit(client: &mut Client, c: &Commit<'_>) -> R<Committed> {
+pub(super) fn commit(client: &mut Client, p: &mut Prepared, c: &Commit<'_>) -> R<Committed> {
     let mut tx = client.transaction()?;
-    lock_map(&mut tx, c.map)?;
-    let existing = tx.query_opt("SELECT id FROM maps WHERE name = $1", &[&c.map])?;
+    lock_map(&mut tx, p, c.map)?;
+    let existing = p.query_opt(&mut tx, "SELECT id FROM maps WHERE name = $1", &[&c.map])?;
     let stale = || {
         fail(StoreError::Stale {
             map: c.map.to_string(),
@@ -37,34 +39,35 @@ pub(super) fn commit(client: &mut Client, c: &Commit<'_>) -> R<Committed> {
     let map_id: i64 = match existing {
         Some(row) => {
             let id = row.get(0);
-            if latest(&mut tx, id)? != c.base {
+            if latest(&mut tx, p, id)? != c.base {
                 return stale();
             }
             id
         }
-        None if c.base == 0 => tx
+        None if c.base == 0 => p
             .query_one(
+                &mut tx,
                 "INSERT INTO maps (name, created_at) VALUES ($1, $2) RETURNING id",
                 &[&c.map, &now_utc()],
             )?
             .get(0),
-        None => return map_id(&mut tx, c.map).and_then(|_| stale()),
+        None => return map_id(&mut tx, p, c.map).and_then(|_| stale()),
     };
     let seq = match c.nrg {
         Some(nrg) => {
             let seq = c.base + 1;
             let loaded = match (c.base, c.parent) {
                 (0, _) | (_, Some(_)) => None,
-                (base, None) => Some(load_at(&mut tx, map_id, c.map, base)?),
+                (base, None) => Some(load_at(&mut tx, p, map_id, c.map, base)?),
             };
             let parent = if c.base == 0 {
                 None
             } else {
                 c.parent.or(loaded.as_ref())
             };
-            write_revision(&mut tx, map_id, seq, c.base, parent, nrg, c.meta)?;
+            write_revision(&mut tx, p, map_id, c, parent, nrg)?;
             if let Some(grid) = c.grid {
-                insert_grid(&mut tx, map_id, seq, grid)?;
+                insert_grid(&mut tx, p, map_id, seq, grid)?;
             }
             seq
         }
@@ -78,11 +81,12 @@ pub(super) fn commit(client: &mut Client, c: &Commit<'_>) -> R<Committed> {
         None => c.base,
     };
     if let Some(reapplied) = c.reapplied {
-        record_results(&mut tx, c.map, map_id, seq, reapplied)?;
+        record_results(&mut tx, p, c.map, map_id, seq, reapplied)?;
     }
     let correction = match c.correction {
         Some(new) => Some(insert_correction(
             &mut tx,
+            p,
             map_id,
             seq,
             &c.meta.author,
@@ -91,9 +95,9 @@ pub(super) fn commit(client: &mut Client, c: &Commit<'_>) -> R<Committed> {
         None => None,
     };
     if let Some(id) = c.drops {
-        mark_dropped(&mut tx, c.map, map_id, id)?;
+        mark_dropped(&mut tx, p, c.map, map_id, id)?;
     }
-    let revision = revision_at(&mut tx, map_id, c.map, seq)?;
+    let revision = revision_at(&mut tx, p, map_id, c.map, seq)?;
     tx.commit()?;
     Ok(Committed {
         revision,
@@ -102,9 +106,10 @@ pub(super) fn commit(client: &mut Client, c: &Commit<'_>) -> R<Committed> {
 }
 
 /// One above the largest space id `map` ever used (1 for a new map).
-pub(super) fn next_space_id_of(client: &mut Client, map: &str) -> R<SpaceId> {
-    let max: Option<i64> = client
+pub(super) fn next_space_id_of(client: &mut Client, p: &mut Prepared, map: &str) -> R<SpaceId> {
+    let max: Option<i64> = p
         .query_one(
+            client,
             "SELECT MAX(s.space_id) FROM spaces s JOIN maps m ON m.id = s.map_id WHERE m.name = $1",
             &[&map],
         )?
@@ -113,37 +118,40 @@ pub(super) fn next_space_id_of(client: &mut Client, map: &str) -> R<SpaceId> {
     Ok(SpaceId(u32::try_from(next).unwrap_or(u32::MAX)))
 }
 
+/// Writes `nrg` as revision `c.base + 1`, a delta against `parent`.
 fn write_revision(
     tx: &mut Transaction<'_>,
+    p: &mut Prepared,
     map_id: i64,
-    seq: u32,
-    base: u32,
+    c: &Commit<'_>,
     parent: Option<&Nrg>,
     nrg: &Nrg,
-    meta: &ImportMeta,
 ) -> R<()> {
+    let (base, meta) = (c.base, c.meta);
+    let seq = base + 1;
     let empty = Nrg::default();
     let delta = Delta::between(parent.unwrap_or(&empty), nrg);
     let seq_i = seq as i32;
     if !delta.close_spaces.is_empty() {
         let ids: Vec<i64> = delta.close_spaces.iter().map(|s| i64::from(s.0)).collect();
-        tx.execute(
+        p.execute(
+            &mut *tx,
             "UPDATE spaces SET valid_to = $3
              WHERE map_id = $1 AND space_id = ANY($2) AND valid_to IS NULL",
             &[&map_id, &ids, &seq_i],
         )?;
     }
-    let insert = tx.prepare(
+    let insert =
         "INSERT INTO spaces (map_id, space_id, valid_from, kind, name, attributes, anchor_x,
              anchor_y, geometry, geom, doorway_ax, doorway_ay, doorway_bx, doorway_by)
          VALUES ($1, $2, $3, $4, $5, $6::text::json, $7, $8, $9, ST_GeomFromWKB($10, 0),
-                 $11, $12, $13, $14)",
-    )?;
+                 $11, $12, $13, $14)";
     for s in &delta.open_spaces {
         let attributes = serde_json::Value::Object(s.attributes.clone()).to_string();
         let wkb = polygon_wkb(s)?;
-        tx.execute(
-            &insert,
+        p.execute(
+            &mut *tx,
+            insert,
             &[
                 &map_id,
                 &i64::from(s.id.0),
@@ -162,24 +170,25 @@ fn write_revision(
             ],
         )?;
     }
-    let close = tx.prepare(
-        "UPDATE connections SET valid_to = $4
-         WHERE map_id = $1 AND a = $2 AND b = $3 AND valid_to IS NULL",
-    )?;
+    let close = "UPDATE connections SET valid_to = $4
+         WHERE map_id = $1 AND a = $2 AND b = $3 AND valid_to IS NULL";
     for (a, b) in &delta.close_links {
-        tx.execute(&close, &[&map_id, &i64::from(a.0), &i64::from(b.0), &seq_i])?;
+        p.execute(
+            &mut *tx,
+            close,
+            &[&map_id, &i64::from(a.0), &i64::from(b.0), &seq_i],
+        )?;
     }
-    let insert = tx.prepare(
-        "INSERT INTO connections (map_id, a, b, valid_from, kind, length_m, geom)
-         VALUES ($1, $2, $3, $4, $5, $6, ST_MakeLine(ST_MakePoint($7, $8), ST_MakePoint($9, $10)))",
-    )?;
+    let insert = "INSERT INTO connections (map_id, a, b, valid_from, kind, length_m, geom)
+         VALUES ($1, $2, $3, $4, $5, $6, ST_MakeLine(ST_MakePoint($7, $8), ST_MakePoint($9, $10)))";
     for c in &delta.open_links {
         let (pa, pb) = (
             nrg.space(c.a).map_or([0.0; 2], |s| s.anchor),
             nrg.space(c.b).map_or([0.0; 2], |s| s.anchor),
         );
-        tx.execute(
-            &insert,
+        p.execute(
+            &mut *tx,
+            insert,
             &[
                 &map_id,
                 &i64::from(c.a.0),
@@ -196,8 +205,7 @@ fn write_revision(
     }
     let params_json = meta.params.as_ref().map(|p| p.to_string());
     let n = |v: usize| i64::try_from(v).unwrap_or(i64::MAX);
-    tx.execute(
-        "INSERT INTO revisions (map_id, seq, parent, created_at, source_name, source_sha256, params,
+    p.execute(&mut *tx, "INSERT INTO revisions (map_id, seq, parent, created_at, source_name, source_sha256, params,
              message, author, space_count, connection_count, spaces_added, spaces_changed, spaces_removed)
          VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14)",
         &[
@@ -235,9 +243,14 @@ fn polygon_wkb(s: &Space) -> R<Vec<u8>> {
         })
 }
 
-fn insert_grid(c: &mut impl GenericClient, map_id: i64, seq: u32, grid: &EncodedGrid) -> R<()> {
-    c.execute(
-        "INSERT INTO revision_grids (map_id, seq, width, height, resolution, origin_x, origin_y, origin_yaw, png)
+fn insert_grid(
+    c: &mut impl GenericClient,
+    p: &mut Prepared,
+    map_id: i64,
+    seq: u32,
+    grid: &EncodedGrid,
+) -> R<()> {
+    p.execute(c, "INSERT INTO revision_grids (map_id, seq, width, height, resolution, origin_x, origin_y, origin_yaw, png)
          VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9)",
         &[
             &map_id,
