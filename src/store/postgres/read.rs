@@ -116,11 +116,91 @@ pub(super) fn revision_at(
 }
 
 /// Revision `rev` of `map` (the latest when `None`).
+///
+/// One statement (so one snapshot and one round trip): the map's latest
+/// revision, then its spaces (`part` 0) and connections (`part` 1).
 pub(super) fn load(client: &mut Client, p: &mut Prepared, map: &str, rev: Option<u32>) -> R<Nrg> {
-    let mut tx = snapshot(client)?;
-    let map_id = map_id(&mut tx, p, map)?;
-    let seq = resolve(&mut tx, p, map_id, map, rev)?;
-    load_at(&mut tx, p, map_id, map, seq)
+    let asked = rev.map_or(0, |r| i32::try_from(r).unwrap_or(i32::MAX));
+    let rows = p.query(client, LOAD, &[&map, &asked])?;
+    let Some(first) = rows.first() else {
+        // No such map: the slow path names the maps there are.
+        map_id(client, p, map)?;
+        return fail(StoreError::NoSuchMap {
+            name: map.to_string(),
+            known: String::new(),
+            suggestion: None,
+        });
+    };
+    let latest = u32_of(first.get(1));
+    if latest == 0 || rev.is_some_and(|r| r < 1 || r > latest) {
+        return fail(StoreError::NoSuchRevision {
+            map: map.to_string(),
+            rev: rev.unwrap_or(0),
+            latest,
+        });
+    }
+    let corrupt = |row: i64, what: String| StoreError::Corrupt {
+        map: map.to_string(),
+        row,
+        what,
+    };
+    let (mut spaces, mut links) = (Vec::new(), Vec::new());
+    for r in &rows {
+        let Some(row_id) = r.get::<_, Option<i64>>(2) else {
+            continue;
+        };
+        if r.get::<_, i32>(0) == 0 {
+            spaces.push(space_of(map, r, 2).map_err(|e| corrupt(row_id, e))?);
+        } else {
+            links.push(Link {
+                a: space_id(map, 0, r.get(3))?,
+                b: space_id(map, 0, r.get(14))?,
+                kind: ConnectionKind::from_str(r.get(4)).map_err(|e| corrupt(0, e))?,
+                length_m: r.get(15),
+            });
+        }
+    }
+    Ok(Nrg::new(spaces, links).map_err(|e| corrupt(0, e.to_string()))?)
+}
+
+/// The statement of [`load`]: `$1` the map, `$2` the revision (0: the
+/// latest). A map without revisions gives one row with `latest` 0.
+const LOAD: &str = "
+    WITH q AS (
+        SELECT m.id AS map_id, r.latest,
+               CASE WHEN $2::int = 0 THEN r.latest ELSE $2::int END AS seq
+        FROM maps m,
+             LATERAL (SELECT COALESCE(MAX(seq), 0) AS latest FROM revisions WHERE map_id = m.id) r
+        WHERE m.name = $1)
+    SELECT 0 AS part, q.latest, s.row_id, s.space_id, s.kind, s.name, s.attributes::text,
+           s.anchor_x, s.anchor_y, s.geometry, s.doorway_ax, s.doorway_ay, s.doorway_bx,
+           s.doorway_by, NULL::bigint AS b, NULL::float8 AS length_m
+    FROM q LEFT JOIN spaces s ON s.map_id = q.map_id AND s.valid_from <= q.seq
+                               AND (s.valid_to IS NULL OR s.valid_to > q.seq)
+    UNION ALL
+    SELECT 1, q.latest, 0, c.a, c.kind, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL,
+           c.b, c.length_m
+    FROM q JOIN connections c ON c.map_id = q.map_id AND c.valid_from <= q.seq
+                              AND (c.valid_to IS NULL OR c.valid_to > q.seq)";
+
+/// A space from a row whose columns from `at` on are `row_id, space_id,
+/// kind, name, attributes, anchor_x, anchor_y, geometry, doorway_ax,
+/// doorway_ay, doorway_bx, doorway_by`.
+fn space_of(map: &str, r: &Row, at: usize) -> Result<Space, String> {
+    let row_id: i64 = r.get(at);
+    let kind = SpaceKind::from_str(r.get(at + 2))?;
+    let attributes = serde_json::from_str(r.get(at + 4)).map_err(|e| e.to_string())?;
+    let (polygon, holes) = geometry_blob::decode(r.get(at + 7))?;
+    let id = space_id(map, row_id, r.get(at + 1)).map_err(|e| e.0.to_string())?;
+    let mut space = Space::new(id, kind, [r.get(at + 5), r.get(at + 6)], polygon);
+    space.name = r.get(at + 3);
+    space.holes = holes;
+    space.attributes = attributes;
+    let line: [Option<f64>; 4] = [r.get(at + 8), r.get(at + 9), r.get(at + 10), r.get(at + 11)];
+    if let [Some(ax), Some(ay), Some(bx), Some(by)] = line {
+        space.doorway = Some([[ax, ay], [bx, by]]);
+    }
+    Ok(space)
 }
 
 /// The smallest space of the revision containing `(x, y)`.
@@ -301,22 +381,9 @@ pub(super) fn load_at(
         &[&map_id, &seq],
     )?;
     let mut spaces = Vec::with_capacity(rows.len());
-    for r in rows {
+    for r in &rows {
         let row_id: i64 = r.get(0);
-        let kind = SpaceKind::from_str(r.get(2)).map_err(|e| corrupt(row_id, e))?;
-        let attributes =
-            serde_json::from_str(r.get(4)).map_err(|e| corrupt(row_id, e.to_string()))?;
-        let (polygon, holes) = geometry_blob::decode(r.get(7)).map_err(|e| corrupt(row_id, e))?;
-        let id = space_id(map, row_id, r.get(1))?;
-        let mut space = Space::new(id, kind, [r.get(5), r.get(6)], polygon);
-        space.name = r.get(3);
-        space.holes = holes;
-        space.attributes = attributes;
-        let line: [Option<f64>; 4] = [r.get(8), r.get(9), r.get(10), r.get(11)];
-        if let [Some(ax), Some(ay), Some(bx), Some(by)] = line {
-            space.doorway = Some([[ax, ay], [bx, by]]);
-        }
-        spaces.push(space);
+        spaces.push(space_of(map, r, 0).map_err(|e| corrupt(row_id, e))?);
     }
     let rows = p.query(
         c,
