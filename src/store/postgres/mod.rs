@@ -49,9 +49,13 @@ pub struct PostgresStore {
 }
 
 /// Runs `f` where the blocking client may run: the synchronous client
-/// drives a runtime of its own and must not be used from a thread inside
-/// another tokio runtime (the server's blocking pool, an async test), so
-/// there it runs on a scoped thread of its own.
+/// drives a runtime of its own, which cannot start on a thread that is
+/// inside another tokio runtime (an async function). Opening and closing
+/// a connection, which may happen there (a server starting, a pooled
+/// store dropped), run on a scoped thread of their own then. Queries run
+/// on the caller's thread: callers inside a runtime use it through
+/// `spawn_blocking` (the server does; those threads may block), as a
+/// thread per query would cost more than the query.
 fn off_runtime<T: Send>(f: impl FnOnce() -> T + Send) -> T {
     if tokio::runtime::Handle::try_current().is_err() {
         return f();
@@ -99,14 +103,15 @@ impl PostgresStore {
                 source: Box::new(e),
             })?;
             schema::prepare(&mut client, &location).map_err(StoreError::from)?;
+            client
+                .batch_execute(&lock_timeout(DEFAULT_BUSY_TIMEOUT))
+                .map_err(|e| StoreError::from(fault::Fault::from(e)))?;
             Ok::<_, StoreError>(client)
         })?;
-        let store = PostgresStore {
+        Ok(PostgresStore {
             client: RefCell::new(Some((client, Prepared::default()))),
             location,
-        };
-        store.set_lock_timeout(DEFAULT_BUSY_TIMEOUT)?;
-        Ok(store)
+        })
     }
 
     fn set_lock_timeout(&self, timeout: Duration) -> Result<(), StoreError> {
@@ -120,10 +125,7 @@ impl PostgresStore {
     }
 
     /// Runs `f` on the connection, naming the database in its error.
-    fn run<T: Send>(
-        &self,
-        f: impl FnOnce(&mut Client, &mut Prepared) -> R<T> + Send,
-    ) -> Result<T, StoreError> {
+    fn run<T>(&self, f: impl FnOnce(&mut Client, &mut Prepared) -> R<T>) -> Result<T, StoreError> {
         let mut guard = self.client.borrow_mut();
         let Some((client, prepared)) = guard.as_mut() else {
             return Err(StoreError::Backend {
@@ -131,13 +133,18 @@ impl PostgresStore {
                 source: "the connection is closed".into(),
             });
         };
-        off_runtime(|| f(client, prepared)).map_err(|e| match StoreError::from(e) {
+        f(client, prepared).map_err(|e| match StoreError::from(e) {
             StoreError::DiskFull { .. } => StoreError::DiskFull {
                 location: self.location.clone(),
             },
             other => other,
         })
     }
+}
+
+/// The statement setting how long a writer waits for a lock.
+fn lock_timeout(timeout: Duration) -> String {
+    format!("SET lock_timeout = {}", timeout.as_millis().max(1))
 }
 
 /// `postgres://user@host:port/db`, without the password.

@@ -93,11 +93,26 @@ pub(super) fn revision(
     map: &str,
     rev: Option<u32>,
 ) -> R<RevisionInfo> {
+    // One round trip when the revision exists (every request of a server
+    // asks for the latest); the errors take the slow path below.
+    let asked = rev.map_or(0, |r| i32::try_from(r).unwrap_or(i32::MAX));
+    if let Some(row) = p.query_opt(client, REVISION, &[&map, &asked])? {
+        return Ok(revision_info(map, &row));
+    }
     let mut tx = snapshot(client)?;
     let map_id = map_id(&mut tx, p, map)?;
     let seq = resolve(&mut tx, p, map_id, map, rev)?;
     revision_at(&mut tx, p, map_id, map, seq)
 }
+
+/// [`revision`] in one statement: `$1` the map, `$2` the revision (0:
+/// the latest); no row when either does not exist.
+const REVISION: &str = "SELECT r.seq, r.parent, r.created_at, r.source_name, r.source_sha256, \
+     r.params, r.message, r.author, r.space_count, r.connection_count, r.spaces_added, \
+     r.spaces_changed, r.spaces_removed \
+     FROM maps m JOIN revisions r ON r.map_id = m.id \
+     WHERE m.name = $1 AND r.seq = CASE WHEN $2::int = 0 \
+         THEN (SELECT MAX(seq) FROM revisions WHERE map_id = m.id) ELSE $2::int END";
 
 /// The record of revision `seq`.
 pub(super) fn revision_at(
