@@ -2,7 +2,8 @@
 # Installs the system tools nrgdb's tests use, when missing: xmllint
 # (libxml2-utils) for IndoorGML schema validation, Chromium (Debian's
 # `chromium`) for the web viewer's end-to-end test, and PostgreSQL with
-# PostGIS (`postgresql`, `postgresql-15-postgis-3`) for the store's
+# PostGIS and pgRouting (`postgresql`, `postgresql-15-postgis-3`,
+# `postgresql-15-pgrouting`) for the store's
 # PostgreSQL engine (the tests start a throw-away server of their own with
 # scripts/pg-throwaway.sh). Safe to run repeatedly;
 # without root or apt-get it only says what is missing (the tests that need a
@@ -13,6 +14,7 @@ command -v xmllint >/dev/null 2>&1 || need+=(libxml2-utils)
 [ -x /usr/bin/chromium ] || command -v chromium >/dev/null 2>&1 || need+=(chromium)
 ls /usr/lib/postgresql/*/bin/initdb >/dev/null 2>&1 || need+=(postgresql)
 ls /usr/share/postgresql/*/extension/postgis.control >/dev/null 2>&1 || need+=(postgresql-15-postgis-3)
+ls /usr/share/postgresql/*/extension/pgrouting.control >/dev/null 2>&1 || need+=(postgresql-15-pgrouting)
 [ ${#need[@]} -eq 0 ] && exit 0
 if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
   echo "install-test-tools: installing ${need[*]}" >&2

@@ -118,10 +118,11 @@ CREATE VIEW latest_connections AS
 --     'SELECT id, source, target, cost, reverse_cost FROM nrgdb.route_edges WHERE map = ''lab''',
 --     10, 13);
 -- source and target are stable space ids; cost is the walked length in
--- metres, the same both ways.
+-- metres, the same both ways. Only navigable connections (through a door
+-- or an open boundary): spaces that merely share a wall are not edges.
 CREATE VIEW route_edges AS
     SELECT row_number() OVER (ORDER BY c.map_id, c.a, c.b) AS id,
            m.name AS map, c.a AS source, c.b AS target,
            c.length_m AS cost, c.length_m AS reverse_cost, c.kind, c.geom
     FROM connections c JOIN maps m ON m.id = c.map_id
-    WHERE c.valid_to IS NULL;
+    WHERE c.valid_to IS NULL AND c.kind <> 'adjacent';

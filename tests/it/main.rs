@@ -54,6 +54,7 @@ mod store_cli;
 mod store_conformance;
 mod store_engines;
 mod store_killed_writer;
+mod store_pgrouting;
 mod store_replicas;
 
 mod server_cli;
