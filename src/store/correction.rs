@@ -21,6 +21,16 @@ pub enum CorrectionState {
 }
 
 impl CorrectionState {
+    /// The state as engines store it: a `dropped_at` time wins, else the
+    /// stored `state` text (`failed` or `applied`).
+    pub(crate) fn from_stored(dropped: bool, state: &str) -> CorrectionState {
+        match (dropped, state) {
+            (true, _) => CorrectionState::Dropped,
+            (false, "failed") => CorrectionState::Failed,
+            (false, _) => CorrectionState::Applied,
+        }
+    }
+
     /// The lower-case name used in listings.
     pub fn as_str(self) -> &'static str {
         match self {

@@ -89,6 +89,24 @@ fn same_link(a: &Link, b: &Link) -> bool {
     a.key() == b.key() && a.kind == b.kind && a.length_m.to_bits() == b.length_m.to_bits()
 }
 
+/// The smallest of `candidates` (id, outline, holes) containing `p`, holes
+/// excluded: point location, the same on every engine (a door inside a
+/// wall gap wins over the corridor around it).
+pub fn smallest_containing<'a>(
+    p: [f64; 2],
+    candidates: impl IntoIterator<Item = (SpaceId, &'a crate::model::Ring, &'a [crate::model::Ring])>,
+) -> Option<SpaceId> {
+    candidates
+        .into_iter()
+        .filter(|(_, outline, holes)| {
+            crate::model::point_in_ring(p, outline)
+                && !holes.iter().any(|h| crate::model::point_in_ring(p, h))
+        })
+        .map(|(id, outline, _)| (crate::model::polygon_area(outline).abs(), id))
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, id)| id)
+}
+
 /// The bounding box `[min_x, max_x, min_y, max_y]` of a space's outline
 /// (what spatial indexes of every engine hold).
 pub fn bounding_box(s: &Space) -> [f64; 4] {

@@ -7,13 +7,13 @@ use std::collections::BTreeMap;
 use std::sync::{Arc, Mutex, MutexGuard};
 use std::time::{Duration, SystemTime};
 
-use super::delta::Delta;
+use super::delta::{Delta, smallest_containing};
 use super::engine::{Commit, Committed, Engine, ReadStore, WriteStore};
 use super::{
     Correction, CorrectionState, CorrectionsKey, EncodedGrid, MapInfo, RevisionInfo, StoreError,
 };
 use crate::edit::Rule;
-use crate::model::{Nrg, SpaceId, point_in_ring, polygon_area};
+use crate::model::{Nrg, SpaceId};
 
 /// Maps held in memory; clones share them.
 #[derive(Debug, Clone, Default)]
@@ -129,16 +129,12 @@ impl ReadStore for MemoryStore {
         y: f64,
     ) -> Result<Option<SpaceId>, StoreError> {
         let nrg = Arc::clone(&self.data().stored(map, rev)?.nrg);
-        let p = [x, y];
-        Ok(nrg
-            .spaces()
-            .iter()
-            .filter(|s| {
-                point_in_ring(p, &s.polygon) && !s.holes.iter().any(|h| point_in_ring(p, h))
-            })
-            .map(|s| (polygon_area(&s.polygon).abs(), s.id))
-            .min_by(|a, b| a.0.total_cmp(&b.0))
-            .map(|(_, id)| id))
+        Ok(smallest_containing(
+            [x, y],
+            nrg.spaces()
+                .iter()
+                .map(|s| (s.id, &s.polygon, s.holes.as_slice())),
+        ))
     }
 
     fn grid(&self, map: &str, rev: Option<u32>) -> Result<Option<EncodedGrid>, StoreError> {

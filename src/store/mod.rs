@@ -32,6 +32,7 @@ mod correction;
 pub mod delta;
 pub mod engine;
 mod error;
+mod fault;
 mod geometry_blob;
 mod grid_png;
 mod history;

@@ -165,11 +165,7 @@ fn read_corrections(
         })?;
         let dropped: Option<String> = r.get(9);
         let state: &str = r.get(6);
-        let state = match (dropped.is_some(), state) {
-            (true, _) => CorrectionState::Dropped,
-            (false, "failed") => CorrectionState::Failed,
-            (false, _) => CorrectionState::Applied,
-        };
+        let state = CorrectionState::from_stored(dropped.is_some(), state);
         out.push(Correction {
             id,
             made_on: u32::try_from(r.get::<_, i32>(1)).unwrap_or(0),

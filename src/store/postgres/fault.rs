@@ -1,40 +1,10 @@
-//! PostgreSQL's errors inside the PostgreSQL engine: [`Fault`] carries a
-//! store error, so `?` works on both, and becomes a [`StoreError`] (with no
-//! client type in it) at the engine's edge.
+//! What PostgreSQL's errors mean to the store (busy, disk full, damaged,
+//! a fault), as [`Fault`]s inside the PostgreSQL engine.
 
 use postgres::error::SqlState;
 
 use crate::store::StoreError;
-
-/// An error inside the PostgreSQL engine.
-#[derive(Debug)]
-pub(crate) struct Fault(pub(crate) StoreError);
-
-/// Results inside the PostgreSQL engine.
-pub(crate) type R<T> = Result<T, Fault>;
-
-/// `Err(e)` as a [`Fault`].
-pub(crate) fn fail<T>(e: StoreError) -> R<T> {
-    Err(Fault(e))
-}
-
-impl From<StoreError> for Fault {
-    fn from(e: StoreError) -> Fault {
-        Fault(e)
-    }
-}
-
-impl From<Fault> for StoreError {
-    fn from(f: Fault) -> StoreError {
-        f.0
-    }
-}
-
-impl From<crate::model::ModelError> for Fault {
-    fn from(e: crate::model::ModelError) -> Fault {
-        Fault(StoreError::Model(e))
-    }
-}
+pub(crate) use crate::store::fault::{Fault, R, fail};
 
 impl From<postgres::Error> for Fault {
     fn from(e: postgres::Error) -> Fault {

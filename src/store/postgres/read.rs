@@ -9,9 +9,8 @@ use postgres::{Client, GenericClient, IsolationLevel, Row, Transaction};
 
 use super::fault::{R, fail};
 use super::prepared::Prepared;
-use crate::model::{
-    Connection as Link, ConnectionKind, Nrg, Space, SpaceId, SpaceKind, point_in_ring, polygon_area,
-};
+use crate::model::{Connection as Link, ConnectionKind, Nrg, Space, SpaceId, SpaceKind};
+use crate::store::delta::smallest_containing;
 use crate::store::{EncodedGrid, MapInfo, RevisionInfo, StoreError, geometry_blob};
 
 /// A read-only snapshot.
@@ -239,24 +238,21 @@ pub(super) fn locate(
            AND geom && ST_MakePoint($3, $4)",
         &[&map_id, &seq, &x, &y],
     )?;
-    let mut best: Option<(f64, SpaceId)> = None;
+    let mut candidates = Vec::with_capacity(rows.len());
     for row in rows {
         let row_id: i64 = row.get(0);
-        let (polygon, holes) =
+        let (outline, holes) =
             geometry_blob::decode(row.get(2)).map_err(|what| StoreError::Corrupt {
                 map: map.to_string(),
                 row: row_id,
                 what,
             })?;
-        let p = [x, y];
-        if point_in_ring(p, &polygon) && !holes.iter().any(|h| point_in_ring(p, h)) {
-            let area = polygon_area(&polygon).abs();
-            if best.is_none_or(|(a, _)| area < a) {
-                best = Some((area, space_id(map, row_id, row.get(1))?));
-            }
-        }
+        candidates.push((space_id(map, row_id, row.get(1))?, outline, holes));
     }
-    Ok(best.map(|(_, id)| id))
+    Ok(smallest_containing(
+        [x, y],
+        candidates.iter().map(|(id, o, h)| (*id, o, h.as_slice())),
+    ))
 }
 
 fn space_id(map: &str, row: i64, v: i64) -> R<SpaceId> {

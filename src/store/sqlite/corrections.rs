@@ -164,11 +164,7 @@ fn read_corrections(conn: &Connection, map_id: i64, map: &str) -> R<Vec<Correcti
             id,
             message: e.to_string(),
         })?;
-        let state = match (dropped.is_some(), state.as_str()) {
-            (true, _) => CorrectionState::Dropped,
-            (false, "failed") => CorrectionState::Failed,
-            (false, _) => CorrectionState::Applied,
-        };
+        let state = CorrectionState::from_stored(dropped.is_some(), &state);
         out.push(Correction {
             id,
             made_on,

@@ -1,38 +1,8 @@
-//! SQLite's errors inside the SQLite engine: [`Fault`] carries either a
-//! store error or an SQLite one, so `?` works on both, and becomes a
-//! [`StoreError`] (with no SQLite type in it) at the engine's edge.
+//! What SQLite's errors mean to the store (busy, disk full, damaged, a
+//! fault), as [`Fault`]s inside the SQLite engine.
 
 use crate::store::StoreError;
-
-/// An error inside the SQLite engine.
-#[derive(Debug)]
-pub(crate) struct Fault(pub(crate) StoreError);
-
-/// Results inside the SQLite engine.
-pub(crate) type R<T> = Result<T, Fault>;
-
-/// `Err(e)` as a [`Fault`].
-pub(crate) fn fail<T>(e: StoreError) -> R<T> {
-    Err(Fault(e))
-}
-
-impl From<StoreError> for Fault {
-    fn from(e: StoreError) -> Fault {
-        Fault(e)
-    }
-}
-
-impl From<Fault> for StoreError {
-    fn from(f: Fault) -> StoreError {
-        f.0
-    }
-}
-
-impl From<crate::model::ModelError> for Fault {
-    fn from(e: crate::model::ModelError) -> Fault {
-        Fault(StoreError::Model(e))
-    }
-}
+pub(crate) use crate::store::fault::{Fault, R, fail};
 
 impl From<rusqlite::Error> for Fault {
     fn from(e: rusqlite::Error) -> Fault {

@@ -6,9 +6,8 @@ use std::str::FromStr;
 use rusqlite::{Connection, OptionalExtension, Row, params};
 
 use super::fault::{R, fail};
-use crate::model::{
-    Connection as Link, ConnectionKind, Nrg, Space, SpaceId, SpaceKind, point_in_ring, polygon_area,
-};
+use crate::model::{Connection as Link, ConnectionKind, Nrg, Space, SpaceId, SpaceKind};
+use crate::store::delta::smallest_containing;
 use crate::store::geometry_blob;
 use crate::store::{EncodedGrid, MapInfo, RevisionInfo, StoreError};
 
@@ -85,26 +84,22 @@ pub(super) fn locate(
            AND (s.valid_to IS NULL OR s.valid_to > ?2)",
     )?;
     let mut rows = stmt.query(params![map_id, seq, x, y])?;
-    let mut best: Option<(f64, SpaceId)> = None;
+    let mut candidates = Vec::new();
     while let Some(row) = rows.next()? {
         let row_id: i64 = row.get(0)?;
-        let id = SpaceId(row.get(1)?);
         let blob: Vec<u8> = row.get(2)?;
-        let (polygon, holes) =
+        let (outline, holes) =
             geometry_blob::decode(&blob).map_err(|what| StoreError::Corrupt {
                 map: map.to_string(),
                 row: row_id,
                 what,
             })?;
-        let p = [x, y];
-        if point_in_ring(p, &polygon) && !holes.iter().any(|h| point_in_ring(p, h)) {
-            let area = polygon_area(&polygon).abs();
-            if best.is_none_or(|(a, _)| area < a) {
-                best = Some((area, id));
-            }
-        }
+        candidates.push((SpaceId(row.get(1)?), outline, holes));
     }
-    Ok(best.map(|(_, id)| id))
+    Ok(smallest_containing(
+        [x, y],
+        candidates.iter().map(|(id, o, h)| (*id, o, h.as_slice())),
+    ))
 }
 
 /// The grid stored with revision `rev` (latest when `None`).
