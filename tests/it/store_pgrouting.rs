@@ -99,3 +99,53 @@ fn pgr_dijkstra_runs_on_the_route_edges_view() {
         .get(0);
     assert_eq!(again, cost);
 }
+
+/// What GIS tools (QGIS, ogr2ogr) list as layers: PostGIS registers the
+/// engine's geometry columns with their type and SRID, and the polygons are
+/// the building's (room 10 is 3.8 m × 4.8 m in the fixture).
+#[test]
+fn gis_tools_see_typed_layers_with_the_buildings_outlines() {
+    let Some(url) = fresh_postgres_database() else {
+        return;
+    };
+    let mut store = Store::open_db(&url).unwrap();
+    store
+        .import(
+            "g",
+            &nrgdb::fixtures::corridor_building(3),
+            ImportMeta::new("a", "t"),
+        )
+        .unwrap();
+    let mut admin = postgres::Client::connect(&url, postgres::NoTls).unwrap();
+    let layers: Vec<(String, String, i32)> = admin
+        .query(
+            "SELECT f_table_name::text, type::text, srid FROM geometry_columns
+             WHERE f_table_schema = 'nrgdb' ORDER BY 1",
+            &[],
+        )
+        .unwrap()
+        .iter()
+        .map(|r| (r.get(0), r.get(1), r.get(2)))
+        .collect();
+    for (table, kind) in [
+        ("connections", "LINESTRING"),
+        ("latest_connections", "LINESTRING"),
+        ("latest_spaces", "POLYGON"),
+        ("route_edges", "LINESTRING"),
+        ("spaces", "POLYGON"),
+    ] {
+        assert!(
+            layers.contains(&(table.to_string(), kind.to_string(), 0)),
+            "{table} {kind}: {layers:?}"
+        );
+    }
+    let row = admin
+        .query_one(
+            "SELECT ST_Area(geom), ST_IsValid(geom) FROM nrgdb.latest_spaces
+             WHERE map = 'g' AND space_id = 10",
+            &[],
+        )
+        .unwrap();
+    let (area, valid): (f64, bool) = (row.get(0), row.get(1));
+    assert!((area - 3.8 * 4.8).abs() < 1e-9 && valid, "{area} {valid}");
+}
