@@ -99,7 +99,7 @@ fn main() {
     for e in errors.iter().take(5) {
         println!("  error: {e}");
     }
-    if !db.contains("://") {
+    if !nrgdb::store::is_postgres_url(&db) {
         let size: u64 = ["", "-wal"]
             .iter()
             .filter_map(|s| std::fs::metadata(format!("{db}{s}")).ok())

@@ -185,7 +185,7 @@ fn resolve(spec: &str, base: Option<&Resolved>, db: &DbArg) -> miette::Result<Re
         ),
         (Err(_), _) => parse_map_rev(spec)?,
     };
-    if !db.db.contains("://") && !std::path::Path::new(&db.db).exists() {
+    if !nrgdb::store::is_postgres_url(&db.db) && !std::path::Path::new(&db.db).exists() {
         miette::bail!(
             "'{spec}' is not a file, and there is no database {} to find a map in \
              (give a model file, or --db DB / NRGDB_DB)",

@@ -71,7 +71,7 @@ pub fn edit(
         let edited = apply(&nrg, edit, next)?;
         let rule = Rule::record(&nrg, edit)?;
         let walked = walked_model(&edited.nrg);
-        match store.commit_edit(map, base, &walked.nrg, &meta, statement, &rule) {
+        match store.commit_edit(map, (base, &nrg), &walked.nrg, &meta, statement, &rule) {
             Ok((revision, correction)) => {
                 return Ok(Corrected {
                     revision,

@@ -141,7 +141,7 @@ impl AppState {
     /// token (read-only) the database must exist; with one, uploads may
     /// create it.
     pub fn new(config: ServerConfig) -> Result<AppState, StoreError> {
-        let is_file = !config.db.contains("://");
+        let is_file = !crate::store::is_postgres_url(&config.db);
         if config.token.is_none() && is_file && !Path::new(&config.db).exists() {
             // Read-only: nothing could ever fill a database created now.
             return Err(StoreError::NoDatabase {

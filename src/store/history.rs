@@ -192,15 +192,15 @@ impl Store {
         })
     }
 
-    /// Stores `nrg` (revision `base` of `map` with an edit applied, ids as
-    /// they are) as the next revision, and the edit as a correction, in
-    /// one commit. Refused with [`StoreError::Stale`] when `base` is no
-    /// longer the latest revision. Returns the revision and the
-    /// correction's number.
+    /// Stores `nrg` (the model of revision `base.0` of `map`, `base.1`,
+    /// with an edit applied, ids as they are) as the next revision, and the
+    /// edit as a correction, in one commit. Refused with
+    /// [`StoreError::Stale`] when `base` is no longer the latest revision.
+    /// Returns the revision and the correction's number.
     pub fn commit_edit(
         &mut self,
         map: &str,
-        base: u32,
+        (base, parent): (u32, &Nrg),
         nrg: &Nrg,
         meta: &ImportMeta,
         statement: &str,
@@ -217,13 +217,12 @@ impl Store {
                 map: map.to_string(),
             });
         }
-        let parent = self.engine.load(map, Some(base))?;
         let commit = Commit {
             correction: Some(NewCorrection {
                 statement,
                 rule_json: &rule_json,
             }),
-            ..Commit::revision(map, base, Some(&parent), nrg, meta)
+            ..Commit::revision(map, base, Some(parent), nrg, meta)
         };
         let done = self.engine.commit(&commit)?;
         let id = done.correction.ok_or_else(|| StoreError::BadCorrection {

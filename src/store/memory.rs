@@ -5,12 +5,13 @@
 
 use std::collections::BTreeMap;
 use std::sync::{Arc, Mutex, MutexGuard};
-use std::time::{Duration, SystemTime};
+use std::time::Duration;
 
 use super::delta::{Delta, smallest_containing};
 use super::engine::{Commit, Committed, Engine, ReadStore, WriteStore};
 use super::{
     Correction, CorrectionState, CorrectionsKey, EncodedGrid, MapInfo, RevisionInfo, StoreError,
+    now_utc,
 };
 use crate::edit::Rule;
 use crate::model::{Nrg, SpaceId};
@@ -41,11 +42,6 @@ struct Stored {
     info: RevisionInfo,
     nrg: Arc<Nrg>,
     grid: Option<EncodedGrid>,
-}
-
-/// Now, UTC, ISO 8601 with milliseconds (as the SQL engines write it).
-pub(crate) fn now_utc() -> String {
-    humantime::format_rfc3339_millis(SystemTime::now()).to_string()
 }
 
 impl MemoryStore {

@@ -127,6 +127,22 @@ impl ImportMeta {
     }
 }
 
+/// Whether `db` names a PostgreSQL database (`postgres://` or
+/// `postgresql://`) rather than an SQLite file: the one place that tells.
+///
+/// ```
+/// assert!(nrgdb::store::is_postgres_url("postgres://u@h/db"));
+/// assert!(!nrgdb::store::is_postgres_url("maps/nrgdb.sqlite"));
+/// ```
+pub fn is_postgres_url(db: &str) -> bool {
+    db.starts_with("postgres://") || db.starts_with("postgresql://")
+}
+
+/// Now, UTC, ISO 8601 with milliseconds (as every engine records times).
+pub(crate) fn now_utc() -> String {
+    humantime::format_rfc3339_millis(std::time::SystemTime::now()).to_string()
+}
+
 /// Lower-case hex SHA-256 of `bytes`.
 ///
 /// ```
@@ -223,11 +239,11 @@ impl Store {
     /// (created if needed).
     pub fn open_db(db: &str) -> Result<Store, StoreError> {
         #[cfg(feature = "postgres")]
-        if postgres::is_postgres_url(db) {
+        if is_postgres_url(db) {
             return Ok(Store::on(Box::new(postgres::PostgresStore::open(db)?)));
         }
         #[cfg(not(feature = "postgres"))]
-        if db.starts_with("postgres://") || db.starts_with("postgresql://") {
+        if is_postgres_url(db) {
             return Err(StoreError::Open {
                 location: "the PostgreSQL URL".into(),
                 source: "this nrgdb was built without the `postgres` feature".into(),
@@ -239,7 +255,7 @@ impl Store {
     /// [`Store::open_db`] for commands that only read: an SQLite file must
     /// exist already ([`StoreError::NoDatabase`]).
     pub fn open_existing_db(db: &str) -> Result<Store, StoreError> {
-        if db.starts_with("postgres://") || db.starts_with("postgresql://") {
+        if is_postgres_url(db) {
             return Store::open_db(db);
         }
         Store::open_existing(Path::new(db))

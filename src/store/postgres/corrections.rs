@@ -8,7 +8,7 @@ use super::prepared::Prepared;
 use super::read::map_id;
 use super::write::lock_map;
 use crate::edit::Rule;
-use crate::store::memory::now_utc;
+use crate::store::now_utc;
 use crate::store::{
     Correction, CorrectionResults, CorrectionState, CorrectionsKey, NewCorrection, StoreError,
 };

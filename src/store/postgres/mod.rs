@@ -34,12 +34,6 @@ use prepared::Prepared;
 
 pub use schema::PG_SCHEMA_VERSION;
 
-/// Whether `db` names a PostgreSQL database (`postgres://` or
-/// `postgresql://`) rather than an SQLite file.
-pub fn is_postgres_url(db: &str) -> bool {
-    db.starts_with("postgres://") || db.starts_with("postgresql://")
-}
-
 /// A connection to a PostgreSQL database with PostGIS.
 pub struct PostgresStore {
     /// The connection and its prepared statements; `None` only while

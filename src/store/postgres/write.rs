@@ -13,7 +13,7 @@ use super::prepared::Prepared;
 use super::read::{latest, load_at, map_id, revision_at};
 use crate::model::{Nrg, Space, SpaceId};
 use crate::store::delta::Delta;
-use crate::store::memory::now_utc;
+use crate::store::now_utc;
 use crate::store::{Commit, Committed, EncodedGrid, StoreError, geometry_blob};
 
 /// Takes the write lock of `map` for the rest of the transaction.
@@ -181,21 +181,21 @@ fn write_revision(
     }
     let insert = "INSERT INTO connections (map_id, a, b, valid_from, kind, length_m, geom)
          VALUES ($1, $2, $3, $4, $5, $6, ST_MakeLine(ST_MakePoint($7, $8), ST_MakePoint($9, $10)))";
-    for c in &delta.open_links {
+    for link in &delta.open_links {
         let (pa, pb) = (
-            nrg.space(c.a).map_or([0.0; 2], |s| s.anchor),
-            nrg.space(c.b).map_or([0.0; 2], |s| s.anchor),
+            nrg.space(link.a).map_or([0.0; 2], |s| s.anchor),
+            nrg.space(link.b).map_or([0.0; 2], |s| s.anchor),
         );
         p.execute(
             &mut *tx,
             insert,
             &[
                 &map_id,
-                &i64::from(c.a.0),
-                &i64::from(c.b.0),
+                &i64::from(link.a.0),
+                &i64::from(link.b.0),
                 &seq_i,
-                &c.kind.as_str(),
-                &c.length_m,
+                &link.kind.as_str(),
+                &link.length_m,
                 &pa[0],
                 &pa[1],
                 &pb[0],
@@ -203,7 +203,7 @@ fn write_revision(
             ],
         )?;
     }
-    let params_json = meta.params.as_ref().map(|p| p.to_string());
+    let params_json = meta.params.as_ref().map(|v| v.to_string());
     let n = |v: usize| i64::try_from(v).unwrap_or(i64::MAX);
     p.execute(&mut *tx, "INSERT INTO revisions (map_id, seq, parent, created_at, source_name, source_sha256, params,
              message, author, space_count, connection_count, spaces_added, spaces_changed, spaces_removed)
