@@ -50,8 +50,49 @@ pub(crate) struct Corner {
     pub from: Option<(usize, bool)>,
 }
 
+/// Whether `p` lies on the segment of `portal` (to rounding): the
+/// triangles on both sides of it hold `p`.
+fn on_portal(p: Point, (a, b): (Point, Point)) -> bool {
+    let (ab, ap) = (sub(b, a), sub(p, a));
+    let len2 = ab[0] * ab[0] + ab[1] * ab[1];
+    if len2 <= 0.0 {
+        return ap == [0.0, 0.0];
+    }
+    let t = (ap[0] * ab[0] + ap[1] * ab[1]) / len2;
+    // Twice the triangle's area over the length: the distance to the line.
+    let off = cross(ab, ap).abs() / len2.sqrt();
+    off <= 1e-9 * (1.0 + len2.sqrt()) && (-1e-9..=1.0 + 1e-9).contains(&t)
+}
+
 /// [`funnel`], saying which portal end each bend is.
+///
+/// Portals at the start of the channel that the start point lies on, and
+/// at its end that the end point lies on, are passed already: a point on
+/// a portal sees it edge-on, where the funnel's side tests have no sign
+/// (a room's centre on a diagonal of its triangulation made a walk
+/// through the room bend at a far corner).
 pub(crate) fn funnel_corners(start: Point, end: Point, portals: &[(Point, Point)]) -> Vec<Corner> {
+    let skip = portals.iter().take_while(|p| on_portal(start, **p)).count();
+    let keep = portals.len()
+        - portals[skip..]
+            .iter()
+            .rev()
+            .take_while(|p| on_portal(end, **p))
+            .count();
+    let mut corners = funnel_through(start, end, &portals[skip..keep]);
+    // Bends keep their index in the whole channel; one at the end point
+    // itself (the funnel's last, degenerate portal) is no portal's end.
+    for c in &mut corners {
+        c.from = c
+            .from
+            .filter(|(i, _)| *i < keep - skip)
+            .map(|(i, left)| (i + skip, left));
+    }
+    corners
+}
+
+/// The funnel proper: the bends of the shortest path through `portals`.
+fn funnel_through(start: Point, end: Point, portals: &[(Point, Point)]) -> Vec<Corner> {
     let mut path = vec![Corner {
         at: start,
         from: None,
@@ -151,6 +192,19 @@ mod tests {
         let portals = [([1.0, 0.0], [1.0, 1.0]), ([1.0, 0.0], [2.0, 0.0])];
         let path = funnel([0.0, 0.5], [1.5, -2.0], &portals);
         assert_eq!(path, vec![[0.0, 0.5], [1.0, 0.0], [1.5, -2.0]]);
+    }
+
+    #[test]
+    fn a_start_on_a_portal_walks_straight() {
+        // A rectangle cut by the diagonal (0, 0)-(4, 2), then a fan to the
+        // target: the start (2, 1) lies on the first portal.
+        let portals = [([4.0, 2.0], [0.0, 0.0]), ([0.0, 0.0], [4.0, -2.0])];
+        let path = funnel([2.0, 1.0], [1.0, -1.0], &portals);
+        assert_eq!(path, vec![[2.0, 1.0], [1.0, -1.0]]);
+        // And the same at the end, walked the other way.
+        let back = [([4.0, -2.0], [0.0, 0.0]), ([0.0, 0.0], [4.0, 2.0])];
+        let path = funnel([1.0, -1.0], [2.0, 1.0], &back);
+        assert_eq!(path, vec![[1.0, -1.0], [2.0, 1.0]]);
     }
 
     #[test]
