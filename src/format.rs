@@ -16,7 +16,7 @@ mod detect;
 use std::io::Read;
 use std::path::{Path, PathBuf};
 
-pub use detect::{Declared, FileKind, ImageFormat, detect};
+pub use detect::{Declared, FileKind, ImageFormat, RecordingFormat, detect};
 
 use crate::indoorgml::{self, Document, IndoorGmlError, WeightFixes};
 use crate::model::Nrg;

@@ -18,6 +18,10 @@
 //!    before the model is stored as the next revision in one transaction,
 //!    so stored lengths are the lengths exports carry.
 //!
+//! A ROS 2 recording ([`import_recording`]) is many maps over time: each
+//! chosen map takes the same two steps (extracted and gated as a map
+//! file's grid, then [`ingest`]) as its own revision.
+//!
 //! Uses format, grid, extract, route and store; sits above them (the store
 //! knows nothing of routing). Must not use HTTP or the terminal.
 //!
@@ -36,12 +40,14 @@
 mod correct;
 mod error;
 mod read;
+mod recording;
 mod source;
 mod valid;
 
 pub use correct::{CorrectError, Corrected, edit};
 pub use error::IngestError;
 pub use read::{IngestOptions, InputFile, Prepared, read, read_path};
+pub use recording::{RecordingImport, RecordingImportError, StoredMap, import_recording};
 pub use valid::{Validated, findings, validate};
 
 use crate::grid::OccupancyGrid;

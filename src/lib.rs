@@ -25,6 +25,7 @@ pub mod indoorgml;
 pub mod ingest;
 pub mod model;
 pub mod query;
+pub mod recording;
 pub mod render;
 pub mod route;
 #[cfg(feature = "server")]

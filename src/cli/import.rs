@@ -14,7 +14,9 @@ use super::{load_model, report_fixes};
 /// their ids and names; connection lengths are stored as walked lengths.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// The model: .gml/.xml (IndoorGML), .json, .geojson, or .yaml (a ROS occupancy map, extracted first).
+    /// The model: .gml/.xml (IndoorGML), .json, .geojson, .yaml (a ROS occupancy map, extracted
+    /// first), or a ROS 2 recording (.mcap, .db3, or a bag folder with metadata.yaml: one revision
+    /// per map that changed).
     pub file: PathBuf,
     /// The map to add a revision to.
     #[arg(long, value_name = "NAME")]
@@ -29,12 +31,30 @@ pub struct Args {
     /// repair (`nrgdb check` would report it); refused by default.
     #[arg(long)]
     pub allow_invalid: bool,
+    /// Recordings: the topic of the maps (nav_msgs/msg/OccupancyGrid).
+    #[arg(long, default_value = "/map", value_name = "TOPIC")]
+    pub topic: String,
+    /// Recordings: keep at most one map per interval of recording time, the last of each
+    /// (e.g. `30s`, `5min`); by default every map that changed.
+    #[arg(long, value_name = "DURATION", value_parser = parse_every)]
+    pub every: Option<std::time::Duration>,
     #[command(flatten)]
     pub db: DbArg,
 }
 
+fn parse_every(text: &str) -> Result<std::time::Duration, String> {
+    let d = humantime::parse_duration(text).map_err(|e| format!("{e} (e.g. 30s, 5min)"))?;
+    if d.is_zero() {
+        return Err("must be longer than 0 s".into());
+    }
+    Ok(d)
+}
+
 /// Runs `nrgdb import`.
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
+    if super::import_recording::is_recording(&args.file) {
+        return super::import_recording::run(args, out);
+    }
     // A spinner on a terminal for big files (reading and storing take a while).
     let bytes = std::fs::metadata(&args.file).map_or(0, |m| m.len());
     let spinner = if bytes > 1 << 20 {

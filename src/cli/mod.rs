@@ -21,6 +21,7 @@ pub mod eval_loo;
 mod export;
 pub mod extract;
 mod import;
+mod import_recording;
 mod map_log;
 mod maps;
 mod model_file;

@@ -35,6 +35,15 @@ pub enum ImageFormat {
     Png,
 }
 
+/// A ROS 2 recording's storage.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RecordingFormat {
+    /// MCAP (rosbag2's default storage since ROS 2 Iron).
+    Mcap,
+    /// SQLite (`.db3`, rosbag2's storage before Iron).
+    Db3,
+}
+
 /// What a file holds, as far as nrgdb reads it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FileKind {
@@ -44,6 +53,8 @@ pub enum FileKind {
     Image(ImageFormat),
     /// A model file.
     Model(ModelFormat),
+    /// A ROS 2 recording (rosbag2) holding maps.
+    Recording(RecordingFormat),
 }
 
 impl std::fmt::Display for FileKind {
@@ -55,6 +66,8 @@ impl std::fmt::Display for FileKind {
             FileKind::Model(ModelFormat::IndoorGml) => "IndoorGML (XML)",
             FileKind::Model(ModelFormat::Json) => "model JSON",
             FileKind::Model(ModelFormat::GeoJson) => "GeoJSON",
+            FileKind::Recording(RecordingFormat::Mcap) => "a ROS 2 recording (MCAP)",
+            FileKind::Recording(RecordingFormat::Db3) => "a ROS 2 bag (SQLite)",
         })
     }
 }
@@ -104,6 +117,8 @@ impl FileKind {
             "gml" | "xml" => FileKind::Model(ModelFormat::IndoorGml),
             "json" => FileKind::Model(ModelFormat::Json),
             "geojson" => FileKind::Model(ModelFormat::GeoJson),
+            "mcap" => FileKind::Recording(RecordingFormat::Mcap),
+            "db3" => FileKind::Recording(RecordingFormat::Db3),
             _ => return None,
         })
     }
@@ -155,7 +170,7 @@ impl FileKind {
         match content(bytes) {
             Content::Kind(k) => Some(k),
             Content::AnyJson => Some(FileKind::Model(ModelFormat::Json)),
-            Content::Unknown => None,
+            Content::Sqlite | Content::Unknown => None,
         }
     }
 }
@@ -166,6 +181,8 @@ enum Content {
     Kind(FileKind),
     /// Starts like a JSON object but does not parse: model JSON or GeoJSON.
     AnyJson,
+    /// An SQLite database: a bag if its name says so.
+    Sqlite,
     Unknown,
 }
 
@@ -177,10 +194,21 @@ struct TypeProbe {
 }
 
 const PNG_MAGIC: &[u8] = b"\x89PNG\r\n\x1a\n";
+/// MCAP's magic (format version 0).
+const MCAP_MAGIC: &[u8] = b"\x89MCAP0\r\n";
+/// SQLite's header: a `.db3` bag is one (an SQLite file is only called a
+/// bag by its name: nrgdb's own database is SQLite too).
+const SQLITE_MAGIC: &[u8] = b"SQLite format 3\0";
 
 fn content(bytes: &[u8]) -> Content {
     if bytes.starts_with(PNG_MAGIC) {
         return Content::Kind(FileKind::Image(ImageFormat::Png));
+    }
+    if bytes.starts_with(MCAP_MAGIC) {
+        return Content::Kind(FileKind::Recording(RecordingFormat::Mcap));
+    }
+    if bytes.starts_with(SQLITE_MAGIC) {
+        return Content::Sqlite;
     }
     if let [b'P', b'1'..=b'7', next, ..] = bytes
         && next.is_ascii_whitespace()
@@ -239,10 +267,14 @@ pub fn detect(declared: &Declared<'_>, bytes: &[u8]) -> Result<FileKind, FormatE
         (None, Content::AnyJson) => Ok(hint
             .filter(|h| json(*h))
             .unwrap_or(FileKind::Model(ModelFormat::Json))),
-        (None, Content::Unknown) => hint.ok_or_else(|| FormatError::Unrecognised {
-            path: PathBuf::from(declared.label()),
-        }),
+        (None, Content::Unknown | Content::Sqlite) => {
+            hint.ok_or_else(|| FormatError::Unrecognised {
+                path: PathBuf::from(declared.label()),
+            })
+        }
         (Some(said), Content::Unknown) => Ok(said),
+        (Some(said @ FileKind::Recording(RecordingFormat::Db3)), Content::Sqlite) => Ok(said),
+        (Some(said), Content::Sqlite) => Err(conflict(declared, said, "an SQLite database")),
         (Some(said), Content::AnyJson) if json(said) || said == FileKind::MapYaml => Ok(said),
         (Some(said), Content::AnyJson) => Err(conflict(declared, said, "JSON")),
         (Some(said), Content::Kind(found)) => {

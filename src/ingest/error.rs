@@ -66,6 +66,14 @@ pub enum IngestError {
         /// The model file.
         model: PathBuf,
     },
+    /// A ROS 2 recording where one model was expected.
+    #[error(
+        "{path}: a ROS 2 recording holds maps over time, not one model; import it with `nrgdb import {path} --map NAME` (one revision per map that changed)"
+    )]
+    Recording {
+        /// The recording.
+        path: PathBuf,
+    },
     /// No file at all.
     #[error("no file given (a map YAML and its PGM or PNG image, or one model file)")]
     Nothing,

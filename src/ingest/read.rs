@@ -125,6 +125,11 @@ pub fn read(files: &[InputFile<'_>], options: &IngestOptions) -> Result<Prepared
         let (slot, what) = match format::detect(&file.declared, file.bytes)? {
             FileKind::MapYaml => (&mut yaml, "map YAML"),
             FileKind::Image(_) => (&mut image, "image"),
+            FileKind::Recording(_) => {
+                return Err(IngestError::Recording {
+                    path: file.label().into(),
+                });
+            }
             FileKind::Model(f) => {
                 if let Some((_, first)) = model.replace((f, file)) {
                     return Err(twice("model file", first, file));
@@ -164,6 +169,7 @@ pub fn read_path(path: &Path, options: &IngestOptions) -> Result<Prepared, Inges
     match format::detect(&file.declared, &bytes)? {
         FileKind::Model(format) => read_model(&file, format, options),
         FileKind::Image(_) => Err(IngestError::ImageWithoutMap { image: path.into() }),
+        FileKind::Recording(_) => Err(IngestError::Recording { path: path.into() }),
         FileKind::MapYaml => {
             let text = format::utf8_text(&bytes, path, FileKind::MapYaml)?;
             let image_path = MapYaml::parse(text, path)?.image;
@@ -208,11 +214,30 @@ fn read_map(
         image.bytes,
         &options.load,
     )?;
+    from_grid(
+        grid,
+        yaml.label(),
+        format!("{} + {}", file_name(yaml.label()), file_name(image.label())),
+        sha256_hex_of(&[yaml.bytes, image.bytes]),
+        options,
+    )
+}
+
+/// A model extracted from `grid` (read from `label`) with
+/// `options.params`, through the geometric gate: the one way from a grid
+/// to a stored model, for map files and for recordings' maps.
+pub(crate) fn from_grid(
+    grid: OccupancyGrid,
+    label: &str,
+    source_name: String,
+    source_sha256: String,
+    options: &IngestOptions,
+) -> Result<Prepared, IngestError> {
     let extraction = extract(&grid, &options.params).map_err(|source| IngestError::Extract {
-        path: yaml_name.into(),
+        path: label.into(),
         source,
     })?;
-    let valid = validate(extraction.nrg, yaml.label(), options.allow_invalid)?;
+    let valid = validate(extraction.nrg, label, options.allow_invalid)?;
     Ok(Prepared {
         nrg: valid.nrg,
         grid: Some(grid),
@@ -220,8 +245,8 @@ fn read_map(
         weights_fixed: WeightFixes::default(),
         repairs: valid.repairs,
         kept: valid.kept,
-        source_name: format!("{} + {}", file_name(yaml.label()), file_name(image.label())),
-        source_sha256: sha256_hex_of(&[yaml.bytes, image.bytes]),
+        source_name,
+        source_sha256,
     })
 }
 

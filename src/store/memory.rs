@@ -256,7 +256,7 @@ impl WriteStore for MemoryStore {
                     map: c.map.to_string(),
                     seq,
                     parent: (c.base > 0).then_some(c.base),
-                    created_at: now.clone(),
+                    created_at: c.meta.recorded_at.clone().unwrap_or_else(|| now.clone()),
                     source_name: c.meta.source_name.clone(),
                     source_sha256: c.meta.source_sha256.clone(),
                     params: c.meta.params.clone(),

@@ -107,6 +107,9 @@ pub struct ImportMeta {
     pub source_sha256: Option<String>,
     /// Extraction parameters (JSON), when the model was extracted.
     pub params: Option<serde_json::Value>,
+    /// When the map was made (RFC 3339 UTC, e.g. a recording's message
+    /// time): the revision's time. `None`: when it is stored.
+    pub recorded_at: Option<String>,
 }
 
 impl ImportMeta {

@@ -30,6 +30,8 @@ mod query;
 mod query_cli;
 mod query_golden;
 mod query_props;
+mod recording;
+mod recording_support;
 mod route_building;
 mod route_fidelity;
 mod route_holes;

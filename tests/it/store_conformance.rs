@@ -40,7 +40,13 @@ fn history_is_a_line_and_every_revision_reads_back() {
         ];
         let mut stored = Vec::new();
         for (k, nrg) in inputs.iter().enumerate() {
-            let done = store.import("b", nrg, meta(&format!("r{k}"))).unwrap();
+            let mut m = meta(&format!("r{k}"));
+            // A map made earlier (a recording's message time) keeps its
+            // time; the others get the time they are stored.
+            if k == 1 {
+                m.recorded_at = Some("2020-01-02T03:04:05.678Z".into());
+            }
+            let done = store.import("b", nrg, m).unwrap();
             assert_eq!(done.revision.seq, k as u32 + 1, "{}", e.name);
             assert_eq!(
                 done.revision.parent,
@@ -58,6 +64,12 @@ fn history_is_a_line_and_every_revision_reads_back() {
             e.name
         );
         assert_eq!(revs[2].message, "r2");
+        assert_eq!(revs[1].created_at, "2020-01-02T03:04:05.678Z", "{}", e.name);
+        assert!(
+            revs[2].created_at.as_str() > "2020-01-02T03:04:05.678Z",
+            "{}",
+            e.name
+        );
         assert_eq!(revs[2].author, "conformance");
         for (k, nrg) in stored.iter().enumerate() {
             assert_eq!(

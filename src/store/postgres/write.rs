@@ -212,7 +212,7 @@ fn write_revision(
             &map_id,
             &seq_i,
             &(base > 0).then_some(base as i32),
-            &now_utc(),
+            &meta.recorded_at.clone().unwrap_or_else(now_utc),
             &meta.source_name,
             &meta.source_sha256,
             &params_json,

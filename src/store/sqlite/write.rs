@@ -153,7 +153,7 @@ fn write_revision(
     conn.execute(
         "INSERT INTO revisions (map_id, seq, parent, created_at, source_name, source_sha256, params,
              message, author, space_count, connection_count, spaces_added, spaces_changed, spaces_removed)
-         VALUES (?1, ?2, ?3, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'), ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13)",
+         VALUES (?1, ?2, ?3, COALESCE(?14, strftime('%Y-%m-%dT%H:%M:%fZ', 'now')), ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13)",
         params![
             map_id,
             seq,
@@ -168,6 +168,7 @@ fn write_revision(
             count(delta.added),
             count(delta.changed),
             count(delta.removed),
+            meta.recorded_at,
         ],
     )?;
     Ok(())
