@@ -68,11 +68,14 @@ pub(super) fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     let done = done
         .into_diagnostic()
         .wrap_err_with(|| format!("importing {} into map '{}'", args.file.display(), args.map))?;
+    for (index, time, why) in &done.unusable {
+        writeln!(out, "map message {index} ({time}) left out: {why}").into_diagnostic()?;
+    }
     let written = done.revisions().count();
     let unchanged = done.maps.len() - written;
     writeln!(
         out,
-        "{}: {} on {} ({} read): {} stored{}{}{}{}",
+        "{}: {} on {} ({} read): {} stored{}{}{}{}{}",
         done.recording,
         nrgdb::wording::count(done.messages, "map message", "map messages"),
         done.topic,
@@ -82,8 +85,15 @@ pub(super) fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         skipped(done.thinned, "left out by --every"),
         skipped(unchanged, "gave the latest model again"),
         skipped(done.already_stored, "stored already"),
+        skipped(done.unusable.len(), "could not be extracted"),
     )
     .into_diagnostic()?;
+    if written == 0 && !done.unusable.is_empty() {
+        return Err(miette::miette!(
+            "no map of {} could be made into a model; nothing was stored",
+            done.recording
+        ));
+    }
     Ok(ExitCode::SUCCESS)
 }
 

@@ -4,14 +4,16 @@
 //! as its own revision in its own transaction, with the message's time as
 //! the revision's time and the recording's name in its message. The
 //! whole recording is read once before anything is stored, so a corrupt
-//! or truncated one stores nothing; a map that fails later (extraction,
-//! the geometric gate, the store) stops the import, and the error says
-//! which revisions were stored before it.
+//! or truncated one stores nothing. A map that cannot be made into a model
+//! (a robot's first maps are often a few square metres: extraction finds
+//! no room; or the model fails the geometric gate) is left out and
+//! reported with its reason; the store failing stops the import, and the
+//! error says which revisions were stored before it.
 
 use std::collections::BTreeSet;
 
 use super::read::from_grid;
-use super::{IngestError, IngestOptions, Ingested, ingest};
+use super::{IngestOptions, Ingested, ingest};
 use crate::recording::{
     Recording, RecordingError, RecordingOptions, Scan, log_time, read_chosen, scan,
 };
@@ -36,8 +38,11 @@ pub struct RecordingImport {
     /// the same map (hash) at the same time, from an earlier import of
     /// this recording or of one it continues.
     pub already_stored: usize,
-    /// One entry per chosen map, in order.
+    /// One entry per chosen map stored (or found unchanged), in order.
     pub maps: Vec<StoredMap>,
+    /// Chosen maps that could not be made into a model: number, time and
+    /// why.
+    pub unusable: Vec<(usize, String, String)>,
 }
 
 /// One chosen map and what became of it.
@@ -72,20 +77,8 @@ pub enum RecordingImportError {
     /// The map's history could not be read; nothing was stored.
     #[error("reading the map's history: {0} (nothing was stored)")]
     History(StoreError),
-    /// A map could not be made into a model.
-    #[error("map message {index} ({time}): {source}{}", stored_before(*stored))]
-    Map {
-        /// The message's number.
-        index: usize,
-        /// Its log time.
-        time: String,
-        /// Revisions stored before it.
-        stored: usize,
-        /// The cause.
-        source: Box<IngestError>,
-    },
     /// A map's model could not be stored.
-    #[error("map message {index} ({time}): {source}{}", stored_before(*stored))]
+    #[error("map message {index} ({time}): {error}{}", stored_before(*stored))]
     Store {
         /// The message's number.
         index: usize,
@@ -94,7 +87,7 @@ pub enum RecordingImportError {
         /// Revisions stored before it.
         stored: usize,
         /// The cause.
-        source: StoreError,
+        error: StoreError,
     },
 }
 
@@ -132,6 +125,7 @@ pub fn import_recording(
         thinned: found.choice.thinned,
         already_stored: 0,
         maps: Vec::with_capacity(found.choice.chosen.len()),
+        unusable: Vec::new(),
     };
     let stored_before: BTreeSet<(String, String)> = match store.revisions(map) {
         Ok(list) => list
@@ -149,19 +143,19 @@ pub fn import_recording(
         }
         let stored = done.revisions().count();
         let label = format!("{name} {} #{}", options.topic, seen.index);
-        let prepared = from_grid(
+        let prepared = match from_grid(
             grid,
             &label,
             label.clone(),
             seen.sha256.clone(),
             ingest_options,
-        )
-        .map_err(|source| RecordingImportError::Map {
-            index: seen.index,
-            time: time.clone(),
-            stored,
-            source: Box::new(source),
-        })?;
+        ) {
+            Ok(p) => p,
+            Err(e) => {
+                done.unusable.push((seen.index, time, e.to_string()));
+                return Ok(());
+            }
+        };
         let message = if meta.message.is_empty() {
             format!("from {name} ({} at {time})", options.topic)
         } else {
@@ -176,11 +170,11 @@ pub fn import_recording(
             revision_meta,
             prepared.grid.as_ref(),
         )
-        .map_err(|source| RecordingImportError::Store {
+        .map_err(|error| RecordingImportError::Store {
             index: seen.index,
             time: time.clone(),
             stored,
-            source,
+            error,
         })?;
         let entry = StoredMap {
             index: seen.index,

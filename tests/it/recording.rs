@@ -325,3 +325,43 @@ fn the_cli_imports_a_recording() {
     );
     assert!(!bad.status.success());
 }
+
+/// A robot's first maps are often too small to hold a room: they are left
+/// out with the reason, and the maps after them are stored.
+#[test]
+fn maps_too_small_to_extract_are_left_out_and_said() {
+    let dir = tempfile::tempdir().unwrap();
+    let tiny = nrgdb::grid::OccupancyGrid::from_cells(
+        20,
+        10,
+        0.05,
+        [0.0, 0.0, 0.0],
+        vec![Cell::Free; 200],
+    );
+    let mut messages = vec![Msg {
+        topic: "/map",
+        kind: GRID,
+        time_ns: T0,
+        data: grid_message(&tiny, T0, false),
+    }];
+    messages.extend(three_maps().into_iter().filter(|m| m.topic == "/map"));
+    let path = dir.path().join("growing.mcap");
+    write_mcap(&path, &messages, false);
+    let mut store = Store::open_in_memory().unwrap();
+    let done = import(&mut store, &path, &RecordingOptions::default()).unwrap();
+    assert_eq!(done.unusable.len(), 1);
+    let (index, time, why) = &done.unusable[0];
+    assert_eq!((*index, time.as_str()), (1, "2026-12-03T10:00:00.000Z"));
+    assert!(why.contains("extraction failed"), "{why}");
+    assert_eq!(done.revisions().count(), 2);
+    // Only unusable maps: the CLI says nothing was stored and fails.
+    let only = dir.path().join("only.mcap");
+    write_mcap(&only, &messages[..1], false);
+    let out = nrgdb(
+        dir.path(),
+        &["import", "only.mcap", "--map", "x", "--db", "t.sqlite"],
+    );
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("nothing was stored"), "{err}");
+}
