@@ -62,7 +62,7 @@ fn check_root(root: &Element) -> Result<(), IndoorGmlError> {
     }
     let hint = match &root.ns {
         Ns::Other(uri) if uri.contains("indoorgml/2.0") => {
-            "; this is the IndoorGML 2.0 draft encoding, which nrgdb does not read (only 1.0.x)".to_string()
+            "; this is the IndoorGML 2.0 draft XML encoding, which nrgdb does not read (it reads 1.0.x and 1.1 XML, and the 2.0 draft's JSON, IndoorJSON2, as .indoor.json)".to_string()
         }
         Ns::None if &*root.name == "IndoorFeatures" => {
             "; the element has no namespace: declare xmlns=\"http://www.opengis.net/indoorgml/1.0/core\"".to_string()
