@@ -1,8 +1,9 @@
 //! File formats: the one place that decides what a file is ([`detect`]:
 //! by its name or declared media type and by its first bytes; see
 //! `format/detect.rs` for the rules), and the model formats, IndoorGML
-//! (`.gml`, `.xml`), the model's JSON form (`.json`) and GeoJSON
-//! (`.geojson`), read from bytes or files and written by extension, for
+//! (`.gml`, `.xml`), the model's JSON form (`.json`), GeoJSON
+//! (`.geojson`) and the IndoorGML 2.0 draft's IndoorJSON2
+//! (`.indoor.json`), read from bytes or files and written by extension, for
 //! the CLI, the ingest of files and uploads, and the server.
 //!
 //! Every model written goes through [`render`]: connection lengths are the
@@ -18,7 +19,7 @@ use std::path::{Path, PathBuf};
 
 pub use detect::{Declared, FileKind, ImageFormat, RecordingFormat, detect};
 
-use crate::indoorgml::{self, Document, IndoorGmlError, WeightFixes};
+use crate::indoorgml::{self, Document, IndoorGmlError, IndoorGmlVersion, WeightFixes};
 use crate::model::Nrg;
 use crate::route::{WalkedModel, walked_model};
 
@@ -31,6 +32,9 @@ pub enum ModelFormat {
     Json,
     /// GeoJSON FeatureCollection.
     GeoJson,
+    /// IndoorJSON2, the JSON encoding of the IndoorGML 2.0 draft
+    /// (`indoorgml::json2`; a draft, not a standard).
+    IndoorJson,
 }
 
 /// Why a model file could not be read or written.
@@ -39,7 +43,7 @@ pub enum ModelFormat {
 pub enum FormatError {
     /// The extension names no known format.
     #[error(
-        "{0}: unknown format; use .gml or .xml (IndoorGML), .json (model JSON) or .geojson (GeoJSON)"
+        "{0}: unknown format; use .gml or .xml (IndoorGML), .json (model JSON), .geojson (GeoJSON) or .indoor.json (IndoorJSON2, IndoorGML 2.0 draft)"
     )]
     UnknownExtension(PathBuf),
     /// Neither the name, the media type nor the bytes tell the format.
@@ -250,6 +254,9 @@ pub fn model_from_bytes(
         ModelFormat::GeoJson => {
             crate::geojson::from_geojson(text).map_err(|e| json(e.to_string()))?
         }
+        ModelFormat::IndoorJson => {
+            indoorgml::json2::read_str(text).map_err(|e| json(format!("IndoorJSON2: {e}")))?
+        }
     };
     Ok((nrg, WeightFixes::default()))
 }
@@ -285,11 +292,17 @@ pub fn render_model(nrg: &Nrg, format: ModelFormat) -> String {
 /// [`render_model`] for a model already walked (a cached revision's
 /// navigation layer: [`WalkedModel::on`]).
 pub fn render(walked: &WalkedModel, format: ModelFormat) -> String {
+    render_as(walked, format, IndoorGmlVersion::default())
+}
+
+/// [`render`], IndoorGML written as `version` (other formats have one).
+pub fn render_as(walked: &WalkedModel, format: ModelFormat, version: IndoorGmlVersion) -> String {
     let nrg = &walked.nrg;
     match format {
         ModelFormat::IndoorGml => {
-            indoorgml::write_string(&indoorgml::from_nrg_with_paths(nrg, &walked.paths))
+            indoorgml::write_string_as(&indoorgml::from_nrg_with_paths(nrg, &walked.paths), version)
         }
+        ModelFormat::IndoorJson => indoorgml::json2::write_string(nrg, &walked.paths),
         ModelFormat::Json => nrg.to_json() + "\n",
         ModelFormat::GeoJson => {
             serde_json::to_string_pretty(&crate::geojson::to_geojson_with_paths(nrg, &walked.paths))
@@ -302,7 +315,16 @@ pub fn render(walked: &WalkedModel, format: ModelFormat) -> String {
 /// Writes a model atomically in the format its extension names, with
 /// walked connection lengths and paths ([`render_model`]).
 pub fn write_model(nrg: &Nrg, path: &Path) -> Result<(), FormatError> {
-    let text = render_model(nrg, ModelFormat::of(path)?);
+    write_model_as(nrg, path, IndoorGmlVersion::default())
+}
+
+/// [`write_model`], IndoorGML written as `version`.
+pub fn write_model_as(
+    nrg: &Nrg,
+    path: &Path,
+    version: IndoorGmlVersion,
+) -> Result<(), FormatError> {
+    let text = render_as(&walked_model(nrg), ModelFormat::of(path)?, version);
     crate::atomic::write(path, text.as_bytes()).map_err(|source| FormatError::Io {
         path: path.to_path_buf(),
         source,

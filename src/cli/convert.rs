@@ -11,7 +11,8 @@ use nrgdb::{indoorgml, ingest};
 /// Arguments of `nrgdb convert`.
 #[derive(Debug, clap::Args)]
 #[command(
-    after_help = "Formats by extension (the input's also by its content): .gml/.xml IndoorGML 1.0.3, \
+    after_help = "Formats by extension (the input's also by its content): .gml/.xml IndoorGML 1.0.3 (1.1 with --indoorgml-version 1.1; 1.0.x and 1.1 read), \
+.indoor.json IndoorJSON2 (the IndoorGML 2.0 draft's JSON encoding, draft 0.1), \
 .json the model's JSON form, .geojson a GeoJSON FeatureCollection (metres in the map frame).\n\
 IndoorGML to IndoorGML keeps the whole document (3D geometry, every layer, inter-layer connections); \
 any other conversion goes through the 2D model, written with walked connection lengths \
@@ -29,6 +30,10 @@ pub struct Args {
     /// for `nrgdb check`; refused by default.
     #[arg(long)]
     pub allow_invalid: bool,
+    /// IndoorGML version of a .gml/.xml output: 1.0.3 or 1.1 (default:
+    /// the input's version for IndoorGML to IndoorGML, else 1.0.3).
+    #[arg(long, value_name = "VERSION")]
+    pub indoorgml_version: Option<indoorgml::IndoorGmlVersion>,
 }
 
 /// Runs `nrgdb convert`.
@@ -44,7 +49,8 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
             .and_then(|text| indoorgml::read_str(text).into_diagnostic())
             .wrap_err_with(|| format!("cannot read {}", args.input.display()))?;
         refuse_findings(&args, &indoorgml::check(&doc))?;
-        indoorgml::write_file(&doc, &args.output).into_diagnostic()?;
+        let version = args.indoorgml_version.unwrap_or(doc.version);
+        indoorgml::write_file_as(&doc, version, &args.output).into_diagnostic()?;
         writeln!(
             out,
             "wrote {} ({} cells, {} boundaries, {} layers)",
@@ -61,7 +67,8 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     let valid = ingest::validate(nrg, &label, args.allow_invalid).into_diagnostic()?;
     super::report_repairs(&label, &valid.repairs, &valid.kept);
     let nrg = valid.nrg;
-    format::write_model(&nrg, &args.output).into_diagnostic()?;
+    let version = args.indoorgml_version.unwrap_or_default();
+    format::write_model_as(&nrg, &args.output, version).into_diagnostic()?;
     super::report_fixes(&fixes, out)?;
     writeln!(
         out,

@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use miette::{IntoDiagnostic, WrapErr};
 
 use super::db::{DbArg, parse_map_rev};
-use super::write_model;
+use super::write_model_as;
 
 /// Write a revision of a map to a model file (the latest unless NAME@REV).
 #[derive(Debug, clap::Args)]
@@ -18,6 +18,9 @@ pub struct Args {
     /// Output file (.gml IndoorGML, .json model JSON, .geojson), written atomically; `-` writes JSON to stdout.
     #[arg(long, short)]
     pub out: PathBuf,
+    /// IndoorGML version of a .gml/.xml output: 1.0.3 or 1.1.
+    #[arg(long, value_name = "VERSION", default_value_t)]
+    pub indoorgml_version: nrgdb::indoorgml::IndoorGmlVersion,
     #[command(flatten)]
     pub db: DbArg,
 }
@@ -30,6 +33,6 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         .load(&map, rev)
         .into_diagnostic()
         .wrap_err_with(|| format!("exporting {}", args.map))?;
-    write_model(&args.out, &nrg, out)?;
+    write_model_as(&args.out, &nrg, args.indoorgml_version, out)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -63,12 +63,18 @@ pub fn report_fixes(fixes: &WeightFixes, out: &mut dyn std::io::Write) -> miette
 }
 
 /// Writes a model atomically in the format its extension names
-/// (`.gml`, `.json`, `.geojson`); `-` writes JSON to `out`. Either way with
+/// (`.gml`, `.json`, `.geojson`, `.indoor.json`; IndoorGML as `version`);
+/// `-` writes JSON to `out`. Either way with
 /// walked connection lengths and paths (`nrgdb::format::render_model`).
-pub fn write_model(path: &Path, nrg: &Nrg, out: &mut dyn std::io::Write) -> miette::Result<()> {
+pub fn write_model_as(
+    path: &Path,
+    nrg: &Nrg,
+    version: nrgdb::indoorgml::IndoorGmlVersion,
+    out: &mut dyn std::io::Write,
+) -> miette::Result<()> {
     if path == Path::new("-") {
         let json = nrgdb::format::render_model(nrg, ModelFormat::Json);
         return out.write_all(json.as_bytes()).into_diagnostic();
     }
-    nrgdb::format::write_model(nrg, path).into_diagnostic()
+    nrgdb::format::write_model_as(nrg, path, version).into_diagnostic()
 }

@@ -66,6 +66,7 @@ impl std::fmt::Display for FileKind {
             FileKind::Model(ModelFormat::IndoorGml) => "IndoorGML (XML)",
             FileKind::Model(ModelFormat::Json) => "model JSON",
             FileKind::Model(ModelFormat::GeoJson) => "GeoJSON",
+            FileKind::Model(ModelFormat::IndoorJson) => "IndoorJSON2 (IndoorGML 2.0 draft)",
             FileKind::Recording(RecordingFormat::Mcap) => "a ROS 2 recording (MCAP)",
             FileKind::Recording(RecordingFormat::Db3) => "a ROS 2 bag (SQLite)",
         })
@@ -109,6 +110,9 @@ impl FileKind {
     /// ```
     pub fn by_extension(name: &str) -> Option<FileKind> {
         let file = name.rsplit(['/', '\\']).next().unwrap_or(name);
+        if file.to_ascii_lowercase().ends_with(".indoor.json") {
+            return Some(FileKind::Model(ModelFormat::IndoorJson));
+        }
         let ext = file.rsplit_once('.')?.1.to_ascii_lowercase();
         Some(match ext.as_str() {
             "yaml" | "yml" => FileKind::MapYaml,
@@ -151,13 +155,15 @@ impl FileKind {
             "image" => FileKind::Image(ImageFormat::Pgm),
             "indoorgml" | "gml" => FileKind::Model(ModelFormat::IndoorGml),
             "geojson" => FileKind::Model(ModelFormat::GeoJson),
+            "indoorjson" => FileKind::Model(ModelFormat::IndoorJson),
             "model" | "json" => FileKind::Model(ModelFormat::Json),
             _ => return None,
         })
     }
 
     /// The kind the first bytes show, if they show one (a JSON object is
-    /// GeoJSON when its top-level `type` is `FeatureCollection`, else model
+    /// GeoJSON when its top-level `type` is `FeatureCollection`, IndoorJSON2
+    /// when it is `IndoorJSON2`, else model
     /// JSON).
     ///
     /// ```
@@ -224,6 +230,9 @@ fn content(bytes: &[u8]) -> Content {
                 Ok(p) if p.kind.as_ref().and_then(|k| k.as_str()) == Some("FeatureCollection") => {
                     Content::Kind(FileKind::Model(ModelFormat::GeoJson))
                 }
+                Ok(p) if p.kind.as_ref().and_then(|k| k.as_str()) == Some("IndoorJSON2") => {
+                    Content::Kind(FileKind::Model(ModelFormat::IndoorJson))
+                }
                 Ok(_) => Content::Kind(FileKind::Model(ModelFormat::Json)),
                 Err(_) => Content::AnyJson,
             };
@@ -261,7 +270,12 @@ pub fn detect(declared: &Declared<'_>, bytes: &[u8]) -> Result<FileKind, FormatE
         .and_then(FileKind::by_extension)
         .or_else(|| declared.media_type.and_then(FileKind::by_media_type));
     let hint = declared.field.and_then(FileKind::by_field);
-    let json = |k: FileKind| matches!(k, FileKind::Model(ModelFormat::Json | ModelFormat::GeoJson));
+    let json = |k: FileKind| {
+        matches!(
+            k,
+            FileKind::Model(ModelFormat::Json | ModelFormat::GeoJson | ModelFormat::IndoorJson)
+        )
+    };
     match (claim, content(bytes)) {
         (None, Content::Kind(found)) => Ok(found),
         (None, Content::AnyJson) => Ok(hint
@@ -290,9 +304,13 @@ fn agree(said: FileKind, found: FileKind) -> Option<FileKind> {
         _ if said == found => Some(found),
         (Image(_), Image(_)) => Some(found),
         // `.json` is any JSON; GeoJSON is JSON.
-        (Model(ModelFormat::Json), Model(ModelFormat::GeoJson)) => Some(found),
+        (Model(ModelFormat::Json), Model(ModelFormat::GeoJson | ModelFormat::IndoorJson)) => {
+            Some(found)
+        }
         // YAML is a superset of JSON.
-        (MapYaml, Model(ModelFormat::Json | ModelFormat::GeoJson)) => Some(MapYaml),
+        (MapYaml, Model(ModelFormat::Json | ModelFormat::GeoJson | ModelFormat::IndoorJson)) => {
+            Some(MapYaml)
+        }
         _ => None,
     }
 }
@@ -315,7 +333,7 @@ mod tests {
     use super::*;
     use FileKind::{Image, MapYaml, Model};
     use ImageFormat::{Pgm, Png};
-    use ModelFormat::{GeoJson, IndoorGml, Json};
+    use ModelFormat::{GeoJson, IndoorGml, IndoorJson, Json};
 
     const PNG: &[u8] = b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR";
     const PGM: &[u8] = b"P5\n2 1\n255\n\xff\0";
@@ -324,6 +342,7 @@ mod tests {
     const MODEL: &[u8] = br#"{"spaces": [{"type": "FeatureCollection"}], "connections": []}"#;
     const YAML: &[u8] = b"image: m.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n";
     const BROKEN_JSON: &[u8] = b"{\"spaces\": [";
+    const IJ2: &[u8] = br#"{"type": "IndoorJSON2", "version": "0.1", "layers": {}}"#;
 
     /// (name, media type, field, bytes) → kind, or the error's start.
     #[test]
@@ -345,6 +364,31 @@ mod tests {
             (Some("a.xml"), None, None, GML, Ok(Model(IndoorGml))),
             (Some("a.json"), None, None, MODEL, Ok(Model(Json))),
             (Some("a.geojson"), None, None, GEO, Ok(Model(GeoJson))),
+            (
+                Some("b.Indoor.JSON"),
+                None,
+                None,
+                IJ2,
+                Ok(Model(IndoorJson)),
+            ),
+            (Some("b.json"), None, None, IJ2, Ok(Model(IndoorJson))),
+            (None, None, None, IJ2, Ok(Model(IndoorJson))),
+            (
+                Some("b.indoor.json"),
+                None,
+                None,
+                BROKEN_JSON,
+                Ok(Model(IndoorJson)),
+            ),
+            (
+                Some("b.indoor.json"),
+                None,
+                None,
+                MODEL,
+                Err(
+                    "b.indoor.json: its name says IndoorJSON2 (IndoorGML 2.0 draft) but its content is model JSON",
+                ),
+            ),
             // By content alone (no or an unknown extension).
             (None, None, None, GML, Ok(Model(IndoorGml))),
             (Some("upload.txt"), None, None, GEO, Ok(Model(GeoJson))),
@@ -512,5 +556,32 @@ mod tests {
         let mut cut = b"image: ".to_vec();
         cut.extend(std::iter::repeat_n("é".as_bytes(), 3000).flatten());
         assert_eq!(FileKind::sniff(&cut), Some(MapYaml));
+    }
+
+    #[test]
+    fn recordings_by_name_and_magic() {
+        let mcap = b"\x89MCAP0\r\n\x01....";
+        let sqlite = b"SQLite format 3\0....";
+        let kind = |name: Option<&str>, bytes: &[u8]| {
+            let declared = Declared {
+                name,
+                ..Declared::default()
+            };
+            detect(&declared, bytes).ok()
+        };
+        let rec = |f| Some(FileKind::Recording(f));
+        assert_eq!(kind(Some("run.mcap"), mcap), rec(RecordingFormat::Mcap));
+        assert_eq!(kind(None, mcap), rec(RecordingFormat::Mcap));
+        assert_eq!(kind(Some("bag_0.db3"), sqlite), rec(RecordingFormat::Db3));
+        // An SQLite file is a bag only by its name (nrgdb's database is one too).
+        assert!(detect(&Declared::default(), sqlite).is_err());
+        let err = detect(&Declared::name("m.json"), sqlite)
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("an SQLite database"), "{err}");
+        let err = detect(&Declared::name("m.gml"), mcap)
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("MCAP"), "{err}");
     }
 }

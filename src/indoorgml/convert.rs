@@ -140,6 +140,7 @@ pub fn from_nrg_with_paths(nrg: &Nrg, paths: &ConnectionPaths) -> Document {
     Document {
         info: FeatureInfo::new("IndoorFeatures"),
         srs_name: None,
+        version: Default::default(),
         warnings: Vec::new(),
         primal: Some(PrimalSpace {
             info: FeatureInfo::new("PrimalSpaceFeatures"),

@@ -19,6 +19,9 @@ pub struct Document {
     pub primal: Option<PrimalSpace>,
     /// `MultiLayeredGraph`: the dual graph(s).
     pub graph: Option<LayeredGraph>,
+    /// The version the root's `xsi:schemaLocation` names (1.0.3 when it
+    /// names none); the version a copy is written in unless asked.
+    pub version: super::IndoorGmlVersion,
     /// What the reader accepted although the schema does not (a misspelt
     /// element that real files share, as browsers accept sloppy HTML),
     /// each with its line; empty for a schema-valid file. Never written.

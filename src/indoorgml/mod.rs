@@ -1,5 +1,6 @@
-//! IndoorGML 1.0.x: read any 1.0.1 / 1.0.2 / 1.0.3 document, write 1.0.3,
-//! convert to and from the [`Nrg`] model, and check a document's
+//! IndoorGML 1.0.x and 1.1: read any 1.0.1 / 1.0.2 / 1.0.3 / 1.1
+//! document, write 1.0.3 (or 1.1 on request), read and write the
+//! IndoorGML 2.0 draft's JSON encoding ([`json2`], IndoorJSON2), convert to and from the [`Nrg`] model, and check a document's
 //! conformance.
 //!
 //! Owns the XML side of the model: [`Document`] (a faithful picture of the
@@ -18,7 +19,9 @@ pub mod document;
 mod dom;
 mod error;
 mod gml_read;
+pub mod json2;
 mod read;
+mod version;
 mod write;
 mod xml_out;
 
@@ -29,6 +32,7 @@ pub use convert::{WeightFixes, from_nrg, from_nrg_with_paths, to_nrg, to_nrg_fix
 pub use document::Document;
 pub use dom::{NS_CORE, NS_GML, NS_NAVI};
 pub use error::IndoorGmlError;
+pub use version::IndoorGmlVersion;
 
 use crate::model::Nrg;
 
@@ -71,20 +75,37 @@ pub fn read_text(path: &Path, max_bytes: u64) -> Result<String, IndoorGmlError> 
     })
 }
 
-/// The document as IndoorGML 1.0.3 text.
+/// The document as IndoorGML text of the version it was read as
+/// (1.0.3 for a document built in memory).
 pub fn write_string(doc: &Document) -> String {
-    let bytes = write::write_document(doc, Vec::new()).unwrap_or_default();
+    write_string_as(doc, doc.version)
+}
+
+/// The document as IndoorGML `version` text.
+pub fn write_string_as(doc: &Document, version: IndoorGmlVersion) -> String {
+    let bytes = write::write_document_as(doc, version, Vec::new()).unwrap_or_default();
     String::from_utf8(bytes).unwrap_or_default()
 }
 
-/// Writes the document to `path` atomically (temp file + rename).
+/// Writes the document to `path` atomically (temp file + rename), in the
+/// version it was read as.
 pub fn write_file(doc: &Document, path: &Path) -> Result<(), IndoorGmlError> {
-    crate::atomic::write_with(path, |w| write::write_document(doc, w).map(|_| ())).map_err(
-        |source| IndoorGmlError::Io {
-            path: path.to_path_buf(),
-            source,
-        },
-    )
+    write_file_as(doc, doc.version, path)
+}
+
+/// Writes the document to `path` atomically as IndoorGML `version`.
+pub fn write_file_as(
+    doc: &Document,
+    version: IndoorGmlVersion,
+    path: &Path,
+) -> Result<(), IndoorGmlError> {
+    crate::atomic::write_with(path, |w| {
+        write::write_document_as(doc, version, w).map(|_| ())
+    })
+    .map_err(|source| IndoorGmlError::Io {
+        path: path.to_path_buf(),
+        source,
+    })
 }
 
 /// Reads an IndoorGML file straight into a model.

@@ -1,13 +1,13 @@
-//! IndoorGML 1.0.1 / 1.0.2 / 1.0.3 → [`Document`], namespace-aware (any
+//! IndoorGML 1.0.1 / 1.0.2 / 1.0.3 / 1.1 → [`Document`], namespace-aware (any
 //! prefix), tolerant of what real files do (hrefs with or without `#`,
 //! 1.0.1's geometry without `cellSpaceGeometry`, extension elements) and
 //! strict about structure: an element that does not belong is refused with
 //! its line.
 
-use super::IndoorGmlError;
 use super::document::*;
 use super::dom::{Element, Ns};
 use super::gml_read::{GeometryReader, first_gml_child, parse_number};
+use super::{IndoorGmlError, IndoorGmlVersion};
 
 /// Reads a document from its text.
 pub fn read_document(text: &str) -> Result<Document, IndoorGmlError> {
@@ -21,6 +21,9 @@ pub fn document(root: &Element) -> Result<Document, IndoorGmlError> {
     let geo = GeometryReader::for_document(root);
     let mut doc = Document {
         info: info(root),
+        version: IndoorGmlVersion::of_schema_location(
+            root.attr(&Ns::Xsi, "schemaLocation").unwrap_or_default(),
+        ),
         ..Document::default()
     };
     for child in &root.children {
@@ -59,7 +62,7 @@ fn check_root(root: &Element) -> Result<(), IndoorGmlError> {
     }
     let hint = match &root.ns {
         Ns::Other(uri) if uri.contains("indoorgml/2.0") => {
-            "; this is the IndoorGML 2.0 draft encoding, which nrgdb does not read (only 1.0.x)".to_string()
+            "; this is the IndoorGML 2.0 draft XML encoding, which nrgdb does not read (it reads 1.0.x and 1.1 XML, and the 2.0 draft's JSON, IndoorJSON2, as .indoor.json)".to_string()
         }
         Ns::None if &*root.name == "IndoorFeatures" => {
             "; the element has no namespace: declare xmlns=\"http://www.opengis.net/indoorgml/1.0/core\"".to_string()

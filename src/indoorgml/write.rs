@@ -1,18 +1,22 @@
-//! [`Document`] → IndoorGML 1.0.3 XML (core + navigation modules), in the
+//! [`Document`] → IndoorGML 1.0.3 (or 1.1) XML (core + navigation modules), in the
 //! element order the OGC schemas require. Deterministic: the same document
 //! always gives the same bytes.
 
 use std::fmt::Write as _;
 use std::io::{self, Write};
 
+use super::IndoorGmlVersion;
 use super::document::*;
 use super::dom::{NS_CORE, NS_GML, NS_NAVI, NS_XLINK, NS_XSI};
 use super::xml_out::XmlOut;
 
-const SCHEMA_LOCATION: &str = "http://www.opengis.net/indoorgml/1.0/core http://schemas.opengis.net/indoorgml/1.0/indoorgmlcore.xsd http://www.opengis.net/indoorgml/1.0/navigation http://schemas.opengis.net/indoorgml/1.0/indoorgmlnavi.xsd";
-
-/// Writes `doc` as IndoorGML 1.0.3.
-pub fn write_document<W: Write>(doc: &Document, out: W) -> io::Result<W> {
+/// Writes `doc` as IndoorGML `version` (the same elements; 1.1 names the
+/// 1.1 schemas, see [`IndoorGmlVersion`]).
+pub fn write_document_as<W: Write>(
+    doc: &Document,
+    version: IndoorGmlVersion,
+    out: W,
+) -> io::Result<W> {
     let mut w = DocWriter {
         x: XmlOut::new(out),
         srs: doc.srs_name.as_deref(),
@@ -25,7 +29,7 @@ pub fn write_document<W: Write>(doc: &Document, out: W) -> io::Result<W> {
         ("xmlns:gml", NS_GML),
         ("xmlns:xlink", NS_XLINK),
         ("xmlns:xsi", NS_XSI),
-        ("xsi:schemaLocation", SCHEMA_LOCATION),
+        ("xsi:schemaLocation", version.schema_location()),
     ];
     if !doc.info.id.is_empty() {
         attrs.push(("gml:id", &doc.info.id));
