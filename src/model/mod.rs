@@ -12,6 +12,7 @@ mod connection;
 mod doorway;
 mod error;
 mod geometry;
+mod georef;
 mod graph;
 mod interior_point;
 mod nrg;
@@ -25,6 +26,7 @@ pub use error::ModelError;
 pub use geometry::{
     Point, Ring, point_in_ring, polygon_area, polygon_centroid, ring_is_ccw, segment_distance,
 };
+pub use georef::{Georef, GeorefError};
 pub use graph::ConnectivityGraph;
 pub use interior_point::pole_of_inaccessibility;
 pub use nrg::{MAX_COORD_M, MAX_NAME_CHARS, Nrg};
