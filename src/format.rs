@@ -312,6 +312,26 @@ pub fn render_as(walked: &WalkedModel, format: ModelFormat, version: IndoorGmlVe
     }
 }
 
+/// GeoJSON of a walked model in WGS84, placed by `georef` (RFC 7946; see
+/// [`crate::geojson::to_wgs84`]).
+pub fn render_geojson_wgs84(walked: &WalkedModel, georef: &crate::model::Georef) -> String {
+    let doc = crate::geojson::to_geojson_with_paths(&walked.nrg, &walked.paths);
+    serde_json::to_string_pretty(&crate::geojson::to_wgs84(doc, georef)).unwrap_or_default() + "\n"
+}
+
+/// Writes [`render_geojson_wgs84`] of `nrg` to `path` atomically.
+pub fn write_geojson_wgs84(
+    nrg: &Nrg,
+    georef: &crate::model::Georef,
+    path: &Path,
+) -> Result<(), FormatError> {
+    let text = render_geojson_wgs84(&walked_model(nrg), georef);
+    crate::atomic::write(path, text.as_bytes()).map_err(|source| FormatError::Io {
+        path: path.to_path_buf(),
+        source,
+    })
+}
+
 /// Writes a model atomically in the format its extension names, with
 /// walked connection lengths and paths ([`render_model`]).
 pub fn write_model(nrg: &Nrg, path: &Path) -> Result<(), FormatError> {

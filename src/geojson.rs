@@ -9,11 +9,16 @@
 //! through the doorway when the caller passes one ([`to_geojson_with_paths`],
 //! with `length_m` its length), else the straight segment. Coordinates are metres in the
 //! map frame, not WGS84 (GeoJSON's default CRS): load the file as a
-//! projected layer in QGIS. Reading accepts exactly this shape back.
+//! projected layer in QGIS. A georeferenced map is written in WGS84
+//! longitude and latitude instead ([`to_wgs84`], RFC 7946), which QGIS
+//! and web maps place without hand work. Reading accepts exactly these
+//! shapes back.
 
 use serde_json::{Map, Value, json};
 
-use crate::model::{Connection, ConnectionPaths, Nrg, Point, Ring, Space, SpaceId, doorway};
+use crate::model::{
+    Connection, ConnectionPaths, Georef, Nrg, Point, Ring, Space, SpaceId, doorway,
+};
 
 /// Why a GeoJSON document is not an nrgdb model.
 #[derive(Debug, thiserror::Error)]
@@ -109,9 +114,72 @@ fn closed(ring: &[Point]) -> Value {
     json!(pts)
 }
 
-/// Reads a FeatureCollection written by [`to_geojson`].
+/// The member a WGS84 document carries its georeference in, so that it
+/// reads back into map-frame metres.
+pub const GEOREF_MEMBER: &str = "nrgdb:georef";
+
+/// `doc` (as [`to_geojson_with_paths`] writes it) in WGS84 longitude and
+/// latitude (RFC 7946), placed by `georef`: every geometry's coordinates
+/// and the `anchor` and `doorway` properties. Lengths and areas stay
+/// metres. The georeference is kept in the member [`GEOREF_MEMBER`].
+pub fn to_wgs84(mut doc: Value, georef: &Georef) -> Value {
+    map_positions(&mut doc, &|p| georef.to_lon_lat(p));
+    if let Some(obj) = doc.as_object_mut() {
+        obj.insert(GEOREF_MEMBER.into(), json!(georef));
+    }
+    doc
+}
+
+/// Applies `f` to every position of every feature: geometry coordinates
+/// (any nesting) and the `anchor` and `doorway` properties.
+fn map_positions(doc: &mut Value, f: &dyn Fn(Point) -> Point) {
+    fn walk(v: &mut Value, f: &dyn Fn(Point) -> Point) {
+        let Some(items) = v.as_array_mut() else {
+            return;
+        };
+        if let [Value::Number(x), Value::Number(y)] = items.as_slice()
+            && let (Some(x), Some(y)) = (x.as_f64(), y.as_f64())
+        {
+            let [a, b] = f([x, y]);
+            *v = json!([a, b]);
+            return;
+        }
+        for item in items {
+            walk(item, f);
+        }
+    }
+    let Some(features) = doc.get_mut("features").and_then(Value::as_array_mut) else {
+        return;
+    };
+    for feature in features {
+        if let Some(c) = feature.pointer_mut("/geometry/coordinates") {
+            walk(c, f);
+        }
+        for key in ["/properties/anchor", "/properties/doorway"] {
+            if let Some(p) = feature.pointer_mut(key) {
+                walk(p, f);
+            }
+        }
+    }
+}
+
+/// Reads a FeatureCollection written by [`to_geojson`] (or in WGS84 by
+/// [`to_wgs84`]: its positions are taken back to map-frame metres).
 pub fn from_geojson(text: &str) -> Result<Nrg, GeoJsonError> {
-    let value: Value = serde_json::from_str(text)?;
+    let mut value: Value = serde_json::from_str(text)?;
+    if let Some(g) = value.get(GEOREF_MEMBER) {
+        let g: Georef = serde_json::from_value(g.clone()).map_err(|e| GeoJsonError::Feature {
+            index: 0,
+            message: format!("{GEOREF_MEMBER}: {e}"),
+        })?;
+        let g = Georef::new(g.lat, g.lon, g.heading_deg, &g.level).map_err(|e| {
+            GeoJsonError::Feature {
+                index: 0,
+                message: format!("{GEOREF_MEMBER}: {e}"),
+            }
+        })?;
+        map_positions(&mut value, &|p| g.to_map(p));
+    }
     let features =
         value
             .get("features")

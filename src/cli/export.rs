@@ -21,6 +21,9 @@ pub struct Args {
     /// IndoorGML version of a .gml/.xml output: 1.0.3 or 1.1.
     #[arg(long, value_name = "VERSION", default_value_t)]
     pub indoorgml_version: nrgdb::indoorgml::IndoorGmlVersion,
+    /// GeoJSON of a georeferenced map (`nrgdb georef`) in map-frame metres instead of WGS84.
+    #[arg(long)]
+    pub local_frame: bool,
     #[command(flatten)]
     pub db: DbArg,
 }
@@ -33,6 +36,15 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         .load(&map, rev)
         .into_diagnostic()
         .wrap_err_with(|| format!("exporting {}", args.map))?;
+    let geojson =
+        nrgdb::format::ModelFormat::of(&args.out).ok() == Some(nrgdb::format::ModelFormat::GeoJson);
+    if geojson && !args.local_frame {
+        let georef = store.georef(&map).into_diagnostic()?;
+        if let Some(g) = georef {
+            nrgdb::format::write_geojson_wgs84(&nrg, &g, &args.out).into_diagnostic()?;
+            return Ok(ExitCode::SUCCESS);
+        }
+    }
     write_model_as(&args.out, &nrg, args.indoorgml_version, out)?;
     Ok(ExitCode::SUCCESS)
 }

@@ -20,6 +20,7 @@ pub mod eval;
 pub mod eval_loo;
 mod export;
 pub mod extract;
+mod georef;
 mod import;
 mod import_recording;
 mod map_log;
@@ -86,6 +87,8 @@ pub enum Command {
     Export(export::Args),
     /// Name a space (a new revision).
     Name(name::Args),
+    /// Show, set or remove where a map lies on the Earth (WGS84 origin, heading, level).
+    Georef(georef::Args),
     /// List a map's corrections and their state; drop one.
     Corrections(corrections::Args),
     /// Show the history of a map with messages.
@@ -117,6 +120,7 @@ pub fn run(command: Command, out: &mut dyn Write) -> miette::Result<ExitCode> {
         Command::Revisions(args) => maps::run_revisions(args, out),
         Command::Export(args) => export::run(args, out),
         Command::Name(args) => name::run(args, out),
+        Command::Georef(args) => georef::run(args, out),
         Command::Corrections(args) => corrections::run(args, out),
         Command::Log(args) => maps::run_log(args, out),
         Command::Render(args) => render::run(args, out),

@@ -25,7 +25,7 @@ use super::grid_png::EncodedGrid;
 use super::{
     Correction, CorrectionResults, CorrectionsKey, ImportMeta, MapInfo, RevisionInfo, StoreError,
 };
-use crate::model::{Nrg, SpaceId};
+use crate::model::{Georef, Nrg, SpaceId};
 
 /// The read side of an engine.
 pub trait ReadStore {
@@ -63,6 +63,8 @@ pub trait ReadStore {
     /// process); `None` when the engine has no cheap one, so that callers
     /// must ask for the latest revision every time.
     fn change_token(&self) -> Result<Option<u64>, StoreError>;
+    /// The georeference of `map`, if it has one.
+    fn georef(&self, map: &str) -> Result<Option<Georef>, StoreError>;
 }
 
 /// A new correction to keep with a commit.
@@ -140,6 +142,9 @@ pub trait WriteStore: ReadStore {
     /// Marks correction `id` of `map` dropped (kept for the record);
     /// returns it.
     fn drop_correction(&mut self, map: &str, id: u32) -> Result<Correction, StoreError>;
+    /// Sets (or with `None` removes) the georeference of `map`, kept for
+    /// all its revisions.
+    fn set_georef(&mut self, map: &str, georef: Option<&Georef>) -> Result<(), StoreError>;
 }
 
 /// A whole engine, as [`super::Store`] holds it.

@@ -19,7 +19,7 @@ use super::{
 };
 use crate::edit::Rule;
 use crate::grid::OccupancyGrid;
-use crate::model::{Nrg, SpaceId};
+use crate::model::{Georef, Nrg, SpaceId};
 
 /// How many times an import matches its spaces again when another writer
 /// added a revision meanwhile, before it gives up with
@@ -231,6 +231,13 @@ impl Store {
             message: "the engine kept no correction".into(),
         })?;
         Ok((done.revision, id))
+    }
+
+    /// Sets the georeference of `map` (an existing map; [`StoreError::NoSuchMap`]
+    /// otherwise), or removes it with `None`. It holds for every revision,
+    /// past and future.
+    pub fn set_georef(&mut self, map: &str, georef: Option<&Georef>) -> Result<(), StoreError> {
+        self.engine.set_georef(map, georef)
     }
 
     /// Drops correction `id` of `map`: later imports no longer apply it.

@@ -14,7 +14,7 @@ use super::{
     now_utc,
 };
 use crate::edit::Rule;
-use crate::model::{Nrg, SpaceId};
+use crate::model::{Georef, Nrg, SpaceId};
 
 /// Maps held in memory; clones share them.
 #[derive(Debug, Clone, Default)]
@@ -35,6 +35,7 @@ struct MapData {
     corrections: Vec<Correction>,
     /// The largest space id ever stored.
     max_space_id: u32,
+    georef: Option<Georef>,
 }
 
 #[derive(Debug)]
@@ -168,6 +169,10 @@ impl ReadStore for MemoryStore {
     fn change_token(&self) -> Result<Option<u64>, StoreError> {
         Ok(Some(self.data().commits))
     }
+
+    fn georef(&self, map: &str) -> Result<Option<Georef>, StoreError> {
+        Ok(self.data().map(map)?.georef.clone())
+    }
 }
 
 fn key(corrections: &[Correction]) -> CorrectionsKey {
@@ -242,6 +247,7 @@ impl WriteStore for MemoryStore {
                 revisions: Vec::new(),
                 corrections: Vec::new(),
                 max_space_id: 0,
+                georef: None,
             });
         let seq = match c.nrg {
             Some(nrg) => {
@@ -346,6 +352,16 @@ impl WriteStore for MemoryStore {
         let out = k.clone();
         data.commits += 1;
         Ok(out)
+    }
+
+    fn set_georef(&mut self, map: &str, georef: Option<&Georef>) -> Result<(), StoreError> {
+        let mut data = self.data();
+        data.map(map)?;
+        if let Some(m) = data.maps.get_mut(map) {
+            m.georef = georef.cloned();
+        }
+        data.commits += 1;
+        Ok(())
     }
 }
 

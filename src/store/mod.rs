@@ -34,6 +34,7 @@ pub mod engine;
 mod error;
 mod fault;
 mod geometry_blob;
+mod georef_json;
 mod grid_png;
 mod history;
 mod identity;

@@ -2,7 +2,7 @@
 
 use super::{Correction, CorrectionsKey, MapInfo, RevisionInfo, Store, StoreError};
 use crate::grid::OccupancyGrid;
-use crate::model::{Nrg, SpaceId};
+use crate::model::{Georef, Nrg, SpaceId};
 
 impl Store {
     /// All maps, by name.
@@ -50,6 +50,12 @@ impl Store {
     /// The occupancy grid revision `rev` of `map` was imported from (the
     /// latest revision when `None`), or `None` when it came from a model
     /// file.
+    /// The georeference of `map` (WGS84 origin, heading, level), if it
+    /// has one: the same for every revision.
+    pub fn georef(&self, map: &str) -> Result<Option<Georef>, StoreError> {
+        self.engine.georef(map)
+    }
+
     pub fn grid(&self, map: &str, rev: Option<u32>) -> Result<Option<OccupancyGrid>, StoreError> {
         let Some(encoded) = self.engine.grid(map, rev)? else {
             return Ok(None);

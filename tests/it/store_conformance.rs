@@ -10,7 +10,7 @@ use std::collections::BTreeSet;
 
 use nrgdb::edit::Edit;
 use nrgdb::grid::OccupancyGrid;
-use nrgdb::model::{SpaceId, SpaceKind};
+use nrgdb::model::{Georef, SpaceId, SpaceKind};
 use nrgdb::query::{Format, Session};
 use nrgdb::store::{CorrectionState, ImportMeta, StoreError};
 
@@ -301,6 +301,36 @@ fn grids_and_point_location() {
             "{}",
             e.name
         );
+    });
+}
+
+/// A georeference is kept with the map, read by every handle, holds for
+/// the revisions after it, and is removed on request.
+#[test]
+fn a_georeference_stays_with_its_map() {
+    each(|e| {
+        let mut store = e.open();
+        let g = Georef::new(52.5163, 13.3777, 30.0, "1").unwrap();
+        assert!(
+            matches!(
+                store.set_georef("nowhere", Some(&g)),
+                Err(StoreError::NoSuchMap { .. })
+            ),
+            "{}",
+            e.name
+        );
+        store
+            .import("geo", &building(4, 0.0, 1), meta("a"))
+            .unwrap();
+        assert_eq!(store.georef("geo").unwrap(), None, "{}", e.name);
+        store.set_georef("geo", Some(&g)).unwrap();
+        store
+            .import("geo", &building(5, 0.0, 1), meta("b"))
+            .unwrap();
+        let other = e.open();
+        assert_eq!(other.georef("geo").unwrap(), Some(g.clone()), "{}", e.name);
+        store.set_georef("geo", None).unwrap();
+        assert_eq!(other.georef("geo").unwrap(), None, "{}", e.name);
     });
 }
 

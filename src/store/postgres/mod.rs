@@ -12,6 +12,7 @@
 
 mod corrections;
 mod fault;
+mod georef;
 mod prepared;
 mod read;
 mod schema;
@@ -28,7 +29,7 @@ use super::{
     Correction, CorrectionsKey, DEFAULT_BUSY_TIMEOUT, EncodedGrid, MapInfo, RevisionInfo,
     StoreError,
 };
-use crate::model::{Nrg, SpaceId};
+use crate::model::{Georef, Nrg, SpaceId};
 use fault::R;
 use prepared::Prepared;
 
@@ -200,6 +201,9 @@ impl ReadStore for PostgresStore {
     fn change_token(&self) -> Result<Option<u64>, StoreError> {
         Ok(None)
     }
+    fn georef(&self, map: &str) -> Result<Option<Georef>, StoreError> {
+        self.run(|c, p| georef::get(c, p, map))
+    }
 }
 
 impl WriteStore for PostgresStore {
@@ -208,6 +212,9 @@ impl WriteStore for PostgresStore {
     }
     fn drop_correction(&mut self, map: &str, id: u32) -> Result<Correction, StoreError> {
         self.run(|c, p| corrections::drop(c, p, map, id))
+    }
+    fn set_georef(&mut self, map: &str, g: Option<&Georef>) -> Result<(), StoreError> {
+        self.run(|c, p| georef::set(c, p, map, g))
     }
 }
 

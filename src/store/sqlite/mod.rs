@@ -7,6 +7,7 @@
 
 mod corrections;
 mod fault;
+mod georef;
 mod read;
 mod schema;
 mod write;
@@ -22,7 +23,7 @@ use super::{
     Correction, CorrectionsKey, DEFAULT_BUSY_TIMEOUT, EncodedGrid, MapInfo, RevisionInfo,
     StoreError,
 };
-use crate::model::{Nrg, SpaceId};
+use crate::model::{Georef, Nrg, SpaceId};
 use fault::{R, in_file};
 
 pub use schema::SCHEMA_VERSION;
@@ -118,6 +119,9 @@ impl ReadStore for SqliteStore {
     fn next_space_id(&self, map: &str) -> Result<SpaceId, StoreError> {
         self.run(|c| write::next_space_id_of(c, map))
     }
+    fn georef(&self, map: &str) -> Result<Option<Georef>, StoreError> {
+        self.run(|c| georef::get(c, map))
+    }
     fn change_token(&self) -> Result<Option<u64>, StoreError> {
         let theirs: i64 = self.run(|c| {
             Ok(c.prepare_cached("PRAGMA data_version")?
@@ -143,6 +147,11 @@ impl WriteStore for SqliteStore {
             .map_err(|e| in_file(e.into(), &self.path))?;
         self.own_commits.set(self.own_commits.get() + 1);
         Ok(done)
+    }
+    fn set_georef(&mut self, map: &str, g: Option<&Georef>) -> Result<(), StoreError> {
+        georef::set(&self.conn, map, g).map_err(|e| in_file(e.into(), &self.path))?;
+        self.own_commits.set(self.own_commits.get() + 1);
+        Ok(())
     }
 }
 

@@ -1,0 +1,153 @@
+//! Georeferenced output (issue 24): `nrgdb georef` keeps a map's WGS84
+//! origin, heading and level; GeoJSON of such a map is WGS84 (RFC 7946),
+//! placed where an independent computation (a spherical Earth, written
+//! here) puts it, and reads back to the model in metres.
+
+use serde_json::Value;
+
+use crate::support::nrgdb;
+
+/// Mean Earth radius (IUGG), for the test's own spherical placement.
+const R: f64 = 6_371_008.8;
+
+fn demo_db(dir: &std::path::Path) {
+    let out = nrgdb(dir, &["demo", "--dir", "d", "--db", "t.sqlite"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn geojson_of_a_georeferenced_map_is_wgs84_where_it_belongs() {
+    let dir = tempfile::tempdir().unwrap();
+    demo_db(dir.path());
+    let run = |args: &[&str]| {
+        let out = nrgdb(dir.path(), args);
+        (
+            out.status.success(),
+            String::from_utf8_lossy(&out.stdout).to_string()
+                + &String::from_utf8_lossy(&out.stderr),
+        )
+    };
+    // Latitude 95: a clear error, nothing stored.
+    let (ok, text) = run(&["georef", "demo", "--origin", "95,13.4", "--db", "t.sqlite"]);
+    assert!(!ok && text.contains("latitude is 95"), "{text}");
+    let (ok, text) = run(&["georef", "demo", "--db", "t.sqlite"]);
+    assert!(ok && text.contains("no georeference"), "{text}");
+    let (ok, text) = run(&[
+        "georef",
+        "demo",
+        "--origin",
+        "48.1374,11.5755",
+        "--heading",
+        "-30",
+        "--level",
+        "2",
+        "--db",
+        "t.sqlite",
+    ]);
+    assert!(
+        ok && text.contains("330°") && text.contains("level 2"),
+        "{text}"
+    );
+    // The model in metres, and the same map as WGS84 GeoJSON.
+    assert!(run(&["export", "demo", "--out", "m.json", "--db", "t.sqlite"]).0);
+    assert!(run(&["export", "demo", "--out", "w.geojson", "--db", "t.sqlite"]).0);
+    assert!(
+        run(&[
+            "export",
+            "demo",
+            "--out",
+            "l.geojson",
+            "--local-frame",
+            "--db",
+            "t.sqlite"
+        ])
+        .0
+    );
+    let model: Value =
+        serde_json::from_slice(&std::fs::read(dir.path().join("m.json")).unwrap()).unwrap();
+    let wgs: Value =
+        serde_json::from_slice(&std::fs::read(dir.path().join("w.geojson")).unwrap()).unwrap();
+    let local: Value =
+        serde_json::from_slice(&std::fs::read(dir.path().join("l.geojson")).unwrap()).unwrap();
+    assert!(wgs.get("crs").is_none(), "RFC 7946 has no crs member");
+    // Each space's anchor, placed independently on a sphere: map +y at
+    // 330° from north means +y points north-west.
+    let (lat0, lon0, h) = (48.1374f64, 11.5755f64, 330f64.to_radians());
+    let place = |x: f64, y: f64| {
+        let (e, n) = (x * h.cos() + y * h.sin(), -x * h.sin() + y * h.cos());
+        let lat = lat0 + (n / R).to_degrees();
+        let lon = lon0 + (e / (R * lat0.to_radians().cos())).to_degrees();
+        (lon, lat)
+    };
+    let features = wgs["features"].as_array().unwrap();
+    let spaces = model["spaces"].as_array().unwrap();
+    let mut compared = 0;
+    for s in spaces {
+        let f = features
+            .iter()
+            .find(|f| f["properties"]["feature"] == "space" && f["properties"]["id"] == s["id"])
+            .unwrap();
+        let (x, y) = (
+            s["anchor"][0].as_f64().unwrap(),
+            s["anchor"][1].as_f64().unwrap(),
+        );
+        let (lon, lat) = place(x, y);
+        let got = &f["properties"]["anchor"];
+        // A sphere and the ellipsoid differ by < 0.5 % of the offset
+        // (tens of metres here): well under 1e-6° (0.1 m).
+        assert!(
+            (got[0].as_f64().unwrap() - lon).abs() < 1e-6,
+            "{got} vs {lon}"
+        );
+        assert!(
+            (got[1].as_f64().unwrap() - lat).abs() < 1e-6,
+            "{got} vs {lat}"
+        );
+        // Every vertex is a longitude and latitude near the origin.
+        for ring in f["geometry"]["coordinates"].as_array().unwrap() {
+            for p in ring.as_array().unwrap() {
+                let (lo, la) = (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
+                assert!((lo - lon0).abs() < 0.01 && (la - lat0).abs() < 0.01, "{p}");
+            }
+        }
+        // Areas and lengths stay metres.
+        assert_eq!(f["properties"]["area_m2"], s["area_m2"]);
+        compared += 1;
+    }
+    assert!(compared >= 10, "{compared} spaces");
+    // The local-frame file is the metres file.
+    assert!(local.get("nrgdb:georef").is_none());
+    // The WGS84 file reads back to the model in metres.
+    assert!(run(&["convert", "w.geojson", "back.json"]).0);
+    let back: Value =
+        serde_json::from_slice(&std::fs::read(dir.path().join("back.json")).unwrap()).unwrap();
+    for (a, b) in spaces.iter().zip(back["spaces"].as_array().unwrap()) {
+        for k in 0..2 {
+            let (p, q) = (
+                a["anchor"][k].as_f64().unwrap(),
+                b["anchor"][k].as_f64().unwrap(),
+            );
+            assert!((p - q).abs() < 1e-6, "{p} vs {q}");
+        }
+    }
+    // Cleared: GeoJSON in metres again.
+    assert!(run(&["georef", "demo", "--clear", "--db", "t.sqlite"]).0);
+    assert!(
+        run(&[
+            "export",
+            "demo",
+            "--out",
+            "again.geojson",
+            "--db",
+            "t.sqlite"
+        ])
+        .0
+    );
+    let again: Value =
+        serde_json::from_slice(&std::fs::read(dir.path().join("again.geojson")).unwrap()).unwrap();
+    assert!(again.get("nrgdb:georef").is_none());
+}
