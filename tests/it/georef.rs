@@ -151,3 +151,45 @@ fn geojson_of_a_georeferenced_map_is_wgs84_where_it_belongs() {
         serde_json::from_slice(&std::fs::read(dir.path().join("again.geojson")).unwrap()).unwrap();
     assert!(again.get("nrgdb:georef").is_none());
 }
+
+/// `GET …/geojson` follows the map's georeference, which a writer may set
+/// while the server runs; `frame=local` keeps metres.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_server_serves_wgs84_for_a_georeferenced_map() {
+    let s = crate::server_client::TestServer::read_only().await;
+    let local = s
+        .get("/maps/building/revisions/latest/geojson")
+        .await
+        .json();
+    assert!(local.get("nrgdb:georef").is_none());
+    {
+        let mut store = nrgdb::store::Store::open(&s.db).unwrap();
+        let g = nrgdb::model::Georef::new(-33.8568, 151.2153, 0.0, "0").unwrap();
+        store.set_georef("building", Some(&g)).unwrap();
+    }
+    let wgs = s
+        .get("/maps/building/revisions/latest/geojson")
+        .await
+        .json();
+    assert_eq!(wgs["nrgdb:georef"]["lat"], -33.8568);
+    let p = &wgs["features"][0]["geometry"]["coordinates"][0][0];
+    let (lon, lat) = (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
+    assert!(
+        (lon - 151.2153).abs() < 0.01 && (lat + 33.8568).abs() < 0.01,
+        "{p}"
+    );
+    // With heading 0 the model's x is east: the same vertex in metres.
+    let q = &local["features"][0]["geometry"]["coordinates"][0][0];
+    let x = q[0].as_f64().unwrap();
+    let east = (lon - 151.2153).to_radians() * R * (-33.8568f64).to_radians().cos();
+    assert!((east - x).abs() < 0.01 * x.abs().max(1.0), "{east} vs {x}");
+    let again = s
+        .get("/maps/building/revisions/latest/geojson?frame=local")
+        .await
+        .json();
+    assert_eq!(again, local);
+    s.get("/maps/building/revisions/latest/geojson?frame=utm")
+        .await
+        .assert_error(400, "frame");
+    s.stop().await;
+}

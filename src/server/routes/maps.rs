@@ -7,6 +7,7 @@ use axum::http::{HeaderValue, Uri, header};
 use axum::response::{IntoResponse, Response};
 use serde_json::{Value, json};
 
+use crate::server::endpoint::{ParamDoc, q};
 use crate::server::error::ApiError;
 use crate::server::params::{Params, parse_rev};
 use crate::server::state::AppState;
@@ -105,22 +106,46 @@ pub async fn indoorgml(
     Ok(with_caching(response, rev.is_some()))
 }
 
-/// `GET /maps/{map}/revisions/{rev}/geojson`.
+/// Parameters of the GeoJSON endpoint.
+pub const GEOJSON_PARAMS: [ParamDoc; 1] = [q(
+    "frame",
+    "string",
+    false,
+    "'wgs84' (default for a georeferenced map: RFC 7946 longitude and latitude) or 'local' (map-frame metres)",
+)];
+
+/// `GET /maps/{map}/revisions/{rev}/geojson`: WGS84 when the map is
+/// georeferenced (unless `frame=local`), else map-frame metres.
 pub async fn geojson(
     State(state): State<AppState>,
     Path((map, rev)): Path<(String, String)>,
     uri: Uri,
 ) -> Result<Response, ApiError> {
-    Params::parse(&uri, &[])?;
+    let params = Params::parse(&uri, &["frame"])?;
+    let local = match params.get("frame") {
+        None | Some("wgs84") => false,
+        Some("local") => true,
+        Some(other) => {
+            return Err(ApiError::bad(
+                "frame",
+                format!("'{other}': use 'wgs84' or 'local'"),
+            ));
+        }
+    };
     let rev = parse_rev("rev", &rev)?;
     let body = state
         .blocking(move |ctx| {
+            let georef = if local {
+                None
+            } else {
+                ctx.store().georef(&map)?
+            };
             let r = ctx.revision(&map, rev)?;
             let walked = crate::route::WalkedModel::on(&r.nav);
-            Ok(crate::format::render(
-                &walked,
-                crate::format::ModelFormat::GeoJson,
-            ))
+            Ok(match georef {
+                Some(g) => crate::format::render_geojson_wgs84(&walked, &g),
+                None => crate::format::render(&walked, crate::format::ModelFormat::GeoJson),
+            })
         })
         .await?;
     let response = ([(header::CONTENT_TYPE, "application/geo+json")], body).into_response();
