@@ -5,7 +5,7 @@
 
 use serde_json::Value;
 
-use crate::support::nrgdb;
+use crate::support::{nrgdb, nrgdb_ok};
 
 /// Mean Earth radius (IUGG), for the test's own spherical placement.
 const R: f64 = 6_371_008.8;
@@ -53,26 +53,15 @@ fn geojson_of_a_georeferenced_map_is_wgs84_where_it_belongs() {
         "{text}"
     );
     // The model in metres, and the same map as WGS84 GeoJSON.
-    assert!(run(&["export", "demo", "--out", "m.json", "--db", "t.sqlite"]).0);
-    assert!(run(&["export", "demo", "--out", "w.geojson", "--db", "t.sqlite"]).0);
-    assert!(
-        run(&[
-            "export",
-            "demo",
-            "--out",
-            "l.geojson",
-            "--local-frame",
-            "--db",
-            "t.sqlite"
-        ])
-        .0
-    );
-    let model: Value =
-        serde_json::from_slice(&std::fs::read(dir.path().join("m.json")).unwrap()).unwrap();
-    let wgs: Value =
-        serde_json::from_slice(&std::fs::read(dir.path().join("w.geojson")).unwrap()).unwrap();
-    let local: Value =
-        serde_json::from_slice(&std::fs::read(dir.path().join("l.geojson")).unwrap()).unwrap();
+    let export = |out: &str, more: &[&str]| -> Value {
+        let mut args = vec!["export", "demo", "--out", out, "--db", "t.sqlite"];
+        args.extend(more);
+        nrgdb_ok(dir.path(), &args);
+        serde_json::from_slice(&std::fs::read(dir.path().join(out)).unwrap()).unwrap()
+    };
+    let model = export("m.json", &[]);
+    let wgs = export("w.geojson", &[]);
+    let local = export("l.geojson", &["--local-frame"]);
     assert!(wgs.get("crs").is_none(), "RFC 7946 has no crs member");
     // Each space's anchor, placed independently on a sphere: map +y at
     // 330° from north means +y points north-west.
@@ -136,20 +125,7 @@ fn geojson_of_a_georeferenced_map_is_wgs84_where_it_belongs() {
     }
     // Cleared: GeoJSON in metres again.
     assert!(run(&["georef", "demo", "--clear", "--db", "t.sqlite"]).0);
-    assert!(
-        run(&[
-            "export",
-            "demo",
-            "--out",
-            "again.geojson",
-            "--db",
-            "t.sqlite"
-        ])
-        .0
-    );
-    let again: Value =
-        serde_json::from_slice(&std::fs::read(dir.path().join("again.geojson")).unwrap()).unwrap();
-    assert!(again.get("nrgdb:georef").is_none());
+    assert!(export("again.geojson", &[]).get("nrgdb:georef").is_none());
 }
 
 /// `GET …/geojson` follows the map's georeference, which a writer may set

@@ -10,7 +10,7 @@ use nrgdb::model::{Point, SpaceId};
 use nrgdb::route::walked_model;
 use serde_json::{Value, json};
 
-use crate::support::{building, nrgdb};
+use crate::support::{building, nrgdb_ok};
 
 fn written() -> (nrgdb::model::Nrg, Value) {
     let walked = walked_model(&building(4));
@@ -124,12 +124,7 @@ fn cli_converts_to_and_from_indoorjson2_and_checks_it() {
     let nrg = building(3);
     std::fs::write(dir.path().join("b.json"), nrg.to_json()).unwrap();
     let ok = |args: &[&str]| {
-        let out = nrgdb(dir.path(), args);
-        assert!(
-            out.status.success(),
-            "{args:?}: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        nrgdb_ok(dir.path(), args);
     };
     ok(&["convert", "b.json", "b.indoor.json"]);
     ok(&["convert", "b.indoor.json", "c.json"]);

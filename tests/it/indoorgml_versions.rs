@@ -11,7 +11,7 @@ use nrgdb::format::{ModelFormat, from_document, render, render_as};
 use nrgdb::indoorgml::{self, IndoorGmlVersion, NS_CORE, NS_NAVI};
 use nrgdb::route::walked_model;
 
-use crate::support::{building, have_xmllint, nrgdb, shared_dir};
+use crate::support::{building, have_xmllint, nrgdb, nrgdb_ok, shared_dir};
 
 const CORE_1_1_XSD: &str = "http://schemas.opengis.net/indoorgml/1.1/indoorgmlcore.xsd";
 
@@ -184,12 +184,7 @@ fn cli_export_and_convert_take_the_version() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("b.json"), building(3).to_json()).unwrap();
     let ok = |args: &[&str]| {
-        let out = nrgdb(dir.path(), args);
-        assert!(
-            out.status.success(),
-            "{args:?}: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        nrgdb_ok(dir.path(), args);
     };
     let read = |f: &str| std::fs::read_to_string(dir.path().join(f)).unwrap();
     ok(&["import", "--db", "t.db", "--map", "m", "b.json"]);

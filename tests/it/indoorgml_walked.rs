@@ -10,7 +10,7 @@ use nrgdb::indoorgml::{self, read_str};
 use nrgdb::model::{Point, SpaceId};
 use nrgdb::route::walked_model;
 
-use crate::support::{building, have_xmllint, nrgdb, shared_dir};
+use crate::support::{building, have_xmllint, nrgdb, nrgdb_ok, shared_dir};
 
 fn own_length(points: &[Point]) -> f64 {
     points
@@ -192,12 +192,7 @@ fn cli_export_and_convert_write_walked_transitions() {
     let nrg = building(3);
     std::fs::write(dir.path().join("b.json"), nrg.to_json()).unwrap();
     let run = |args: &[&str]| {
-        let out = nrgdb(dir.path(), args);
-        assert!(
-            out.status.success(),
-            "{args:?}: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+        nrgdb_ok(dir.path(), args);
     };
     run(&["convert", "b.json", "c.gml"]);
     run(&["import", "--db", "t.db", "--map", "m", "b.json"]);

@@ -55,6 +55,18 @@ pub fn nrgdb(dir: &std::path::Path, args: &[&str]) -> Output {
         .expect("run nrgdb")
 }
 
+/// Runs the nrgdb binary with `args` in `dir`, asserting that it succeeds
+/// (its stderr in the message when not).
+pub fn nrgdb_ok(dir: &std::path::Path, args: &[&str]) -> Output {
+    let out = nrgdb(dir, args);
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    out
+}
+
 /// The generated corridor building of `nrgdb::fixtures`.
 pub fn building(rooms: usize) -> Nrg {
     nrgdb::fixtures::corridor_building(rooms)
