@@ -21,11 +21,24 @@ pub struct Args {
     /// IndoorGML version of a .gml/.xml output: 1.0.3 or 1.1.
     #[arg(long, value_name = "VERSION", default_value_t)]
     pub indoorgml_version: nrgdb::indoorgml::IndoorGmlVersion,
+    /// What to write: a model format told by the extension (default), or `nav2`: a Nav2 Route
+    /// Server graph (GeoJSON for nav2_route's GeoJsonGraphFileLoader).
+    #[arg(long, value_enum, default_value_t = ExportFormat::Model)]
+    pub format: ExportFormat,
     /// GeoJSON of a georeferenced map (`nrgdb georef`) in map-frame metres instead of WGS84.
     #[arg(long)]
     pub local_frame: bool,
     #[command(flatten)]
     pub db: DbArg,
+}
+
+/// What `nrgdb export` writes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum ExportFormat {
+    /// The model, in the format its extension names (.gml, .json, .geojson, .indoor.json).
+    Model,
+    /// A Nav2 Route Server graph (GeoJSON).
+    Nav2,
 }
 
 /// Runs `nrgdb export`.
@@ -36,6 +49,22 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         .load(&map, rev)
         .into_diagnostic()
         .wrap_err_with(|| format!("exporting {}", args.map))?;
+    if args.format == ExportFormat::Nav2 {
+        let nav = nrgdb::route::NavMesh::new(std::sync::Arc::new(nrg));
+        let graph = nrgdb::format::nav2::to_nav2(&nav);
+        nrgdb::format::nav2::check_nav2(&graph)
+            .into_diagnostic()
+            .wrap_err_with(|| format!("{} makes no Nav2 route graph", args.map))?;
+        let text = serde_json::to_string_pretty(&graph).into_diagnostic()? + "\n";
+        if args.out == std::path::Path::new("-") {
+            out.write_all(text.as_bytes()).into_diagnostic()?;
+            return Ok(ExitCode::SUCCESS);
+        }
+        nrgdb::atomic::write(&args.out, text.as_bytes())
+            .into_diagnostic()
+            .wrap_err_with(|| format!("writing {}", args.out.display()))?;
+        return Ok(ExitCode::SUCCESS);
+    }
     let geojson =
         nrgdb::format::ModelFormat::of(&args.out).ok() == Some(nrgdb::format::ModelFormat::GeoJson);
     if geojson && !args.local_frame {

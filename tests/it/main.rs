@@ -28,6 +28,7 @@ mod extract_valid_props;
 mod georef;
 mod ingest;
 mod ingest_gate;
+mod nav2;
 mod paper_cuts;
 mod query;
 mod query_cli;

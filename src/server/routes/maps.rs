@@ -151,3 +151,29 @@ pub async fn geojson(
     let response = ([(header::CONTENT_TYPE, "application/geo+json")], body).into_response();
     Ok(with_caching(response, rev.is_some()))
 }
+
+/// `GET /maps/{map}/revisions/{rev}/nav2`: the revision as a Nav2 Route
+/// Server graph (GeoJSON for `nav2_route`'s GeoJsonGraphFileLoader).
+pub async fn nav2(
+    State(state): State<AppState>,
+    Path((map, rev)): Path<(String, String)>,
+    uri: Uri,
+) -> Result<Response, ApiError> {
+    Params::parse(&uri, &[])?;
+    let rev = parse_rev("rev", &rev)?;
+    let body = state
+        .blocking(move |ctx| {
+            let r = ctx.revision(&map, rev)?;
+            Ok(crate::format::nav2::to_nav2(&r.nav))
+        })
+        .await?;
+    if let Err(e) = crate::format::nav2::check_nav2(&body) {
+        return Err(ApiError::bad(
+            "map",
+            format!("this revision makes no Nav2 route graph: {e}"),
+        ));
+    }
+    let text = serde_json::to_string(&body).unwrap_or_default();
+    let response = ([(header::CONTENT_TYPE, "application/geo+json")], text).into_response();
+    Ok(with_caching(response, rev.is_some()))
+}
