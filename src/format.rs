@@ -14,6 +14,7 @@
 
 mod detect;
 pub mod nav2;
+pub mod osm;
 
 use std::io::Read;
 use std::path::{Path, PathBuf};

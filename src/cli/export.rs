@@ -21,8 +21,9 @@ pub struct Args {
     /// IndoorGML version of a .gml/.xml output: 1.0.3 or 1.1.
     #[arg(long, value_name = "VERSION", default_value_t)]
     pub indoorgml_version: nrgdb::indoorgml::IndoorGmlVersion,
-    /// What to write: a model format told by the extension (default), or `nav2`: a Nav2 Route
-    /// Server graph (GeoJSON for nav2_route's GeoJsonGraphFileLoader).
+    /// What to write: a model format told by the extension (default), `nav2`: a Nav2 Route
+    /// Server graph (GeoJSON for nav2_route's GeoJsonGraphFileLoader), or `osm`: OpenStreetMap
+    /// Simple Indoor Tagging for JOSM (needs a georeference).
     #[arg(long, value_enum, default_value_t = ExportFormat::Model)]
     pub format: ExportFormat,
     /// GeoJSON of a georeferenced map (`nrgdb georef`) in map-frame metres instead of WGS84.
@@ -39,6 +40,8 @@ pub enum ExportFormat {
     Model,
     /// A Nav2 Route Server graph (GeoJSON).
     Nav2,
+    /// OpenStreetMap XML in Simple Indoor Tagging, for JOSM (needs `nrgdb georef`).
+    Osm,
 }
 
 /// Runs `nrgdb export`.
@@ -49,6 +52,18 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         .load(&map, rev)
         .into_diagnostic()
         .wrap_err_with(|| format!("exporting {}", args.map))?;
+    if args.format == ExportFormat::Osm {
+        let Some(georef) = store.georef(&map).into_diagnostic()? else {
+            miette::bail!(
+                "map '{map}' has no georeference; OpenStreetMap files are in WGS84: set one with `nrgdb georef {map} --origin LAT,LON --heading DEG`"
+            );
+        };
+        let text = nrgdb::format::osm::to_osm(&nrg, &georef);
+        nrgdb::atomic::write(&args.out, text.as_bytes())
+            .into_diagnostic()
+            .wrap_err_with(|| format!("writing {}", args.out.display()))?;
+        return Ok(ExitCode::SUCCESS);
+    }
     if args.format == ExportFormat::Nav2 {
         let nav = nrgdb::route::NavMesh::new(std::sync::Arc::new(nrg));
         let graph = nrgdb::format::nav2::to_nav2(&nav);

@@ -29,6 +29,7 @@ mod georef;
 mod ingest;
 mod ingest_gate;
 mod nav2;
+mod osm;
 mod paper_cuts;
 mod query;
 mod query_cli;
