@@ -107,7 +107,7 @@ pub fn to_osm(nrg: &Nrg, georef: &Georef) -> String {
     out
 }
 
-fn space_tags(s: &Space, georef: &Georef) -> Vec<(&'static str, String)> {
+fn space_tags(s: &Space, georef: &Georef) -> Tags {
     let indoor = match s.kind {
         SpaceKind::Room => "room",
         SpaceKind::Corridor => "corridor",
@@ -139,11 +139,14 @@ fn escape(v: &str) -> String {
         .replace('"', "&quot;")
 }
 
+/// Tags of a node, way or relation.
+type Tags = Vec<(&'static str, String)>;
+
 /// The nodes and ways written so far.
 struct Doc<'a> {
     georef: &'a Georef,
     /// Id, map-frame position and tags of every node.
-    nodes: Vec<(i64, Point, Vec<(&'static str, String)>)>,
+    nodes: Vec<(i64, Point, Tags)>,
     /// Node id by rounded WGS84 position (1e-7°).
     at: HashMap<(i64, i64), i64>,
     /// Ways and relations.
@@ -171,7 +174,7 @@ impl Doc<'_> {
         id
     }
 
-    fn tag_node(&mut self, id: i64, tags: Vec<(&'static str, String)>) {
+    fn tag_node(&mut self, id: i64, tags: Tags) {
         if let Some(n) = self.nodes.iter_mut().find(|n| n.0 == id) {
             n.2 = tags;
         }
