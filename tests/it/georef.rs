@@ -138,6 +138,7 @@ async fn the_server_serves_wgs84_for_a_georeferenced_map() {
         .await
         .json();
     assert!(local.get("nrgdb:georef").is_none());
+    assert!(s.get("/maps/building").await.json()["georef"].is_null());
     {
         let mut store = nrgdb::store::Store::open(&s.db).unwrap();
         let g = nrgdb::model::Georef::new(-33.8568, 151.2153, 0.0, "0").unwrap();
@@ -148,6 +149,10 @@ async fn the_server_serves_wgs84_for_a_georeferenced_map() {
         .await
         .json();
     assert_eq!(wgs["nrgdb:georef"]["lat"], -33.8568);
+    assert_eq!(
+        s.get("/maps/building").await.json()["georef"]["lon"],
+        151.2153
+    );
     let p = &wgs["features"][0]["geometry"]["coordinates"][0][0];
     let (lon, lat) = (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
     assert!(

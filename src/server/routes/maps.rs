@@ -30,7 +30,10 @@ pub async fn map(
         .blocking(move |ctx| {
             let latest = ctx.store().revision(&map, None)?;
             let info = ctx.store().maps()?.into_iter().find(|m| m.name == map);
-            Ok(Json(json!({ "map": info, "latest": latest })))
+            let georef = ctx.store().georef(&map)?;
+            Ok(Json(
+                json!({ "map": info, "latest": latest, "georef": georef }),
+            ))
         })
         .await
 }

@@ -33,7 +33,7 @@ pub fn endpoints() -> Vec<Endpoint> {
         ep(M::GET, "/metrics", "Prometheus metrics (text format 0.0.4)", &[], get(system::metrics)),
         ep(M::GET, "/openapi.json", "This API as OpenAPI 3.1", &[], get(system::openapi)),
         ep(M::GET, "/maps", "Every map with its latest revision", &[], get(maps::list_maps)),
-        ep(M::GET, "/maps/{map}", "A map and its latest revision", &[], get(maps::map)),
+        ep(M::GET, "/maps/{map}", "A map, its latest revision and its georeference (null when it has none)", &[], get(maps::map)),
         ep(M::GET, "/maps/{map}/revisions", "The revisions of a map, oldest first", &[], get(maps::list_revisions)),
         Endpoint { timed: false, ..ep(M::POST, "/maps/{map}/revisions", "Upload a revision: multipart (map YAML + image, extracted; or an IndoorGML/JSON/GeoJSON file) or a raw IndoorGML/JSON body; needs the bearer token", &upload::PARAMS, post(upload::upload)) },
         ep(M::GET, "/maps/{map}/revisions/{rev}", "One revision's record (message, author, counts of changes)", &[], get(maps::revision)),
