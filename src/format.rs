@@ -13,6 +13,7 @@
 //! Uses indoorgml, geojson and route; sits above them.
 
 mod detect;
+pub mod osm;
 
 use std::io::Read;
 use std::path::{Path, PathBuf};
