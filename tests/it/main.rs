@@ -27,6 +27,7 @@ mod extract_tiling;
 mod extract_valid_props;
 mod ingest;
 mod ingest_gate;
+mod osm;
 mod paper_cuts;
 mod query;
 mod query_cli;
