@@ -58,7 +58,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
                 "map '{map}' has no georeference; OpenStreetMap files are in WGS84: set one with `nrgdb georef {map} --origin LAT,LON --heading DEG`"
             );
         };
-        let text = nrgdb::format::osm::to_osm(&nrg, &georef);
+        let text = nrgdb::format::osm::to_osm_xml(&nrg, &georef);
         nrgdb::atomic::write(&args.out, text.as_bytes())
             .into_diagnostic()
             .wrap_err_with(|| format!("writing {}", args.out.display()))?;
