@@ -179,7 +179,9 @@ pub(crate) fn apply_sets(params: ExtractParams, sets: &[String]) -> miette::Resu
 pub struct Args {
     #[command(flatten)]
     pub map: MapArgs,
-    /// Write the NRG as IndoorGML 1.0.3 (schema-valid, thick doors).
+    /// Write the NRG in the format its extension names: .gml IndoorGML 1.0.3
+    /// (schema-valid, thick doors), .json the model, .geojson GeoJSON,
+    /// .indoor.json IndoorJSON2 (a draft).
     #[arg(long, value_name = "FILE.gml")]
     pub out: Option<PathBuf>,
     /// Write the graph as JSON (the model's form plus each space's pixel_centroid [col,row]).
@@ -235,15 +237,19 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     let Some(map) = inputs.first() else {
         miette::bail!("no map given (nrgdb extract MAP.yaml)");
     };
+    // A wrong output name fails before the work.
+    let out_format = args
+        .out
+        .as_deref()
+        .map(ModelFormat::of)
+        .transpose()
+        .into_diagnostic()?;
     let spinner = progress::spinner(format!("extracting {}", map.display()));
     let (grid, params) = args.map.load(map)?;
     let (x, walked) = extract_walked(&grid, &params, map, args.allow_invalid)?;
     spinner.finish_and_clear();
     // Encode everything before writing anything, so a failure leaves no half output.
-    let gml = args
-        .out
-        .as_ref()
-        .map(|_| nrgdb::format::render(&walked, ModelFormat::IndoorGml));
+    let gml = out_format.map(|f| nrgdb::format::render(&walked, f));
     let json = args.json.as_ref().map(|_| x.to_json());
     let png = match &args.labels {
         Some(_) => Some(

@@ -305,3 +305,38 @@ fn issue_21_paper_cut_check_prints_no_line_0_and_no_repeats() {
     };
     assert_eq!(nrgdb::indoorgml::tidy(vec![f.clone(), f.clone()]), vec![f]);
 }
+
+/// `extract --out x.json` wrote IndoorGML XML into a file named .json.
+/// The output's extension now names its format, as for `export` and
+/// `convert`; a name that says no format fails before the extraction and
+/// writes nothing.
+#[test]
+fn paper_cut_extract_out_writes_the_format_its_extension_names() {
+    let dir = tempfile::tempdir().unwrap();
+    let grey = image::GrayImage::from_fn(40, 40, |x, y| {
+        let wall = x < 2 || y < 2 || x > 37 || y > 37;
+        image::Luma([if wall { 0 } else { 254 }])
+    });
+    grey.save(dir.path().join("room.png")).unwrap();
+    write_map(dir.path(), "room.png");
+    let out = nrgdb(dir.path(), &["extract", "map.yaml", "--out", "x.json"]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let written = std::fs::read_to_string(dir.path().join("x.json")).unwrap();
+    let json: serde_json::Value = serde_json::from_str(&written).unwrap();
+    let spaces = json["spaces"].as_array().unwrap();
+    assert_eq!(spaces.len(), 1, "{written}");
+    assert_eq!(spaces[0]["kind"], "room");
+    let out = nrgdb(dir.path(), &["extract", "map.yaml", "--out", "x.geojson"]);
+    assert!(out.status.success(), "{}", text(&out.stderr));
+    let geo: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(dir.path().join("x.geojson")).unwrap()).unwrap();
+    assert_eq!(geo["type"], "FeatureCollection");
+    let out = nrgdb(dir.path(), &["extract", "map.yaml", "--out", "x.txt"]);
+    assert_eq!(out.status.code(), Some(2), "{}", text(&out.stderr));
+    assert!(
+        text(&out.stderr).contains("x.txt: unknown format"),
+        "{}",
+        text(&out.stderr)
+    );
+    assert!(!dir.path().join("x.txt").exists());
+}
