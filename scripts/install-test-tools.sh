@@ -5,12 +5,14 @@
 # PostGIS and pgRouting (`postgresql`, `postgresql-15-postgis-3`,
 # `postgresql-15-pgrouting`) for the store's
 # PostgreSQL engine (the tests start a throw-away server of their own with
-# scripts/pg-throwaway.sh). Safe to run repeatedly;
+# scripts/pg-throwaway.sh), and GDAL's `ogrinfo` (`gdal-bin`, what QGIS
+# reads vector files with) for the GeoJSON and OpenStreetMap checks. Safe to run repeatedly;
 # without root or apt-get it only says what is missing (the tests that need a
 # tool then skip with a notice, unless NRGDB_REQUIRE_SHARED=1).
 set -u
 need=()
 command -v xmllint >/dev/null 2>&1 || need+=(libxml2-utils)
+command -v ogrinfo >/dev/null 2>&1 || need+=(gdal-bin)
 [ -x /usr/bin/chromium ] || command -v chromium >/dev/null 2>&1 || need+=(chromium)
 ls /usr/lib/postgresql/*/bin/initdb >/dev/null 2>&1 || need+=(postgresql)
 ls /usr/share/postgresql/*/extension/postgis.control >/dev/null 2>&1 || need+=(postgresql-15-postgis-3)

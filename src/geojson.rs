@@ -59,7 +59,7 @@ pub fn to_geojson_with_paths(nrg: &Nrg, paths: &ConnectionPaths) -> Value {
             .collect();
         let mut properties = json!({
             "feature": "space",
-            "id": s.id,
+            "space_id": s.id,
             "kind": s.kind,
             "name": s.name,
             "area_m2": s.area_m2,
@@ -220,7 +220,12 @@ fn space(f: &Value, props: &Map<String, Value>) -> Result<Space, String> {
             .cloned()
             .ok_or_else(|| format!("has no property \"{k}\""))
     };
-    let id: SpaceId = serde_json::from_value(field("id")?).map_err(|e| format!("id: {e}"))?;
+    // `space_id`; files written before it was named so say `id`.
+    let (key, value) = ["space_id", "id"]
+        .into_iter()
+        .find_map(|k| props.get(k).map(|v| (k, v)))
+        .ok_or("has no property \"space_id\"")?;
+    let id: SpaceId = serde_json::from_value(value.clone()).map_err(|e| format!("{key}: {e}"))?;
     let kind = serde_json::from_value(field("kind")?).map_err(|e| format!("kind: {e}"))?;
     let anchor: Point =
         serde_json::from_value(field("anchor")?).map_err(|e| format!("anchor: {e}"))?;

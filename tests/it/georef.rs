@@ -78,7 +78,9 @@ fn geojson_of_a_georeferenced_map_is_wgs84_where_it_belongs() {
     for s in spaces {
         let f = features
             .iter()
-            .find(|f| f["properties"]["feature"] == "space" && f["properties"]["id"] == s["id"])
+            .find(|f| {
+                f["properties"]["feature"] == "space" && f["properties"]["space_id"] == s["id"]
+            })
             .unwrap();
         let (x, y) = (
             s["anchor"][0].as_f64().unwrap(),

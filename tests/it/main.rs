@@ -25,6 +25,7 @@ mod extract;
 mod extract_doors;
 mod extract_tiling;
 mod extract_valid_props;
+mod gdal_reads;
 mod georef;
 mod ingest;
 mod ingest_gate;
