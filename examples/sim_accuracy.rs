@@ -1,6 +1,7 @@
 //! The accuracy benchmark on simulated buildings: simulates, extracts and
-//! evaluates `--count` buildings per group (fixed seeds 1..=count), once
-//! plain and once furnished (cluttered), and prints a line per building and
+//! evaluates `--count` buildings per group (fixed seeds 1..=count), plain,
+//! furnished (boxes) and cluttered (shelves, desk clusters, kitchens:
+//! `FloorPlanParams::clutter`), and prints a line per building and
 //! the means per group. `kinds` is corridors and rooms labelled as the plan
 //! has them / corridors labelled room and rooms labelled corridor. The regression guard over the same figures is the
 //! integration test `sim_accuracy` (tests/it/sim_accuracy.rs).
@@ -33,18 +34,23 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "{:<10} {:>6} {:>6} | {:>6} {:>6} | {:>6} {:>6} | {:>7} {:>9} {:>7}",
         "building", "R", "P", "doorR", "doorP", "connR", "connP", "rooms", "kinds", "ms"
     );
-    for furnished in [false, true] {
+    for (group, furnished, cluttered) in [
+        ("plain", false, false),
+        ("furnished", true, false),
+        ("cluttered", false, true),
+    ] {
         let mut scores = Vec::new();
         for seed in 1..=count {
             let mut sim = SimParams::new(seed);
             sim.plan.furniture = furnished;
+            sim.plan.clutter = cluttered;
             let t = Instant::now();
             let s = evaluate_simulated(&sim, &params, scratch.path())?;
             let ms = t.elapsed().as_secs_f64() * 1e3;
             let e = &s.evaluation;
             println!(
                 "{:<10} {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>7} {:>9} {:>7.0}",
-                format!("{}{seed}", if furnished { "F" } else { "P" }),
+                format!("{}{seed}", &group[..1].to_uppercase()),
                 100.0 * e.rooms.recall_micro,
                 100.0 * e.rooms.precision_micro,
                 100.0 * e.doors.recall,
@@ -63,7 +69,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             );
             scores.push(s);
         }
-        print_means(if furnished { "furnished" } else { "plain" }, &scores);
+        print_means(group, &scores);
     }
     Ok(())
 }

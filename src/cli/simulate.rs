@@ -30,6 +30,10 @@ pub struct Args {
     /// Add diagonal building wings (non-Manhattan walls).
     #[arg(long)]
     pub non_manhattan: bool,
+    /// Put what real robot maps show into rooms: rows of shelves with
+    /// door-wide aisles, desk clusters with chairs, a counter and a table.
+    #[arg(long)]
+    pub clutter: bool,
 }
 
 /// Runs the subcommand.
@@ -38,6 +42,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     params.resolution_m = args.resolution;
     params.plan.furniture = args.furniture;
     params.plan.non_manhattan = args.non_manhattan;
+    params.plan.clutter = args.clutter;
     let sim = simulate(&params)
         .into_diagnostic()
         .wrap_err("cannot simulate")?;

@@ -16,8 +16,11 @@ use crate::sim::{SimParams, simulate, write_simulation};
 pub struct SimulatedScore {
     /// The building's seed.
     pub seed: u64,
-    /// Whether rooms were furnished (cluttered).
+    /// Whether rooms were furnished (boxes).
     pub furnished: bool,
+    /// Whether rooms hold real-map clutter (shelves, desk clusters,
+    /// kitchens; `FloorPlanParams::clutter`).
+    pub cluttered: bool,
     /// Rooms in the true plan.
     pub true_rooms: usize,
     /// The scores against the plan's ground truth.
@@ -52,6 +55,7 @@ pub fn evaluate_simulated(
     Ok(SimulatedScore {
         seed: sim.plan.seed,
         furnished: sim.plan.furniture,
+        cluttered: sim.plan.clutter,
         true_rooms,
         evaluation: evaluate(&gt, &x, grid.resolution),
         kinds: kind_score(&x.nrg, &building.plan.corridors, &building.plan.rooms),

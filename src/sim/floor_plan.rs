@@ -34,6 +34,10 @@ pub struct FloorPlanParams {
     pub furniture: bool,
     /// Turn wings by 25-65 degrees instead of 90 (non-Manhattan walls).
     pub non_manhattan: bool,
+    /// Put what real robot maps show into rooms: rows of shelves with
+    /// door-wide aisles, desk clusters with chairs, kitchen counters along
+    /// a wall with a table (see `sim::clutter`).
+    pub clutter: bool,
 }
 
 impl FloorPlanParams {
@@ -51,6 +55,7 @@ impl FloorPlanParams {
             second_door_probability: 0.3,
             furniture: false,
             non_manhattan: false,
+            clutter: false,
         }
     }
 

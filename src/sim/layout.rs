@@ -13,7 +13,7 @@ use crate::model::{Point, Ring};
 
 /// A rigid local frame: `x` along the corridor, `y` to its left.
 #[derive(Debug, Clone, Copy)]
-struct Frame {
+pub(super) struct Frame {
     o: Point,
     d: Point,
 }
@@ -25,14 +25,14 @@ impl Frame {
             d: [angle.cos(), angle.sin()],
         }
     }
-    fn at(&self, x: f64, y: f64) -> Point {
+    pub(super) fn at(&self, x: f64, y: f64) -> Point {
         let n = [-self.d[1], self.d[0]];
         [
             self.o[0] + x * self.d[0] + y * n[0],
             self.o[1] + x * self.d[1] + y * n[1],
         ]
     }
-    fn rect(&self, x0: f64, y0: f64, x1: f64, y1: f64) -> Ring {
+    pub(super) fn rect(&self, x0: f64, y0: f64, x1: f64, y1: f64) -> Ring {
         vec![
             self.at(x0, y0),
             self.at(x1, y0),
@@ -46,19 +46,20 @@ impl Frame {
 }
 
 /// A corridor wing: the corridor occupies local `x in [0, len]`, `y in [-w, 0]`.
-struct Wing {
-    frame: Frame,
+pub(super) struct Wing {
+    pub(super) frame: Frame,
     len: f64,
 }
 
 /// A placed room in its wing's frame, for furniture and the route.
-struct Slot {
-    wing: usize,
-    x0: f64,
-    x1: f64,
-    y0: f64,
-    y1: f64,
-    back_is_high: bool,
+pub(super) struct Slot {
+    pub(super) wing: usize,
+    pub(super) x0: f64,
+    pub(super) x1: f64,
+    pub(super) y0: f64,
+    pub(super) y1: f64,
+    /// Whether the back wall (away from the corridor) is at `y1`.
+    pub(super) back_is_high: bool,
 }
 
 /// Builds the plan (parameters already validated).
@@ -232,7 +233,12 @@ fn layout(p: &FloorPlanParams) -> FloorPlan {
     if p.furniture {
         furnish(&mut plan, &wings, &slots, &mut rng);
     }
-    plan.route = route(&plan, &wings, &mut wing_doors, w);
+    let detours = if p.clutter {
+        super::clutter::clutter(&mut plan, &wings, &slots, &mut rng)
+    } else {
+        Vec::new()
+    };
+    plan.route = route(&plan, &wings, &mut wing_doors, w, &detours);
     plan
 }
 
@@ -279,12 +285,14 @@ fn furnish(plan: &mut FloorPlan, wings: &[Wing], slots: &[Slot], rng: &mut Split
 }
 
 /// The route: along each corridor's centre line, with a detour through
-/// every corridor door to its room's centre and back.
+/// every corridor door to its room's centre and back; from the centre of
+/// room `r` also through `detours[r]` (the aisles of its shelves) and back.
 fn route(
     plan: &FloorPlan,
     wings: &[Wing],
     wing_doors: &mut [Vec<(f64, usize)>],
     w: f64,
+    detours: &[Vec<Point>],
 ) -> Vec<Point> {
     let mut pts = Vec::new();
     let last = wings.len().saturating_sub(1);
@@ -302,7 +310,12 @@ fn route(
             };
             let centre = crate::model::polygon_centroid(room).unwrap_or(room[0]);
             let c = wing.frame.at(dx.clamp(start, wing.len), -w / 2.0);
-            pts.extend([c, door.centre(), centre, door.centre(), c]);
+            pts.extend([c, door.centre(), centre]);
+            if let Some(detour) = detours.get(r).filter(|d| !d.is_empty()) {
+                pts.extend(detour.iter().copied());
+                pts.push(centre);
+            }
+            pts.extend([door.centre(), c]);
         }
         let end = if k == last { wing.len - 0.4 } else { wing.len };
         pts.push(wing.frame.at(end, -w / 2.0));

@@ -11,6 +11,7 @@
 
 mod bresenham;
 mod carmen;
+mod clutter;
 mod error;
 mod floor_plan;
 mod ground_truth;
