@@ -44,6 +44,19 @@ fn model() -> Nrg {
     nrgdb::fixtures::corridor_building(6)
 }
 
+/// `[min x, min y, max x, max y]` of every space's outline, in metres.
+fn bounds(nrg: &Nrg) -> [f64; 4] {
+    let points = nrg.spaces().iter().flat_map(|s| s.polygon.iter());
+    points.fold([f64::MAX, f64::MAX, f64::MIN, f64::MIN], |b, p| {
+        [
+            b[0].min(p[0]),
+            b[1].min(p[1]),
+            b[2].max(p[0]),
+            b[3].max(p[1]),
+        ]
+    })
+}
+
 /// The `name (Type)` lines of `ogrinfo -so`'s field list.
 fn fields(summary: &str) -> BTreeSet<String> {
     summary
@@ -117,16 +130,7 @@ fn gdal_reads_our_geojson_with_one_type_per_field_and_every_feature() {
         assert!(f.contains(want), "{want} not in {f:?}");
     }
     // The extent is the model's, in metres.
-    let xs = nrg
-        .spaces()
-        .iter()
-        .flat_map(|s| s.polygon.iter().map(|p| p[0]));
-    let ys = nrg
-        .spaces()
-        .iter()
-        .flat_map(|s| s.polygon.iter().map(|p| p[1]));
-    let (x0, x1) = xs.fold((f64::MAX, f64::MIN), |(a, b), x| (a.min(x), b.max(x)));
-    let (y0, y1) = ys.fold((f64::MAX, f64::MIN), |(a, b), y| (a.min(y), b.max(y)));
+    let [x0, y0, x1, y1] = bounds(&nrg);
     let e = extent(&summary);
     for (got, want) in e.iter().zip([x0, y0, x1, y1]) {
         assert!(
@@ -155,34 +159,20 @@ fn gdal_places_a_georeferenced_geojson_at_its_origin() {
     let w = (1.0 - e2 * phi.sin().powi(2)).sqrt();
     let m_lat = a * (1.0 - e2) / w.powi(3) * std::f64::consts::PI / 180.0;
     let m_lon = a / w * phi.cos() * std::f64::consts::PI / 180.0;
-    let xs = nrg
-        .spaces()
-        .iter()
-        .flat_map(|s| s.polygon.iter().map(|p| p[0]));
-    let ys = nrg
-        .spaces()
-        .iter()
-        .flat_map(|s| s.polygon.iter().map(|p| p[1]));
-    let (x0, x1) = xs.fold((f64::MAX, f64::MIN), |(a, b), x| (a.min(x), b.max(x)));
-    let (y0, y1) = ys.fold((f64::MAX, f64::MIN), |(a, b), y| (a.min(y), b.max(y)));
+    let [x0, y0, x1, y1] = bounds(&nrg);
     // ogrinfo prints the extent to 1e-6°: up to 0.056 m of rounding.
-    let near = |deg: f64, metres: f64, per: f64| (deg * per - metres).abs() < 0.06;
-    assert!(
-        near(lon0 - 11.575, x0, m_lon),
-        "west edge {lon0}, model {x0} m"
-    );
-    assert!(
-        near(lon1 - 11.575, x1, m_lon),
-        "east edge {lon1}, model {x1} m"
-    );
-    assert!(
-        near(lat0 - 48.137, y0, m_lat),
-        "south edge {lat0}, model {y0} m"
-    );
-    assert!(
-        near(lat1 - 48.137, y1, m_lat),
-        "north edge {lat1}, model {y1} m"
-    );
+    let edges = [
+        ("west", lon0 - 11.575, x0, m_lon),
+        ("east", lon1 - 11.575, x1, m_lon),
+        ("south", lat0 - 48.137, y0, m_lat),
+        ("north", lat1 - 48.137, y1, m_lat),
+    ];
+    for (edge, deg, metres, per) in edges {
+        assert!(
+            (deg * per - metres).abs() < 0.06,
+            "{edge} edge {deg}° from the origin, model {metres} m"
+        );
+    }
 }
 
 #[test]

@@ -251,17 +251,22 @@ fn issue_21_paper_cut_missing_image_names_the_yaml_and_the_path() {
     );
 }
 
+/// `map.yaml` and `room.png` in `dir`: one room of 4 m × 4 m, drawn in grey.
+fn write_one_room(dir: &Path) {
+    let grey = image::GrayImage::from_fn(40, 40, |x, y| {
+        let wall = x < 2 || y < 2 || x > 37 || y > 37;
+        image::Luma([if wall { 0 } else { 254 }])
+    });
+    grey.save(dir.join("room.png")).unwrap();
+    write_map(dir, "room.png");
+}
+
 #[test]
 fn issue_21_paper_cut_a_colour_photo_is_extracted_with_a_warning() {
     let dir = tempfile::tempdir().unwrap();
     // One room of 4 m x 4 m, drawn in grey: no warning, and the counts
     // are in the singular where they are one.
-    let grey = image::GrayImage::from_fn(40, 40, |x, y| {
-        let wall = x < 2 || y < 2 || x > 37 || y > 37;
-        image::Luma([if wall { 0 } else { 254 }])
-    });
-    grey.save(dir.path().join("room.png")).unwrap();
-    write_map(dir.path(), "room.png");
+    write_one_room(dir.path());
     let out = nrgdb(dir.path(), &["extract", "map.yaml", "--out", "x.gml"]);
     assert!(out.status.success(), "{}", text(&out.stderr));
     assert!(!text(&out.stderr).contains("WARN"), "{}", text(&out.stderr));
@@ -313,12 +318,7 @@ fn issue_21_paper_cut_check_prints_no_line_0_and_no_repeats() {
 #[test]
 fn paper_cut_extract_out_writes_the_format_its_extension_names() {
     let dir = tempfile::tempdir().unwrap();
-    let grey = image::GrayImage::from_fn(40, 40, |x, y| {
-        let wall = x < 2 || y < 2 || x > 37 || y > 37;
-        image::Luma([if wall { 0 } else { 254 }])
-    });
-    grey.save(dir.path().join("room.png")).unwrap();
-    write_map(dir.path(), "room.png");
+    write_one_room(dir.path());
     let out = nrgdb(dir.path(), &["extract", "map.yaml", "--out", "x.json"]);
     assert!(out.status.success(), "{}", text(&out.stderr));
     let written = std::fs::read_to_string(dir.path().join("x.json")).unwrap();
