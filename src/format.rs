@@ -321,13 +321,32 @@ pub fn render_geojson_wgs84(walked: &WalkedModel, georef: &crate::model::Georef)
     serde_json::to_string_pretty(&crate::geojson::to_wgs84(doc, georef)).unwrap_or_default() + "\n"
 }
 
+/// GeoJSON of a walked model in the WGS84 / UTM zone of `georef`'s
+/// origin, the CRS named (see [`crate::geojson::to_utm`]).
+pub fn render_geojson_utm(walked: &WalkedModel, georef: &crate::model::Georef) -> String {
+    let doc = crate::geojson::to_geojson_with_paths(&walked.nrg, &walked.paths);
+    serde_json::to_string_pretty(&crate::geojson::to_utm(doc, georef)).unwrap_or_default() + "\n"
+}
+
 /// Writes [`render_geojson_wgs84`] of `nrg` to `path` atomically.
 pub fn write_geojson_wgs84(
     nrg: &Nrg,
     georef: &crate::model::Georef,
     path: &Path,
 ) -> Result<(), FormatError> {
-    let text = render_geojson_wgs84(&walked_model(nrg), georef);
+    write_text(path, &render_geojson_wgs84(&walked_model(nrg), georef))
+}
+
+/// Writes [`render_geojson_utm`] of `nrg` to `path` atomically.
+pub fn write_geojson_utm(
+    nrg: &Nrg,
+    georef: &crate::model::Georef,
+    path: &Path,
+) -> Result<(), FormatError> {
+    write_text(path, &render_geojson_utm(&walked_model(nrg), georef))
+}
+
+fn write_text(path: &Path, text: &str) -> Result<(), FormatError> {
     crate::atomic::write(path, text.as_bytes()).map_err(|source| FormatError::Io {
         path: path.to_path_buf(),
         source,
@@ -346,11 +365,10 @@ pub fn write_model_as(
     path: &Path,
     version: IndoorGmlVersion,
 ) -> Result<(), FormatError> {
-    let text = render_as(&walked_model(nrg), ModelFormat::of(path)?, version);
-    crate::atomic::write(path, text.as_bytes()).map_err(|source| FormatError::Io {
-        path: path.to_path_buf(),
-        source,
-    })
+    write_text(
+        path,
+        &render_as(&walked_model(nrg), ModelFormat::of(path)?, version),
+    )
 }
 
 #[cfg(test)]

@@ -17,7 +17,7 @@
 use serde_json::{Map, Value, json};
 
 use crate::model::{
-    Connection, ConnectionPaths, Georef, Nrg, Point, Ring, Space, SpaceId, doorway,
+    Connection, ConnectionPaths, Georef, Nrg, Point, Ring, Space, SpaceId, UtmZone, doorway,
 };
 
 /// Why a GeoJSON document is not an nrgdb model.
@@ -130,6 +130,54 @@ pub fn to_wgs84(mut doc: Value, georef: &Georef) -> Value {
     doc
 }
 
+/// `doc` (as [`to_geojson_with_paths`] writes it) in the WGS84 / UTM zone
+/// of `georef`'s origin (see [`UtmZone`]), in metres, with the CRS named
+/// in a `crs` member (`urn:ogc:def:crs:EPSG::326zz`), which GDAL and so
+/// QGIS read: every geometry's coordinates and the `anchor` and `doorway`
+/// properties. The georeference rides along in [`GEOREF_MEMBER`], so the
+/// file reads back to map-frame metres. Not RFC 7946 (which allows WGS84
+/// only): the older GeoJSON 2008 `crs` member.
+pub fn to_utm(mut doc: Value, georef: &Georef) -> Value {
+    let zone = UtmZone::of([georef.lon, georef.lat]);
+    map_positions(&mut doc, &|p| zone.forward(georef.to_lon_lat(p)));
+    if let Some(obj) = doc.as_object_mut() {
+        obj.insert(
+            "crs".into(),
+            json!({"type": "name", "properties": {"name": zone.urn()}}),
+        );
+        obj.insert(GEOREF_MEMBER.into(), json!(georef));
+    }
+    doc
+}
+
+/// The UTM zone a `crs` member names, None for WGS84 (CRS84, EPSG:4326 or
+/// no member), or an error naming a CRS this reader cannot place.
+fn utm_crs(doc: &Value) -> Result<Option<UtmZone>, GeoJsonError> {
+    let Some(crs) = doc.get("crs") else {
+        return Ok(None);
+    };
+    let name = crs
+        .pointer("/properties/name")
+        .and_then(Value::as_str)
+        .unwrap_or("");
+    let code = name
+        .rsplit([':', '/'])
+        .next()
+        .and_then(|c| c.parse::<u32>().ok());
+    if name.contains("CRS84") || code == Some(4326) {
+        return Ok(None);
+    }
+    match code.and_then(UtmZone::from_epsg) {
+        Some(zone) => Ok(Some(zone)),
+        None => Err(GeoJsonError::Feature {
+            index: 0,
+            message: format!(
+                "crs {name:?}: only WGS84 (CRS84, EPSG:4326) and WGS84 / UTM (EPSG:326zz, 327zz) are read"
+            ),
+        }),
+    }
+}
+
 /// Applies `f` to every position of every feature: geometry coordinates
 /// (any nesting) and the `anchor` and `doorway` properties.
 fn map_positions(doc: &mut Value, f: &dyn Fn(Point) -> Point) {
@@ -178,7 +226,17 @@ pub fn from_geojson(text: &str) -> Result<Nrg, GeoJsonError> {
                 message: format!("{GEOREF_MEMBER}: {e}"),
             }
         })?;
-        map_positions(&mut value, &|p| g.to_map(p));
+        match utm_crs(&value)? {
+            Some(zone) => map_positions(&mut value, &|p| g.to_map(zone.inverse(p))),
+            None => map_positions(&mut value, &|p| g.to_map(p)),
+        }
+    } else if utm_crs(&value)?.is_some() {
+        return Err(GeoJsonError::Feature {
+            index: 0,
+            message: format!(
+                "UTM coordinates without the member {GEOREF_MEMBER}: nothing says where the map frame lies"
+            ),
+        });
     }
     let features =
         value

@@ -27,10 +27,24 @@ pub struct Args {
     #[arg(long, value_enum, default_value_t = ExportFormat::Model)]
     pub format: ExportFormat,
     /// GeoJSON of a georeferenced map (`nrgdb georef`) in map-frame metres instead of WGS84.
-    #[arg(long)]
+    #[arg(long, conflicts_with = "crs")]
     pub local_frame: bool,
+    /// The CRS of a georeferenced map's GeoJSON: `wgs84` (RFC 7946, the default) or `utm`
+    /// (metres in the WGS84 / UTM zone of the map's origin, EPSG:326zz or 327zz, named in the
+    /// file's `crs` member for GDAL and QGIS).
+    #[arg(long, value_enum)]
+    pub crs: Option<GeoCrs>,
     #[command(flatten)]
     pub db: DbArg,
+}
+
+/// The CRS of a georeferenced map's GeoJSON.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum GeoCrs {
+    /// WGS84 longitude and latitude (RFC 7946).
+    Wgs84,
+    /// Metres in the WGS84 / UTM zone of the map's origin.
+    Utm,
 }
 
 /// What `nrgdb export` writes.
@@ -82,11 +96,24 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     }
     let geojson =
         nrgdb::format::ModelFormat::of(&args.out).ok() == Some(nrgdb::format::ModelFormat::GeoJson);
+    if args.crs.is_some() && !geojson {
+        miette::bail!("--crs is for GeoJSON output (.geojson)");
+    }
     if geojson && !args.local_frame {
         let georef = store.georef(&map).into_diagnostic()?;
-        if let Some(g) = georef {
-            nrgdb::format::write_geojson_wgs84(&nrg, &g, &args.out).into_diagnostic()?;
-            return Ok(ExitCode::SUCCESS);
+        match (georef, args.crs) {
+            (Some(g), Some(GeoCrs::Utm)) => {
+                nrgdb::format::write_geojson_utm(&nrg, &g, &args.out).into_diagnostic()?;
+                return Ok(ExitCode::SUCCESS);
+            }
+            (Some(g), _) => {
+                nrgdb::format::write_geojson_wgs84(&nrg, &g, &args.out).into_diagnostic()?;
+                return Ok(ExitCode::SUCCESS);
+            }
+            (None, Some(_)) => miette::bail!(
+                "map '{map}' has no georeference, so no --crs: set one with `nrgdb georef {map} --origin LAT,LON --heading DEG`"
+            ),
+            (None, None) => {}
         }
     }
     write_model_as(&args.out, &nrg, args.indoorgml_version, out)?;

@@ -18,6 +18,7 @@ mod interior_point;
 mod nrg;
 mod repair;
 mod space;
+mod utm;
 pub(crate) mod validity;
 
 pub use connection::{Connection, ConnectionKind, ConnectionPaths};
@@ -33,3 +34,4 @@ pub use nrg::{MAX_COORD_M, MAX_NAME_CHARS, Nrg};
 pub use repair::{MAX_OVERLAP_TESTS, MIN_OVERLAP_M2, Repair, RepairKind, repair_geometry};
 pub(crate) use repair::{reshaped, to_geo};
 pub use space::{Space, SpaceId, SpaceKind, doorway};
+pub use utm::UtmZone;

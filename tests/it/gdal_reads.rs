@@ -236,3 +236,84 @@ fn gdal_finds_every_space_and_door_of_our_openstreetmap_file() {
             .all(|l| l.contains("\"level\"=>\"2\""))
     );
 }
+
+/// Every coordinate of a file, in order.
+fn coordinates(doc: &serde_json::Value) -> Vec<[f64; 2]> {
+    fn walk(v: &serde_json::Value, out: &mut Vec<[f64; 2]>) {
+        match v.as_array().map(Vec::as_slice) {
+            Some([x, y]) if x.is_number() && y.is_number() => {
+                out.push([x.as_f64().unwrap(), y.as_f64().unwrap()])
+            }
+            Some(items) => items.iter().for_each(|i| walk(i, out)),
+            None => {}
+        }
+    }
+    let mut out = Vec::new();
+    for f in doc["features"].as_array().unwrap() {
+        walk(&f["geometry"]["coordinates"], &mut out);
+    }
+    out
+}
+
+/// UTM output (`export --crs utm`): GDAL names its CRS EPSG:32632, and
+/// PROJ (through `ogr2ogr`), projecting our WGS84 file into that zone,
+/// finds every coordinate within a millimetre of ours. The file reads back
+/// to the model's map-frame metres.
+#[test]
+fn gdal_reads_our_utm_geojson_where_proj_puts_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let nrg = model();
+    let georef = Georef::new(48.137, 11.575, 30.0, "0").unwrap();
+    let walked = walked_model(&nrg);
+    let utm = nrgdb::format::render_geojson_utm(&walked, &georef);
+    let Some(summary) = geojson_summary(dir.path(), "utm.geojson", &utm) else {
+        return;
+    };
+    assert!(summary.contains("ID[\"EPSG\",32632]"), "{summary}");
+    let wgs = dir.path().join("wgs.geojson");
+    std::fs::write(&wgs, render_geojson_wgs84(&walked, &georef)).unwrap();
+    let projected = dir.path().join("projected.geojson");
+    let out = Command::new("ogr2ogr")
+        .args([
+            "-f",
+            "GeoJSON",
+            "-t_srs",
+            "EPSG:32632",
+            "-lco",
+            "COORDINATE_PRECISION=6",
+        ])
+        .arg(&projected)
+        .arg(&wgs)
+        .output()
+        .expect("ogr2ogr comes with ogrinfo");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let theirs: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(&projected).unwrap()).unwrap();
+    let ours: serde_json::Value = serde_json::from_str(&utm).unwrap();
+    let (a, b) = (coordinates(&ours), coordinates(&theirs));
+    assert_eq!(a.len(), b.len());
+    let worst = a
+        .iter()
+        .zip(&b)
+        .map(|(p, q)| (p[0] - q[0]).hypot(p[1] - q[1]))
+        .fold(0.0, f64::max);
+    eprintln!(
+        "{} coordinates: ours and PROJ's differ by up to {worst} m",
+        a.len()
+    );
+    assert!(worst < 1e-3, "ours and PROJ's differ by up to {worst} m");
+    // Back to map-frame metres.
+    let back = nrgdb::geojson::from_geojson(&utm).unwrap();
+    for (s, t) in nrg.spaces().iter().zip(back.spaces()) {
+        for (p, q) in s.polygon.iter().zip(&t.polygon) {
+            assert!(
+                (p[0] - q[0]).hypot(p[1] - q[1]) < 1e-3,
+                "{p:?} read back as {q:?}"
+            );
+        }
+    }
+}

@@ -176,3 +176,63 @@ async fn the_server_serves_wgs84_for_a_georeferenced_map() {
         .assert_error(400, "frame");
     s.stop().await;
 }
+
+/// `export --crs utm`: the map's GeoJSON in its UTM zone with the CRS
+/// named (checked against PROJ in `gdal_reads`); without a georeference,
+/// or for a format other than GeoJSON, a clear error and no file.
+#[test]
+fn export_in_utm_names_its_zone_and_refuses_what_it_cannot_place() {
+    let dir = tempfile::tempdir().unwrap();
+    demo_db(dir.path());
+    let export = |out: &str| {
+        nrgdb(
+            dir.path(),
+            &[
+                "export", "demo", "--out", out, "--crs", "utm", "--db", "t.sqlite",
+            ],
+        )
+    };
+    let err = export("u.geojson");
+    assert!(!err.status.success());
+    assert!(String::from_utf8_lossy(&err.stderr).contains("has no georeference"));
+    assert!(!dir.path().join("u.geojson").exists());
+    nrgdb_ok(
+        dir.path(),
+        &[
+            "georef",
+            "demo",
+            "--origin",
+            "-33.9,151.2",
+            "--heading",
+            "10",
+            "--db",
+            "t.sqlite",
+        ],
+    );
+    let err = export("u.gml");
+    assert!(!err.status.success());
+    assert!(String::from_utf8_lossy(&err.stderr).contains("--crs is for GeoJSON"));
+    assert!(!dir.path().join("u.gml").exists());
+    assert!(export("u.geojson").status.success());
+    let doc: Value =
+        serde_json::from_slice(&std::fs::read(dir.path().join("u.geojson")).unwrap()).unwrap();
+    // Sydney lies in zone 56 south.
+    assert_eq!(
+        doc["crs"]["properties"]["name"],
+        "urn:ogc:def:crs:EPSG::32756"
+    );
+    // Easting near 500 000 ± 330 km, northing near 10 000 km minus 3 750 km.
+    let first = &doc["features"][0]["properties"]["anchor"];
+    let (e, n) = (first[0].as_f64().unwrap(), first[1].as_f64().unwrap());
+    assert!(
+        (1.6e5..8.4e5).contains(&e) && (6.2e6..6.3e6).contains(&n),
+        "{e} {n}"
+    );
+    // It reads back into the store as map-frame metres.
+    let out = nrgdb(dir.path(), &["convert", "u.geojson", "back.json"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
