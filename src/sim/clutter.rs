@@ -23,8 +23,8 @@ use crate::model::{Point, Ring};
 /// Least distance from a piece of clutter to a door of its room.
 const DOOR_CLEARANCE_M: f64 = 0.8;
 
-/// Least distance between two pieces (an aisle between shelves is set
-/// apart on purpose and may be wider).
+/// Least distance between two pieces (shelves stand an aisle apart,
+/// wider than this).
 const PIECE_GAP_M: f64 = 0.3;
 
 /// Distance the clutter keeps from the room's middle line (the route's
@@ -82,22 +82,21 @@ impl Room<'_> {
         (self.slot.y1 - self.slot.y0) / 2.0 - ROUTE_CLEARANCE_M
     }
 
+    /// The wing frame's `y` at depth `d` from the back wall.
+    fn y(&self, d: f64) -> f64 {
+        let s = self.slot;
+        if s.back_is_high { s.y1 - d } else { s.y0 + d }
+    }
+
     /// The point `(u, d)` in the map frame.
     fn at(&self, u: f64, d: f64) -> Point {
-        let s = self.slot;
-        let y = if s.back_is_high { s.y1 - d } else { s.y0 + d };
-        self.wing.frame.at(u, y)
+        self.wing.frame.at(u, self.y(d))
     }
 
     /// The box `u0..u1` × `d0..d1` as a ring in the map frame.
     fn ring(&self, u0: f64, u1: f64, d0: f64, d1: f64) -> Ring {
-        let s = self.slot;
-        let (y0, y1) = if s.back_is_high {
-            (s.y1 - d1, s.y1 - d0)
-        } else {
-            (s.y0 + d0, s.y0 + d1)
-        };
-        self.wing.frame.rect(u0, y0, u1, y1)
+        let (ya, yb) = (self.y(d0), self.y(d1));
+        self.wing.frame.rect(u0, ya.min(yb), u1, ya.max(yb))
     }
 
     /// Adds the box when it lies in the room's allowed part, clear of the
@@ -141,7 +140,7 @@ fn shelves(room: &mut Room<'_>, rng: &mut SplitMix64) -> Vec<Point> {
     let mut u = room.slot.x0 + rng.range(0.1, 0.5);
     let mut placed: Vec<f64> = Vec::new();
     while u + depth <= room.slot.x1 - 0.1 {
-        if room.try_place(u, u + depth, d0, d1, aisle.min(PIECE_GAP_M)) {
+        if room.try_place(u, u + depth, d0, d1, PIECE_GAP_M) {
             placed.push(u);
         }
         u += depth + aisle;
