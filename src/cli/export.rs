@@ -66,6 +66,11 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         .load(&map, rev)
         .into_diagnostic()
         .wrap_err_with(|| format!("exporting {}", args.map))?;
+    if args.crs.is_some() && args.format != ExportFormat::Model {
+        miette::bail!(
+            "--crs is for a model's GeoJSON; Nav2 graphs are in map-frame metres and OpenStreetMap files in WGS84"
+        );
+    }
     if args.format == ExportFormat::Osm {
         let Some(georef) = store.georef(&map).into_diagnostic()? else {
             miette::bail!(

@@ -209,6 +209,23 @@ fn export_in_utm_names_its_zone_and_refuses_what_it_cannot_place() {
             "t.sqlite",
         ],
     );
+    let err = nrgdb(
+        dir.path(),
+        &[
+            "export",
+            "demo",
+            "--out",
+            "n.geojson",
+            "--format",
+            "nav2",
+            "--crs",
+            "utm",
+            "--db",
+            "t.sqlite",
+        ],
+    );
+    assert!(String::from_utf8_lossy(&err.stderr).contains("--crs is for a model's GeoJSON"));
+    assert!(!err.status.success() && !dir.path().join("n.geojson").exists());
     let err = export("u.gml");
     assert!(!err.status.success());
     assert!(String::from_utf8_lossy(&err.stderr).contains("--crs is for GeoJSON"));
