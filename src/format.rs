@@ -13,6 +13,7 @@
 //! Uses indoorgml, geojson and route; sits above them.
 
 mod detect;
+mod frame;
 pub mod nav2;
 pub mod osm;
 
@@ -20,6 +21,7 @@ use std::io::Read;
 use std::path::{Path, PathBuf};
 
 pub use detect::{Declared, FileKind, ImageFormat, RecordingFormat, detect};
+pub use frame::{Frame, FrameError, frame_for, render_in};
 
 use crate::indoorgml::{self, Document, IndoorGmlError, IndoorGmlVersion, WeightFixes};
 use crate::model::Nrg;
@@ -233,11 +235,39 @@ pub fn detect_model(declared: &Declared<'_>, bytes: &[u8]) -> Result<ModelFormat
 
 /// A model from the bytes of a file in `format` (`path` names it in
 /// errors), with the IndoorGML Transition weights that had to be fixed.
+/// A file in a CRS is read into the frame it carries or one made at its
+/// corner (see [`model_from_bytes_in`]).
 pub fn model_from_bytes(
     bytes: &[u8],
     format: ModelFormat,
     path: &Path,
 ) -> Result<(Nrg, WeightFixes), FormatError> {
+    let read = model_from_bytes_in(bytes, format, path, None)?;
+    Ok((read.nrg, read.weights_fixed))
+}
+
+/// A model read from a file by [`model_from_bytes_in`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModelRead {
+    /// The model, in map-frame metres.
+    pub nrg: Nrg,
+    /// IndoorGML Transitions whose missing or 0 weight was fixed.
+    pub weights_fixed: WeightFixes,
+    /// The georeference that placed the file's positions, when the file
+    /// was in a CRS (GeoJSON in WGS84 or UTM, IndoorGML with a UTM
+    /// `srsName`; see [`crate::model::NamedCrs::frame`]).
+    pub georef: Option<crate::model::Georef>,
+}
+
+/// [`model_from_bytes`] into the frame of the map the model goes to: a
+/// file in a CRS is read into `stored` (the map's georeference) when
+/// given, so every revision shares one frame.
+pub fn model_from_bytes_in(
+    bytes: &[u8],
+    format: ModelFormat,
+    path: &Path,
+    stored: Option<&crate::model::Georef>,
+) -> Result<ModelRead, FormatError> {
     let text = utf8_text(bytes, path, FileKind::Model(format))?;
     let gml = |source| FormatError::IndoorGml {
         path: path.to_path_buf(),
@@ -247,20 +277,31 @@ pub fn model_from_bytes(
         path: path.to_path_buf(),
         message,
     };
-    let nrg = match format {
+    let (nrg, georef) = match format {
         ModelFormat::IndoorGml => {
-            let doc = indoorgml::read_str(text).map_err(gml)?;
-            return from_document(&doc).map_err(gml);
+            let mut doc = indoorgml::read_str(text).map_err(gml)?;
+            let georef = indoorgml::placed::into_map_frame(&mut doc, stored).map_err(gml)?;
+            let (nrg, weights_fixed) = from_document(&doc).map_err(gml)?;
+            return Ok(ModelRead {
+                nrg,
+                weights_fixed,
+                georef,
+            });
         }
-        ModelFormat::Json => Nrg::from_json(text).map_err(|e| json(e.to_string()))?,
+        ModelFormat::Json => (Nrg::from_json(text).map_err(|e| json(e.to_string()))?, None),
         ModelFormat::GeoJson => {
-            crate::geojson::from_geojson(text).map_err(|e| json(e.to_string()))?
+            crate::geojson::from_geojson_in(text, stored).map_err(|e| json(e.to_string()))?
         }
-        ModelFormat::IndoorJson => {
-            indoorgml::json2::read_str(text).map_err(|e| json(format!("IndoorJSON2: {e}")))?
-        }
+        ModelFormat::IndoorJson => (
+            indoorgml::json2::read_str(text).map_err(|e| json(format!("IndoorJSON2: {e}")))?,
+            None,
+        ),
     };
-    Ok((nrg, WeightFixes::default()))
+    Ok(ModelRead {
+        nrg,
+        weights_fixed: WeightFixes::default(),
+        georef,
+    })
 }
 
 /// An IndoorGML document as a model, Transitions with a missing or 0
@@ -326,24 +367,6 @@ pub fn render_geojson_wgs84(walked: &WalkedModel, georef: &crate::model::Georef)
 pub fn render_geojson_utm(walked: &WalkedModel, georef: &crate::model::Georef) -> String {
     let doc = crate::geojson::to_geojson_with_paths(&walked.nrg, &walked.paths);
     serde_json::to_string_pretty(&crate::geojson::to_utm(doc, georef)).unwrap_or_default() + "\n"
-}
-
-/// Writes [`render_geojson_wgs84`] of `nrg` to `path` atomically.
-pub fn write_geojson_wgs84(
-    nrg: &Nrg,
-    georef: &crate::model::Georef,
-    path: &Path,
-) -> Result<(), FormatError> {
-    write_text(path, &render_geojson_wgs84(&walked_model(nrg), georef))
-}
-
-/// Writes [`render_geojson_utm`] of `nrg` to `path` atomically.
-pub fn write_geojson_utm(
-    nrg: &Nrg,
-    georef: &crate::model::Georef,
-    path: &Path,
-) -> Result<(), FormatError> {
-    write_text(path, &render_geojson_utm(&walked_model(nrg), georef))
 }
 
 fn write_text(path: &Path, text: &str) -> Result<(), FormatError> {

@@ -17,7 +17,8 @@
 use serde_json::{Map, Value, json};
 
 use crate::model::{
-    Connection, ConnectionPaths, Georef, Nrg, Point, Ring, Space, SpaceId, UtmZone, doorway,
+    Connection, ConnectionPaths, Georef, NamedCrs, Nrg, Point, Ring, Space, SpaceId, UtmZone,
+    doorway, lowest_corner,
 };
 
 /// Why a GeoJSON document is not an nrgdb model.
@@ -150,9 +151,9 @@ pub fn to_utm(mut doc: Value, georef: &Georef) -> Value {
     doc
 }
 
-/// The UTM zone a `crs` member names, None for WGS84 (CRS84, EPSG:4326 or
-/// no member), or an error naming a CRS this reader cannot place.
-fn utm_crs(doc: &Value) -> Result<Option<UtmZone>, GeoJsonError> {
+/// The CRS a `crs` member names (None without one), or an error naming a
+/// CRS this reader cannot place.
+fn named_crs(doc: &Value) -> Result<Option<NamedCrs>, GeoJsonError> {
     let Some(crs) = doc.get("crs") else {
         return Ok(None);
     };
@@ -160,15 +161,8 @@ fn utm_crs(doc: &Value) -> Result<Option<UtmZone>, GeoJsonError> {
         .pointer("/properties/name")
         .and_then(Value::as_str)
         .unwrap_or("");
-    let code = name
-        .rsplit([':', '/'])
-        .next()
-        .and_then(|c| c.parse::<u32>().ok());
-    if name.contains("CRS84") || code == Some(4326) {
-        return Ok(None);
-    }
-    match code.and_then(UtmZone::from_epsg) {
-        Some(zone) => Ok(Some(zone)),
+    match NamedCrs::parse(name) {
+        Some(c) => Ok(Some(c)),
         None => Err(GeoJsonError::Feature {
             index: 0,
             message: format!(
@@ -212,31 +206,60 @@ fn map_positions(doc: &mut Value, f: &dyn Fn(Point) -> Point) {
 }
 
 /// Reads a FeatureCollection written by [`to_geojson`] (or in WGS84 by
-/// [`to_wgs84`]: its positions are taken back to map-frame metres).
+/// [`to_wgs84`], or in UTM by [`to_utm`]: its positions are taken back to
+/// map-frame metres). See [`from_geojson_in`] for files in a CRS.
 pub fn from_geojson(text: &str) -> Result<Nrg, GeoJsonError> {
+    from_geojson_in(text, None).map(|(nrg, _)| nrg)
+}
+
+/// Reads a FeatureCollection as [`from_geojson`] does, into the frame of
+/// the map it goes to, and says which georeference placed it.
+///
+/// A file in a CRS (a `crs` member naming WGS84 or a UTM zone, or the
+/// [`GEOREF_MEMBER`] that [`to_wgs84`] writes) is read into the frame of
+/// `stored` (the map's georeference, so that revisions share one frame),
+/// else of the georeference the file carries, else of one made at the
+/// file's lowest corner with +y along the CRS's north (see
+/// [`NamedCrs::frame`]); that georeference is returned. A file without a
+/// CRS is map-frame metres and returns None.
+pub fn from_geojson_in(
+    text: &str,
+    stored: Option<&Georef>,
+) -> Result<(Nrg, Option<Georef>), GeoJsonError> {
     let mut value: Value = serde_json::from_str(text)?;
-    if let Some(g) = value.get(GEOREF_MEMBER) {
-        let g: Georef = serde_json::from_value(g.clone()).map_err(|e| GeoJsonError::Feature {
-            index: 0,
-            message: format!("{GEOREF_MEMBER}: {e}"),
-        })?;
-        let g = Georef::new(g.lat, g.lon, g.heading_deg, &g.level).map_err(|e| {
-            GeoJsonError::Feature {
-                index: 0,
-                message: format!("{GEOREF_MEMBER}: {e}"),
-            }
-        })?;
-        match utm_crs(&value)? {
-            Some(zone) => map_positions(&mut value, &|p| g.to_map(zone.inverse(p))),
-            None => map_positions(&mut value, &|p| g.to_map(p)),
+    let at_member = |e: String| GeoJsonError::Feature {
+        index: 0,
+        message: format!("{GEOREF_MEMBER}: {e}"),
+    };
+    let carried = match value.get(GEOREF_MEMBER) {
+        Some(g) => {
+            let g: Georef =
+                serde_json::from_value(g.clone()).map_err(|e| at_member(e.to_string()))?;
+            Some(
+                Georef::new(g.lat, g.lon, g.heading_deg, &g.level)
+                    .map_err(|e| at_member(e.to_string()))?,
+            )
         }
-    } else if utm_crs(&value)?.is_some() {
-        return Err(GeoJsonError::Feature {
-            index: 0,
-            message: format!(
-                "UTM coordinates without the member {GEOREF_MEMBER}: nothing says where the map frame lies"
-            ),
+        None => None,
+    };
+    // `to_wgs84` writes no `crs` member (RFC 7946 has none).
+    let crs = named_crs(&value)?.or(carried.as_ref().map(|_| NamedCrs::Wgs84));
+    let mut placed = None;
+    if let Some(crs) = crs {
+        let low = std::cell::Cell::new([f64::INFINITY; 2]);
+        map_positions(&mut value, &|p| {
+            low.set(lowest_corner([low.get(), p]));
+            p
         });
+        let corner = lowest_corner([low.get()]);
+        let g = crs
+            .frame(stored, carried, corner, "0")
+            .map_err(|e| GeoJsonError::Feature {
+                index: 0,
+                message: format!("placing the file's positions: {e}"),
+            })?;
+        map_positions(&mut value, &|p| g.to_map(crs.to_lon_lat(p)));
+        placed = Some(g);
     }
     let features =
         value
@@ -268,7 +291,7 @@ pub fn from_geojson(text: &str) -> Result<Nrg, GeoJsonError> {
             }
         }
     }
-    Ok(Nrg::new(spaces, connections)?)
+    Ok((Nrg::new(spaces, connections)?, placed))
 }
 
 fn space(f: &Value, props: &Map<String, Value>) -> Result<Space, String> {

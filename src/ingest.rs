@@ -51,7 +51,7 @@ pub use recording::{RecordingImport, RecordingImportError, StoredMap, import_rec
 pub use valid::{Validated, findings, validate};
 
 use crate::grid::OccupancyGrid;
-use crate::model::Nrg;
+use crate::model::{Georef, Nrg};
 use crate::route::walked_model;
 use crate::store::{CorrectionResults, CorrectionState, ImportMeta, Imported, Store, StoreError};
 
@@ -68,11 +68,44 @@ pub struct Ingested {
     pub corrections_applied: Vec<u32>,
     /// Those that no longer applied: number, statement and reason.
     pub corrections_failed: Vec<(u32, String, String)>,
+    /// The georeference stored with the map because the model came in a
+    /// CRS and the map had none ([`ingest_prepared`]).
+    pub georef_set: Option<Georef>,
 }
 
 /// How many times [`ingest`] reads the corrections again when another
 /// writer changed them meanwhile.
 const MAX_ATTEMPTS: usize = 3;
+
+/// The georeference model files for `map` are read into
+/// ([`IngestOptions::frame`]): the map's, None for a map without one or
+/// not made yet.
+pub fn map_frame(store: &Store, map: &str) -> Result<Option<Georef>, StoreError> {
+    match store.georef(map) {
+        Err(StoreError::NoSuchMap { .. }) => Ok(None),
+        other => other,
+    }
+}
+
+/// [`ingest`] of a model [`read`] (read with [`map_frame`] as its frame),
+/// with its grid. A model that came in a CRS (GeoJSON in WGS84 or UTM,
+/// IndoorGML with a UTM `srsName`) leaves its georeference with the map
+/// when the map has none, so exports place it again.
+pub fn ingest_prepared(
+    store: &mut Store,
+    map: &str,
+    prepared: &Prepared,
+    meta: ImportMeta,
+) -> Result<Ingested, StoreError> {
+    let mut done = ingest(store, map, &prepared.nrg, meta, prepared.grid.as_ref())?;
+    if let Some(g) = &prepared.georef
+        && store.georef(map)?.is_none()
+    {
+        store.set_georef(map, Some(g))?;
+        done.georef_set = Some(g.clone());
+    }
+    Ok(done)
+}
 
 /// Stores `nrg`, with walked connection lengths, as the next revision of
 /// `map` (see [`Store::import_with_grid`]), keeping `grid` when given.
@@ -126,6 +159,7 @@ pub fn ingest(
                             r.err().map(|e| (id, statement, e))
                         })
                         .collect(),
+                    georef_set: None,
                 });
             }
             Err(StoreError::Stale { .. }) if attempt < MAX_ATTEMPTS => continue,

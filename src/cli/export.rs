@@ -8,6 +8,7 @@ use miette::{IntoDiagnostic, WrapErr};
 
 use super::db::{DbArg, parse_map_rev};
 use super::write_model_as;
+use nrgdb::format::Frame;
 
 /// Write a revision of a map to a model file (the latest unless NAME@REV).
 #[derive(Debug, clap::Args)]
@@ -26,12 +27,14 @@ pub struct Args {
     /// Simple Indoor Tagging for JOSM (needs a georeference).
     #[arg(long, value_enum, default_value_t = ExportFormat::Model)]
     pub format: ExportFormat,
-    /// GeoJSON of a georeferenced map (`nrgdb georef`) in map-frame metres instead of WGS84.
+    /// A georeferenced map's GeoJSON or IndoorGML (`nrgdb georef`) in map-frame metres instead
+    /// of WGS84 or UTM.
     #[arg(long, conflicts_with = "crs")]
     pub local_frame: bool,
-    /// The CRS of a georeferenced map's GeoJSON: `wgs84` (RFC 7946, the default) or `utm`
-    /// (metres in the WGS84 / UTM zone of the map's origin, EPSG:326zz or 327zz, named in the
-    /// file's `crs` member for GDAL and QGIS).
+    /// The CRS of a georeferenced map's file: `wgs84` (RFC 7946; GeoJSON's default) or `utm`
+    /// (metres in the WGS84 / UTM zone of the map's origin, EPSG:326zz or 327zz, named in
+    /// GeoJSON's `crs` member for GDAL and QGIS and as IndoorGML's `srsName`; IndoorGML's
+    /// default).
     #[arg(long, value_enum)]
     pub crs: Option<GeoCrs>,
     #[command(flatten)]
@@ -99,27 +102,36 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
             .wrap_err_with(|| format!("writing {}", args.out.display()))?;
         return Ok(ExitCode::SUCCESS);
     }
-    let geojson =
-        nrgdb::format::ModelFormat::of(&args.out).ok() == Some(nrgdb::format::ModelFormat::GeoJson);
-    if args.crs.is_some() && !geojson {
-        miette::bail!("--crs is for GeoJSON output (.geojson)");
-    }
-    if geojson && !args.local_frame {
+    let asked = match (args.local_frame, args.crs) {
+        (true, _) => Some(Frame::Local),
+        (false, Some(GeoCrs::Wgs84)) => Some(Frame::Wgs84),
+        (false, Some(GeoCrs::Utm)) => Some(Frame::Utm),
+        (false, None) => None,
+    };
+    if args.out != std::path::Path::new("-") {
+        let format = nrgdb::format::ModelFormat::of(&args.out).into_diagnostic()?;
         let georef = store.georef(&map).into_diagnostic()?;
-        match (georef, args.crs) {
-            (Some(g), Some(GeoCrs::Utm)) => {
-                nrgdb::format::write_geojson_utm(&nrg, &g, &args.out).into_diagnostic()?;
-                return Ok(ExitCode::SUCCESS);
-            }
-            (Some(g), _) => {
-                nrgdb::format::write_geojson_wgs84(&nrg, &g, &args.out).into_diagnostic()?;
-                return Ok(ExitCode::SUCCESS);
-            }
-            (None, Some(_)) => miette::bail!(
-                "map '{map}' has no georeference, so no --crs: set one with `nrgdb georef {map} --origin LAT,LON --heading DEG`"
-            ),
-            (None, None) => {}
+        let frame = nrgdb::format::frame_for(format, asked, georef.is_some())
+            .into_diagnostic()
+            .wrap_err_with(|| format!("exporting {} to {}", args.map, args.out.display()))?;
+        if frame != Frame::Local {
+            let walked = nrgdb::route::walked_model(&nrg);
+            let text = nrgdb::format::render_in(
+                &walked,
+                format,
+                args.indoorgml_version,
+                frame,
+                georef.as_ref(),
+            );
+            nrgdb::atomic::write(&args.out, text.as_bytes())
+                .into_diagnostic()
+                .wrap_err_with(|| format!("writing {}", args.out.display()))?;
+            return Ok(ExitCode::SUCCESS);
         }
+    } else if asked.is_some_and(|f| f != Frame::Local) {
+        miette::bail!(
+            "`--out -` writes model JSON in map-frame metres; --crs needs a .geojson or .gml file"
+        );
     }
     write_model_as(&args.out, &nrg, args.indoorgml_version, out)?;
     Ok(ExitCode::SUCCESS)

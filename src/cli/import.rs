@@ -7,7 +7,7 @@ use std::process::ExitCode;
 use miette::{IntoDiagnostic, WrapErr};
 
 use super::db::{DbArg, author};
-use super::{load_model, report_fixes};
+use super::{load_model_into, report_fixes};
 
 /// Store a model as the next revision of a map (the map is created on its
 /// first import). Spaces continuing spaces of the previous revision keep
@@ -66,15 +66,24 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     } else {
         indicatif::ProgressBar::hidden()
     };
-    let model = load_model(&args.file, args.allow_invalid)?;
+    let mut store = args.db.open()?;
+    let frame = nrgdb::ingest::map_frame(&store, &args.map).into_diagnostic()?;
+    let model = load_model_into(&args.file, args.allow_invalid, frame)?;
     spinner.set_message(format!("storing {} spaces", model.nrg.spaces().len()));
     let meta = model.meta(args.message, author(args.author));
-    let mut store = args.db.open()?;
-    let done = nrgdb::ingest::ingest(&mut store, &args.map, &model.nrg, meta, model.grid.as_ref())
+    let done = nrgdb::ingest::ingest_prepared(&mut store, &args.map, &model, meta)
         .into_diagnostic()
         .wrap_err_with(|| format!("importing {} into map '{}'", args.file.display(), args.map))?;
     spinner.finish_and_clear();
     report_fixes(&model.weights_fixed, out)?;
+    if let Some(g) = &done.georef_set {
+        writeln!(
+            out,
+            "georeferenced from the file's CRS: origin {:.7}, {:.7}, heading {:.3}° (change it with `nrgdb georef {}`)",
+            g.lat, g.lon, g.heading_deg, args.map
+        )
+        .into_diagnostic()?;
+    }
     let r = &done.imported.revision;
     if done.imported.unchanged {
         writeln!(

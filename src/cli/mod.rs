@@ -34,7 +34,7 @@ pub mod repl;
 mod serve;
 mod simulate;
 
-pub use model_file::{load_model, report_fixes, report_repairs, write_model_as};
+pub use model_file::{load_model, load_model_into, report_fixes, report_repairs, write_model_as};
 
 /// The command line.
 #[derive(Debug, Parser)]

@@ -18,8 +18,19 @@ use nrgdb::model::{Nrg, Repair};
 /// A model that stays geometrically invalid after repair is refused
 /// unless `allow_invalid`; repairs are said on stderr.
 pub fn load_model(path: &Path, allow_invalid: bool) -> miette::Result<Prepared> {
+    load_model_into(path, allow_invalid, None)
+}
+
+/// [`load_model`] into the frame of a map's georeference (a model file
+/// in a CRS is read into it; see `IngestOptions::frame`).
+pub fn load_model_into(
+    path: &Path,
+    allow_invalid: bool,
+    frame: Option<nrgdb::model::Georef>,
+) -> miette::Result<Prepared> {
     let options = IngestOptions {
         allow_invalid,
+        frame,
         ..IngestOptions::default()
     };
     // The errors name the file (and the part: its image, a line).

@@ -98,6 +98,14 @@ pub enum IndoorGmlError {
         /// The dimension.
         dim: usize,
     },
+    /// An `srsName` whose positions cannot be placed.
+    #[error("srsName {name}: {why}")]
+    Crs {
+        /// The `srsName`.
+        name: String,
+        /// Why.
+        why: String,
+    },
     /// The document cannot be turned into an NRG.
     #[error("{0}")]
     Model(String),

@@ -20,6 +20,7 @@ mod dom;
 mod error;
 mod gml_read;
 pub mod json2;
+pub mod placed;
 mod read;
 mod version;
 mod write;

@@ -9,7 +9,7 @@ use crate::extract::{ExtractParams, extract};
 use crate::format::{self, Declared, FileKind, ModelFormat};
 use crate::grid::{LoadOptions, MapYaml, OccupancyGrid, load_map_bytes};
 use crate::indoorgml::{DEFAULT_MAX_BYTES, Finding, WeightFixes};
-use crate::model::{Nrg, Repair};
+use crate::model::{Georef, Nrg, Repair};
 use crate::store::{ImportMeta, sha256_hex_of};
 
 use super::{IngestError, validate};
@@ -49,6 +49,10 @@ pub struct IngestOptions {
     /// Keep a model that stays geometrically invalid after repair
     /// instead of refusing it (see [`validate`]; default false).
     pub allow_invalid: bool,
+    /// The georeference of the map the model goes to, when it has one: a
+    /// model file in a CRS is read into its frame (default none: the
+    /// frame the file carries, or one made at its corner).
+    pub frame: Option<Georef>,
 }
 
 impl Default for IngestOptions {
@@ -58,6 +62,7 @@ impl Default for IngestOptions {
             params: ExtractParams::default(),
             max_bytes: DEFAULT_MAX_BYTES,
             allow_invalid: false,
+            frame: None,
         }
     }
 }
@@ -78,6 +83,10 @@ pub struct Prepared {
     pub repairs: Vec<Repair>,
     /// Check findings kept because `allow_invalid` was set.
     pub kept: Vec<Finding>,
+    /// The georeference that placed a model file in a CRS (see
+    /// [`format::ModelRead::georef`]); stored with the map when it has
+    /// none ([`crate::ingest::ingest_prepared`]).
+    pub georef: Option<Georef>,
     /// The source's file names (`floor.yaml + floor.pgm` for a map).
     pub source_name: String,
     /// SHA-256 of the source's bytes (a map's YAML, then its image).
@@ -245,6 +254,7 @@ pub(crate) fn from_grid(
         weights_fixed: WeightFixes::default(),
         repairs: valid.repairs,
         kept: valid.kept,
+        georef: None,
         source_name,
         source_sha256,
     })
@@ -255,16 +265,21 @@ fn read_model(
     format: ModelFormat,
     options: &IngestOptions,
 ) -> Result<Prepared, IngestError> {
-    let (nrg, weights_fixed) =
-        format::model_from_bytes(file.bytes, format, Path::new(file.label()))?;
-    let valid = validate(nrg, file.label(), options.allow_invalid)?;
+    let read = format::model_from_bytes_in(
+        file.bytes,
+        format,
+        Path::new(file.label()),
+        options.frame.as_ref(),
+    )?;
+    let valid = validate(read.nrg, file.label(), options.allow_invalid)?;
     Ok(Prepared {
         nrg: valid.nrg,
         grid: None,
         params: None,
-        weights_fixed,
+        weights_fixed: read.weights_fixed,
         repairs: valid.repairs,
         kept: valid.kept,
+        georef: read.georef,
         source_name: file_name(file.label()).to_string(),
         source_sha256: sha256_hex_of(&[file.bytes]),
     })

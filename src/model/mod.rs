@@ -9,6 +9,7 @@
 //! not know about XML, SQL, HTTP or the terminal.
 
 mod connection;
+mod crs;
 mod doorway;
 mod error;
 mod geometry;
@@ -22,6 +23,7 @@ mod utm;
 pub(crate) mod validity;
 
 pub use connection::{Connection, ConnectionKind, ConnectionPaths};
+pub use crs::{NamedCrs, lowest_corner};
 pub use doorway::{Doorway, convex_hull, polygon_doorway};
 pub use error::ModelError;
 pub use geometry::{

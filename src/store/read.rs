@@ -47,15 +47,15 @@ impl Store {
         self.engine.locate(map, rev, x, y)
     }
 
-    /// The occupancy grid revision `rev` of `map` was imported from (the
-    /// latest revision when `None`), or `None` when it came from a model
-    /// file.
     /// The georeference of `map` (WGS84 origin, heading, level), if it
     /// has one: the same for every revision.
     pub fn georef(&self, map: &str) -> Result<Option<Georef>, StoreError> {
         self.engine.georef(map)
     }
 
+    /// The occupancy grid revision `rev` of `map` was imported from (the
+    /// latest revision when `None`), or `None` when it came from a model
+    /// file.
     pub fn grid(&self, map: &str, rev: Option<u32>) -> Result<Option<OccupancyGrid>, StoreError> {
         let Some(encoded) = self.engine.grid(map, rev)? else {
             return Ok(None);

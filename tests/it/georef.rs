@@ -171,7 +171,28 @@ async fn the_server_serves_wgs84_for_a_georeferenced_map() {
         .await
         .json();
     assert_eq!(again, local);
-    s.get("/maps/building/revisions/latest/geojson?frame=utm")
+    let utm = s
+        .get("/maps/building/revisions/latest/geojson?frame=utm")
+        .await
+        .json();
+    assert_eq!(
+        utm["crs"]["properties"]["name"],
+        "urn:ogc:def:crs:EPSG::32756"
+    );
+    s.get("/maps/building/revisions/latest/geojson?frame=mercator")
+        .await
+        .assert_error(400, "frame");
+    // IndoorGML of a georeferenced map is in its UTM zone, named.
+    let gml = s.get("/maps/building/revisions/latest/indoorgml").await;
+    assert!(
+        gml.text()
+            .contains(r#"srsName="urn:ogc:def:crs:EPSG::32756""#)
+    );
+    let gml = s
+        .get("/maps/building/revisions/latest/indoorgml?frame=local")
+        .await;
+    assert!(!gml.text().contains("srsName"));
+    s.get("/maps/building/revisions/latest/indoorgml?frame=wgs84")
         .await
         .assert_error(400, "frame");
     s.stop().await;
@@ -226,10 +247,19 @@ fn export_in_utm_names_its_zone_and_refuses_what_it_cannot_place() {
     );
     assert!(String::from_utf8_lossy(&err.stderr).contains("--crs is for a model's GeoJSON"));
     assert!(!err.status.success() && !dir.path().join("n.geojson").exists());
-    let err = export("u.gml");
+    let err = nrgdb(
+        dir.path(),
+        &[
+            "export", "demo", "--out", "w.gml", "--crs", "wgs84", "--db", "t.sqlite",
+        ],
+    );
     assert!(!err.status.success());
-    assert!(String::from_utf8_lossy(&err.stderr).contains("--crs is for GeoJSON"));
-    assert!(!dir.path().join("u.gml").exists());
+    let said = String::from_utf8_lossy(&err.stderr);
+    assert!(
+        said.contains("IndoorGML is written in local or utm"),
+        "{said}"
+    );
+    assert!(!dir.path().join("w.gml").exists());
     assert!(export("u.geojson").status.success());
     let doc: Value =
         serde_json::from_slice(&std::fs::read(dir.path().join("u.geojson")).unwrap()).unwrap();

@@ -27,6 +27,7 @@ mod extract_tiling;
 mod extract_valid_props;
 mod gdal_reads;
 mod georef;
+mod georef_import;
 mod ingest;
 mod ingest_gate;
 mod nav2;

@@ -7,6 +7,8 @@ use axum::http::{HeaderValue, Uri, header};
 use axum::response::{IntoResponse, Response};
 use serde_json::{Value, json};
 
+use crate::format::{Frame, ModelFormat, frame_for, render_in};
+use crate::indoorgml::IndoorGmlVersion;
 use crate::server::endpoint::{ParamDoc, q};
 use crate::server::error::ApiError;
 use crate::server::params::{Params, parse_rev};
@@ -83,30 +85,28 @@ fn with_caching(mut response: Response, numbered: bool) -> Response {
     response
 }
 
-/// `GET /maps/{map}/revisions/{rev}/indoorgml`.
+/// Parameters of the IndoorGML endpoint.
+pub const INDOORGML_PARAMS: [ParamDoc; 1] = [q(
+    "frame",
+    "string",
+    false,
+    "'utm' (default for a georeferenced map: metres in the WGS84 / UTM zone of its origin, the zone as srsName) or 'local' (map-frame metres)",
+)];
+
+/// `GET /maps/{map}/revisions/{rev}/indoorgml`: in the UTM zone of a
+/// georeferenced map (unless `frame=local`), else map-frame metres.
 pub async fn indoorgml(
     State(state): State<AppState>,
     Path((map, rev)): Path<(String, String)>,
     uri: Uri,
 ) -> Result<Response, ApiError> {
-    Params::parse(&uri, &[])?;
-    let rev = parse_rev("rev", &rev)?;
-    let xml = state
-        .blocking(move |ctx| {
-            let r = ctx.revision(&map, rev)?;
-            let walked = crate::route::WalkedModel::on(&r.nav);
-            Ok(crate::format::render(
-                &walked,
-                crate::format::ModelFormat::IndoorGml,
-            ))
-        })
-        .await?;
+    let (xml, fixed) = placed_export(&state, map, rev, &uri, ModelFormat::IndoorGml).await?;
     let response = (
         [(header::CONTENT_TYPE, "application/gml+xml; charset=utf-8")],
         xml,
     )
         .into_response();
-    Ok(with_caching(response, rev.is_some()))
+    Ok(with_caching(response, fixed))
 }
 
 /// Parameters of the GeoJSON endpoint.
@@ -114,45 +114,58 @@ pub const GEOJSON_PARAMS: [ParamDoc; 1] = [q(
     "frame",
     "string",
     false,
-    "'wgs84' (default for a georeferenced map: RFC 7946 longitude and latitude) or 'local' (map-frame metres)",
+    "'wgs84' (default for a georeferenced map: RFC 7946 longitude and latitude), 'utm' (metres in the WGS84 / UTM zone of its origin, named in a crs member) or 'local' (map-frame metres)",
 )];
 
 /// `GET /maps/{map}/revisions/{rev}/geojson`: WGS84 when the map is
-/// georeferenced (unless `frame=local`), else map-frame metres.
+/// georeferenced (unless `frame=utm` or `frame=local`), else map-frame
+/// metres.
 pub async fn geojson(
     State(state): State<AppState>,
     Path((map, rev)): Path<(String, String)>,
     uri: Uri,
 ) -> Result<Response, ApiError> {
-    let params = Params::parse(&uri, &["frame"])?;
-    let local = match params.get("frame") {
-        None | Some("wgs84") => false,
-        Some("local") => true,
-        Some(other) => {
-            return Err(ApiError::bad(
-                "frame",
-                format!("'{other}': use 'wgs84' or 'local'"),
-            ));
-        }
+    let (body, fixed) = placed_export(&state, map, rev, &uri, ModelFormat::GeoJson).await?;
+    let response = ([(header::CONTENT_TYPE, "application/geo+json")], body).into_response();
+    Ok(with_caching(response, fixed))
+}
+
+/// A revision as `format` in the frame the `frame` parameter asks for
+/// (see [`crate::format::frame_for`]), and whether the answer never
+/// changes (a numbered revision in map-frame metres: a georeference can
+/// be changed later).
+async fn placed_export(
+    state: &AppState,
+    map: String,
+    rev: String,
+    uri: &Uri,
+    format: ModelFormat,
+) -> Result<(String, bool), ApiError> {
+    let params = Params::parse(uri, &["frame"])?;
+    let asked = match params.get("frame") {
+        None => None,
+        Some(name) => Some(Frame::parse(name).ok_or_else(|| {
+            ApiError::bad("frame", format!("'{name}': use 'local', 'wgs84' or 'utm'"))
+        })?),
     };
     let rev = parse_rev("rev", &rev)?;
-    let body = state
+    state
         .blocking(move |ctx| {
-            let georef = if local {
-                None
-            } else {
-                ctx.store().georef(&map)?
-            };
+            let georef = ctx.store().georef(&map)?;
+            let frame = frame_for(format, asked, georef.is_some())
+                .map_err(|e| ApiError::bad("frame", e.to_string()))?;
             let r = ctx.revision(&map, rev)?;
             let walked = crate::route::WalkedModel::on(&r.nav);
-            Ok(match georef {
-                Some(g) => crate::format::render_geojson_wgs84(&walked, &g),
-                None => crate::format::render(&walked, crate::format::ModelFormat::GeoJson),
-            })
+            let text = render_in(
+                &walked,
+                format,
+                IndoorGmlVersion::default(),
+                frame,
+                georef.as_ref(),
+            );
+            Ok((text, rev.is_some() && frame == Frame::Local))
         })
-        .await?;
-    let response = ([(header::CONTENT_TYPE, "application/geo+json")], body).into_response();
-    Ok(with_caching(response, rev.is_some()))
+        .await
 }
 
 /// `GET /maps/{map}/revisions/{rev}/nav2`: the revision as a Nav2 Route

@@ -37,7 +37,7 @@ pub fn endpoints() -> Vec<Endpoint> {
         ep(M::GET, "/maps/{map}/revisions", "The revisions of a map, oldest first", &[], get(maps::list_revisions)),
         Endpoint { timed: false, ..ep(M::POST, "/maps/{map}/revisions", "Upload a revision: multipart (map YAML + image, extracted; or an IndoorGML/JSON/GeoJSON file) or a raw IndoorGML/JSON body; needs the bearer token", &upload::PARAMS, post(upload::upload)) },
         ep(M::GET, "/maps/{map}/revisions/{rev}", "One revision's record (message, author, counts of changes)", &[], get(maps::revision)),
-        ep(M::GET, "/maps/{map}/revisions/{rev}/indoorgml", "A revision as IndoorGML 1.0.3", &[], get(maps::indoorgml)),
+        ep(M::GET, "/maps/{map}/revisions/{rev}/indoorgml", "A revision as IndoorGML 1.0.3 (in its UTM zone, named as srsName, when the map is georeferenced)", &maps::INDOORGML_PARAMS, get(maps::indoorgml)),
         ep(M::GET, "/maps/{map}/revisions/{rev}/geojson", "A revision as a GeoJSON FeatureCollection (WGS84 when the map is georeferenced)", &maps::GEOJSON_PARAMS, get(maps::geojson)),
         ep(M::GET, "/maps/{map}/revisions/{rev}/nav2", "A revision as a Nav2 Route Server graph (GeoJSON, directed edges along the walked paths)", &[], get(maps::nav2)),
         ep(M::GET, "/maps/{map}/spaces", "Spaces of a revision, filtered by kind and name", &spaces::LIST_PARAMS, get(spaces::list_spaces)),

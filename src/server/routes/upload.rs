@@ -123,15 +123,13 @@ pub async fn upload(
                 }
                 None => vec![body_file(&content_type, &bytes)?],
             };
-            let prepared = read(&files, &IngestOptions::default()).map_err(bad)?;
+            let options = IngestOptions {
+                frame: crate::ingest::map_frame(ctx.store(), &map)?,
+                ..IngestOptions::default()
+            };
+            let prepared = read(&files, &options).map_err(bad)?;
             let meta = prepared.meta(message, author);
-            let done = crate::ingest::ingest(
-                ctx.store(),
-                &map,
-                &prepared.nrg,
-                meta,
-                prepared.grid.as_ref(),
-            )?;
+            let done = crate::ingest::ingest_prepared(ctx.store(), &map, &prepared, meta)?;
             let repairs: Vec<String> = prepared.repairs.iter().map(|r| r.to_string()).collect();
             Ok((done, prepared.weights_fixed.total(), repairs))
         })
@@ -142,6 +140,7 @@ pub async fn upload(
             json!({"id": id, "statement": statement, "reason": reason})
         }).collect::<Vec<_>>(),
     });
+    let georef_set = done.georef_set.clone();
     let done = done.imported;
     let info = &done.revision;
     let status = if done.unchanged {
@@ -167,6 +166,7 @@ pub async fn upload(
             "weights_fixed": weights_fixed,
             "repairs": repairs,
             "corrections": corrections,
+            "georef_set": georef_set,
         })),
     )
         .into_response();
