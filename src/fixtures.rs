@@ -86,8 +86,106 @@ pub fn corridor_building(rooms: usize) -> Nrg {
     Nrg::new(spaces, connections).unwrap_or_default()
 }
 
+/// A building of `levels` floors 3.5 m apart (level names "0", "1", …),
+/// each a [`corridor_building`] of `rooms` rooms with its ids plus
+/// 100 000 × level, and two vertical connectors at the corridor's ends:
+/// stairs west (x ∈ [-3, 0], space 90 000 + 100 000 × level) and a lift
+/// east (2 m wide, space 90 001 + 100 000 × level), each open to the
+/// corridor. Stairs join consecutive levels, the lift joins every pair,
+/// with the costs of [`crate::model::stairs_length_m`] and
+/// [`crate::model::elevator_length_m`].
+pub fn storeys(levels: usize, rooms: usize) -> Nrg {
+    use crate::model::{Level, elevator_length_m, stairs_length_m};
+    let floor = corridor_building(rooms);
+    let width = 4.0 * rooms as f64;
+    let (mut spaces, mut connections) = (Vec::new(), Vec::new());
+    let id = |level: usize, id: SpaceId| SpaceId(id.0 + 100_000 * level as u32);
+    let (stairs, lift) = (SpaceId(90_000), SpaceId(90_001));
+    for k in 0..levels {
+        let level = Level {
+            name: k.to_string(),
+            elevation_m: 3.5 * k as f64,
+        };
+        for s in floor.spaces() {
+            let mut s = s.clone();
+            s.id = id(k, s.id);
+            if let Some(name) = &s.name {
+                s.name = Some(format!("{name} L{k}"));
+            }
+            s.level = Some(level.clone());
+            spaces.push(s);
+        }
+        for c in floor.connections() {
+            connections.push(Connection {
+                a: id(k, c.a),
+                b: id(k, c.b),
+                ..*c
+            });
+        }
+        let mut st = Space::new(
+            id(k, stairs),
+            SpaceKind::Stairs,
+            [-1.5, 1.0],
+            rect(-3.0, 0.0, 0.0, 2.0),
+        );
+        st.name = Some(format!("West stairs L{k}"));
+        st.level = Some(level.clone());
+        let mut el = Space::new(
+            id(k, lift),
+            SpaceKind::Elevator,
+            [width + 1.0, 1.0],
+            rect(width, 0.0, width + 2.0, 2.0),
+        );
+        el.name = Some(format!("Lift A L{k}"));
+        el.level = Some(level);
+        spaces.extend([st, el]);
+        for (end, x) in [(stairs, -1.5), (lift, width + 1.0)] {
+            connections.push(Connection {
+                a: id(k, SpaceId(1)),
+                b: id(k, end),
+                kind: ConnectionKind::Open,
+                length_m: (x - width / 2.0).abs(),
+            });
+        }
+        if k > 0 {
+            connections.push(Connection {
+                a: id(k - 1, stairs),
+                b: id(k, stairs),
+                kind: ConnectionKind::Vertical,
+                length_m: stairs_length_m(3.5),
+            });
+        }
+        for j in 0..k {
+            connections.push(Connection {
+                a: id(j, lift),
+                b: id(k, lift),
+                kind: ConnectionKind::Vertical,
+                length_m: elevator_length_m(k - j),
+            });
+        }
+    }
+    Nrg::new(spaces, connections).unwrap_or_default()
+}
+
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn storeys_are_whole_with_their_vertical_links() {
+        let nrg = super::storeys(3, 4);
+        assert_eq!(nrg.spaces().len(), 3 * (1 + 2 * 4 + 2));
+        let levels = nrg.levels();
+        assert_eq!(
+            levels.iter().map(|l| l.name.as_str()).collect::<Vec<_>>(),
+            ["0", "1", "2"]
+        );
+        let vertical = nrg
+            .connections()
+            .iter()
+            .filter(|c| c.kind == crate::model::ConnectionKind::Vertical)
+            .count();
+        assert_eq!(vertical, 2 + 3, "stairs 0-1, 1-2; lift 0-1, 0-2, 1-2");
+    }
+
     #[test]
     fn large_buildings_are_generated_whole() {
         let nrg = super::corridor_building(2000);

@@ -37,7 +37,7 @@ use super::door_match::{door_candidates, door_sides, line_share};
 use super::overlap_area::{Edges, intersection_area_of};
 use super::overlaps::Overlaps;
 use super::params::MatchParams;
-use crate::model::{Nrg, Point, Ring, Space, SpaceId, convex_hull, polygon_area};
+use crate::model::{Nrg, Point, Ring, Space, SpaceId, convex_hull, level_name, polygon_area};
 
 /// One space of the new revision continuing one space of the old.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -88,8 +88,8 @@ pub fn match_spaces_within(
     ))
 }
 
-/// Every overlapping pair of spaces of `old` and `new`, found through a
-/// grid of bounding boxes and measured exactly.
+/// Every overlapping pair of spaces of `old` and `new` on the same level,
+/// found through a grid of bounding boxes and measured exactly.
 pub fn overlaps(old: &Nrg, new: &Nrg) -> Overlaps {
     overlaps_within(old, new, usize::MAX, None).unwrap_or_default()
 }
@@ -123,7 +123,11 @@ pub(crate) fn overlaps_within(
         grid.candidates(n, &mut candidates);
         for &i in &candidates {
             let o = &old_shapes[i];
-            if !o.bbox_meets(n) {
+            // Spaces on different levels never continue each other.
+            if !o.bbox_meets(n)
+                || level_name(old.spaces()[i].level.as_ref())
+                    != level_name(new.spaces()[j].level.as_ref())
+            {
                 continue;
             }
             measured += 1;

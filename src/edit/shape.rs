@@ -139,9 +139,10 @@ pub(super) fn relength(
 }
 
 /// The stronger of two relations between the same pair (a door beats an
-/// open boundary beats a wall).
+/// open boundary beats a wall; a vertical link is kept as it is).
 pub(super) fn stronger(a: ConnectionKind, b: ConnectionKind) -> ConnectionKind {
     let rank = |k: ConnectionKind| match k {
+        ConnectionKind::Vertical => 3,
         ConnectionKind::Door => 2,
         ConnectionKind::Open => 1,
         ConnectionKind::Adjacent => 0,

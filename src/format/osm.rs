@@ -66,7 +66,9 @@ fn indoor_value(kind: SpaceKind) -> Option<&'static str> {
     match kind {
         SpaceKind::Room => Some("room"),
         SpaceKind::Corridor => Some("corridor"),
-        SpaceKind::Other => Some("area"),
+        // SIT maps stairwells and lift shafts as indoor=area (with
+        // stairs=yes / highway=elevator added by `kind_tags`).
+        SpaceKind::Stairs | SpaceKind::Elevator | SpaceKind::Other => Some("area"),
         SpaceKind::Door => None,
     }
 }
@@ -305,14 +307,24 @@ impl<'g> Osm<'g> {
     }
 }
 
-/// The tags every written space carries: `level`, `ref`, `nrgdb:id` and
-/// `name` when it has one.
+/// The tags every written space carries: `level` (the space's, else the
+/// georeference's), `ref`, `nrgdb:id`, `name` when it has one, and
+/// `stairs=yes` or `highway=elevator` on stairs and lifts (SIT).
 fn common_tags(space: &Space, georef: &Georef) -> Vec<(&'static str, String)> {
+    let level = space
+        .level
+        .as_ref()
+        .map_or_else(|| georef.level.clone(), |l| l.name.clone());
     let mut tags = vec![
-        ("level", georef.level.clone()),
+        ("level", level),
         ("ref", space.id.to_string()),
         ("nrgdb:id", space.id.to_string()),
     ];
+    match space.kind {
+        SpaceKind::Stairs => tags.push(("stairs", "yes".into())),
+        SpaceKind::Elevator => tags.push(("highway", "elevator".into())),
+        _ => {}
+    }
     if let Some(name) = space.name.as_deref().filter(|n| !n.trim().is_empty()) {
         tags.push(("name", name.to_string()));
     }

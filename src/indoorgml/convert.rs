@@ -98,7 +98,9 @@ pub fn from_nrg_with_paths(nrg: &Nrg, paths: &ConnectionPaths) -> Document {
     for s in nrg.spaces() {
         let class = match s.kind {
             SpaceKind::Room => CellClass::GeneralSpace,
-            SpaceKind::Corridor => CellClass::TransitionSpace,
+            SpaceKind::Corridor | SpaceKind::Stairs | SpaceKind::Elevator => {
+                CellClass::TransitionSpace
+            }
             SpaceKind::Door => CellClass::ConnectionSpace,
             SpaceKind::Other => CellClass::CellSpace,
         };
@@ -117,8 +119,12 @@ pub fn from_nrg_with_paths(nrg: &Nrg, paths: &ConnectionPaths) -> Document {
             },
             geometry: Some(CellGeometry::Surface(Polygon {
                 id: Some(format!("{}-g", cell_id(s.id))),
-                exterior: closed_ring(&s.polygon, true),
-                interiors: s.holes.iter().map(|h| closed_ring(h, false)).collect(),
+                exterior: closed_ring(&s.polygon, true, super::levels::elevation(s)),
+                interiors: s
+                    .holes
+                    .iter()
+                    .map(|h| closed_ring(h, false, super::levels::elevation(s)))
+                    .collect(),
             })),
             duality: Some(state_id(s.id)),
             external: Vec::new(),
@@ -130,10 +136,7 @@ pub fn from_nrg_with_paths(nrg: &Nrg, paths: &ConnectionPaths) -> Document {
             connects: state_connects.remove(&s.id).unwrap_or_default(),
             point: Some(GmlPoint {
                 id: Some(format!("{}-g", state_id(s.id))),
-                coords: Coords {
-                    dim: 2,
-                    values: s.anchor.to_vec(),
-                },
+                coords: at_height(&[s.anchor], super::levels::elevation(s)),
             }),
         });
     }
@@ -192,7 +195,7 @@ fn state_id(id: SpaceId) -> String {
 
 /// A closed GML ring from an open model ring, oriented counter-clockwise
 /// for exteriors and clockwise for holes.
-fn closed_ring(ring: &[Point], ccw: bool) -> Coords {
+fn closed_ring(ring: &[Point], ccw: bool, z: Option<f64>) -> Coords {
     let mut pts: Vec<Point> = ring.to_vec();
     if (polygon_area(&pts) > 0.0) != ccw {
         pts.reverse();
@@ -200,9 +203,20 @@ fn closed_ring(ring: &[Point], ccw: bool) -> Coords {
     if let Some(&first) = pts.first() {
         pts.push(first);
     }
-    Coords {
-        dim: 2,
-        values: pts.iter().flat_map(|p| *p).collect(),
+    at_height(&pts, z)
+}
+
+/// Positions in 2D, or in 3D at height `z`.
+fn at_height(points: &[Point], z: Option<f64>) -> Coords {
+    match z {
+        None => Coords {
+            dim: 2,
+            values: points.iter().flat_map(|p| *p).collect(),
+        },
+        Some(z) => Coords {
+            dim: 3,
+            values: points.iter().flat_map(|p| [p[0], p[1], z]).collect(),
+        },
     }
 }
 
@@ -210,16 +224,17 @@ fn closed_ring(ring: &[Point], ccw: bool) -> Coords {
 /// doorway (`"doorway": {"line": [[x, y], [x, y]], "width_m": w}`; the
 /// width is derived again when read).
 fn space_description(s: &Space) -> Option<String> {
+    let mut attrs = s.attributes.clone();
+    super::levels::describe(s, &mut attrs);
     match crate::model::doorway(s) {
         Some(d) => {
-            let mut attrs = s.attributes.clone();
             attrs.insert(
                 DOORWAY_KEY.into(),
                 json!({"line": d.line, "width_m": d.width_m}),
             );
             Some(Value::Object(attrs).to_string())
         }
-        None => attributes_to_description(&s.attributes),
+        None => attributes_to_description(&attrs),
     }
 }
 
@@ -322,6 +337,7 @@ pub fn to_nrg_fixing(doc: &Document) -> Result<(Nrg, WeightFixes), IndoorGmlErro
         let state = state_of_cell.get(&i).copied();
         spaces.push(space(cell, ids[i], state)?);
     }
+    super::levels::assign(cells, &mut spaces);
     let anchor = |ci: usize| spaces.get(ci).map_or([0.0, 0.0], |s: &Space| s.anchor);
     let mut seen = HashSet::new();
     let mut connections = Vec::new();
@@ -412,6 +428,7 @@ pub fn to_nrg_fixing(doc: &Document) -> Result<(Nrg, WeightFixes), IndoorGmlErro
             });
         }
     }
+    super::levels::fit_connections(&spaces, &mut connections);
     let nrg = Nrg::new(spaces, connections).map_err(|e| IndoorGmlError::Model(e.to_string()))?;
     Ok((nrg, fixes))
 }
@@ -461,12 +478,28 @@ fn navigation_layer<'a>(doc: &'a Document, cells: &HashMap<&str, usize>) -> Opti
         .map(|(_, l)| l)
 }
 
+/// Stairs or a lift, when a cell's navi class or function says so (ours
+/// write `stairs` / `elevator`; other files "Stair", "Staircase", "Lift",
+/// "Elevator").
+fn vertical_kind(navi: &NaviCodes) -> Option<SpaceKind> {
+    [&navi.class, &navi.function].into_iter().find_map(|code| {
+        let code = code.to_ascii_lowercase();
+        if code.contains("stair") {
+            Some(SpaceKind::Stairs)
+        } else if code.contains("elevator") || code.contains("lift") {
+            Some(SpaceKind::Elevator)
+        } else {
+            None
+        }
+    })
+}
+
 fn space(cell: &Cell, id: SpaceId, state: Option<&State>) -> Result<Space, IndoorGmlError> {
     let kind = match cell.class {
         CellClass::GeneralSpace => SpaceKind::Room,
-        CellClass::TransitionSpace => SpaceKind::Corridor,
+        CellClass::TransitionSpace => vertical_kind(&cell.navi).unwrap_or(SpaceKind::Corridor),
         CellClass::ConnectionSpace | CellClass::AnchorSpace => SpaceKind::Door,
-        _ => SpaceKind::Other,
+        _ => vertical_kind(&cell.navi).unwrap_or(SpaceKind::Other),
     };
     let (polygon, holes) = footprint(cell)?;
     // The State's point when it lies in the cell; else (no State, or a

@@ -20,6 +20,7 @@ mod dom;
 mod error;
 mod gml_read;
 pub mod json2;
+mod levels;
 pub mod placed;
 mod read;
 mod version;
@@ -33,6 +34,7 @@ pub use convert::{WeightFixes, from_nrg, from_nrg_with_paths, to_nrg, to_nrg_fix
 pub use document::Document;
 pub use dom::{NS_CORE, NS_GML, NS_NAVI};
 pub use error::IndoorGmlError;
+pub use levels::FLOOR_GAP_M;
 pub use version::IndoorGmlVersion;
 
 use crate::model::Nrg;

@@ -17,14 +17,19 @@ pub enum ConnectionKind {
     Open,
     /// The spaces share a wall: adjacent, but not navigable.
     Adjacent,
+    /// Between levels: a stairway's or a lift's parts on two levels;
+    /// `length_m` is the cost of the ride or climb as an equivalent walked
+    /// length.
+    Vertical,
 }
 
 impl ConnectionKind {
     /// All kinds, in a fixed order.
-    pub const ALL: [ConnectionKind; 3] = [
+    pub const ALL: [ConnectionKind; 4] = [
         ConnectionKind::Door,
         ConnectionKind::Open,
         ConnectionKind::Adjacent,
+        ConnectionKind::Vertical,
     ];
 
     /// The lower-case name used in JSON, queries and the CLI.
@@ -33,6 +38,7 @@ impl ConnectionKind {
             ConnectionKind::Door => "door",
             ConnectionKind::Open => "open",
             ConnectionKind::Adjacent => "adjacent",
+            ConnectionKind::Vertical => "vertical",
         }
     }
 

@@ -30,6 +30,28 @@ pub enum ModelError {
         /// Second end.
         b: SpaceId,
     },
+    /// A space's level is not usable.
+    #[error("space {id}: {source}")]
+    Level {
+        /// The space concerned.
+        id: SpaceId,
+        /// Why.
+        source: super::LevelError,
+    },
+    /// Levels that do not fit together: one name with two elevations,
+    /// spaces with and without a level in one model.
+    #[error("{0}")]
+    Levels(String),
+    /// A connection whose kind does not fit the levels of its ends.
+    #[error("connection {a}-{b}: {why}")]
+    LevelConnection {
+        /// First end.
+        a: SpaceId,
+        /// Second end.
+        b: SpaceId,
+        /// What is wrong.
+        why: String,
+    },
     /// A coordinate or length is NaN or infinite.
     #[error("{what} of space {id} is not a finite number")]
     NotFinite {

@@ -16,11 +16,13 @@ mod geometry;
 mod georef;
 mod graph;
 mod interior_point;
+mod level;
 mod nrg;
 mod repair;
 mod space;
 mod utm;
 pub(crate) mod validity;
+mod vertical;
 
 pub use connection::{Connection, ConnectionKind, ConnectionPaths};
 pub use crs::{NamedCrs, lowest_corner};
@@ -32,8 +34,13 @@ pub use geometry::{
 pub use georef::{Georef, GeorefError};
 pub use graph::ConnectivityGraph;
 pub use interior_point::pole_of_inaccessibility;
+pub use level::{Level, LevelError, MAX_ELEVATION_M, MAX_LEVEL_NAME_CHARS, level_name};
 pub use nrg::{MAX_COORD_M, MAX_NAME_CHARS, Nrg};
 pub use repair::{MAX_OVERLAP_TESTS, MIN_OVERLAP_M2, Repair, RepairKind, repair_geometry};
 pub(crate) use repair::{reshaped, to_geo};
 pub use space::{Space, SpaceId, SpaceKind, doorway};
 pub use utm::UtmZone;
+pub use vertical::{
+    ELEVATOR_PER_LEVEL_S, ELEVATOR_WAIT_S, STAIRS_M_PER_RISE_M, WALKING_SPEED_M_S,
+    elevator_length_m, stairs_length_m,
+};

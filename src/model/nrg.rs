@@ -1,10 +1,10 @@
 //! The NRG: spaces and the connections between them, with their invariants.
 
-use std::collections::{BTreeMap, HashSet};
+use std::collections::{BTreeMap, HashMap, HashSet};
 
 use serde::{Deserialize, Serialize};
 
-use super::{Connection, ModelError, Space, SpaceId};
+use super::{Connection, ConnectionKind, Level, ModelError, Space, SpaceId, level_name};
 
 /// A Node-Relation Graph: the spaces of one floor and how they connect.
 ///
@@ -91,10 +91,28 @@ impl Nrg {
             }
         }
         connections.sort_by_key(|c| c.key());
+        check_levels(&spaces, &connections)?;
         Ok(Nrg {
             spaces,
             connections,
         })
+    }
+
+    /// The levels the spaces are on, lowest first (by elevation, then
+    /// name); empty for a model without levels.
+    pub fn levels(&self) -> Vec<Level> {
+        let mut levels: Vec<Level> = Vec::new();
+        for l in self.spaces.iter().filter_map(|s| s.level.as_ref()) {
+            if !levels.iter().any(|k| k.name == l.name) {
+                levels.push(l.clone());
+            }
+        }
+        levels.sort_by(|a, b| {
+            a.elevation_m
+                .total_cmp(&b.elevation_m)
+                .then_with(|| a.name.cmp(&b.name))
+        });
+        levels
     }
 
     /// The spaces, sorted by id.
@@ -164,6 +182,81 @@ impl Nrg {
     pub fn from_json(text: &str) -> Result<Nrg, serde_json::Error> {
         serde_json::from_str(text)
     }
+}
+
+/// Levels fit together: every space has one or none has; a name has one
+/// elevation; a vertical connection joins two levels (usually stairs or a
+/// lift, but a file may join a landing to a corridor), every other
+/// connection two spaces on one level.
+fn check_levels(spaces: &[Space], connections: &[Connection]) -> Result<(), ModelError> {
+    let with = spaces.iter().filter(|s| s.level.is_some()).count();
+    let vertical = connections
+        .iter()
+        .find(|c| c.kind == ConnectionKind::Vertical);
+    if with == 0 {
+        return match vertical {
+            Some(c) => Err(ModelError::LevelConnection {
+                a: c.a,
+                b: c.b,
+                why: "a vertical connection joins levels, and the model has none".into(),
+            }),
+            None => Ok(()),
+        };
+    }
+    if let Some(s) = spaces.iter().find(|s| s.level.is_none()) {
+        return Err(ModelError::Levels(format!(
+            "space {} has no level while {with} others have one: give every space a level or none",
+            s.id
+        )));
+    }
+    let mut elevations: HashMap<&str, f64> = HashMap::new();
+    for s in spaces {
+        let Some(level) = &s.level else { continue };
+        level
+            .check()
+            .map_err(|source| ModelError::Level { id: s.id, source })?;
+        let e = *elevations
+            .entry(level.name.as_str())
+            .or_insert(level.elevation_m);
+        if e.to_bits() != level.elevation_m.to_bits() {
+            return Err(ModelError::Levels(format!(
+                "level {} has two elevations, {e} m and {} m (space {})",
+                level.name, level.elevation_m, s.id
+            )));
+        }
+    }
+    let by_id: HashMap<SpaceId, &Space> = spaces.iter().map(|s| (s.id, s)).collect();
+    for c in connections {
+        let (Some(a), Some(b)) = (by_id.get(&c.a), by_id.get(&c.b)) else {
+            continue;
+        };
+        let same = level_name(a.level.as_ref()) == level_name(b.level.as_ref());
+        let why = if c.kind == ConnectionKind::Vertical {
+            same.then(|| {
+                format!(
+                    "a vertical connection joins two levels, and both ends are on level {}",
+                    level_name(a.level.as_ref())
+                )
+            })
+        } else if !same {
+            Some(format!(
+                "a {} connection joins level {} and level {}; only a vertical connection joins levels",
+                c.kind,
+                level_name(a.level.as_ref()),
+                level_name(b.level.as_ref())
+            ))
+        } else {
+            None
+        };
+        if let Some(why) = why {
+            return Err(ModelError::LevelConnection {
+                a: c.a,
+                b: c.b,
+                why,
+            });
+        }
+    }
+    Ok(())
 }
 
 fn check_space(space: &Space) -> Result<(), ModelError> {
@@ -314,5 +407,46 @@ mod tests {
         let text = r#"{"spaces":[],"connections":[{"a":1,"b":2,"kind":"door","length_m":1}]}"#;
         let err = Nrg::from_json(text).unwrap_err().to_string();
         assert!(err.contains("not in the model"), "{err}");
+    }
+
+    #[test]
+    fn levels_go_through_json_and_must_fit_together() {
+        let nrg = crate::fixtures::storeys(2, 2);
+        let back = Nrg::from_json(&nrg.to_json()).unwrap();
+        assert_eq!(back, nrg);
+        let first = &back.spaces()[0];
+        assert_eq!(first.level.as_ref().map(|l| l.name.as_str()), Some("0"));
+        let (spaces, connections) = nrg.clone().into_parts();
+        // One name, two elevations.
+        let mut bad = spaces.clone();
+        bad[0].level.as_mut().unwrap().elevation_m = 9.0;
+        let err = Nrg::new(bad, connections.clone()).unwrap_err().to_string();
+        assert!(err.contains("two elevations"), "{err}");
+        // A space without a level among leveled ones.
+        let mut bad = spaces.clone();
+        bad[3].level = None;
+        let err = Nrg::new(bad, connections.clone()).unwrap_err().to_string();
+        assert!(err.contains("has no level"), "{err}");
+        // A door connection across levels.
+        let mut bad = connections.clone();
+        let v = bad
+            .iter_mut()
+            .find(|c| c.kind == ConnectionKind::Vertical)
+            .unwrap();
+        v.kind = ConnectionKind::Door;
+        let err = Nrg::new(spaces.clone(), bad).unwrap_err().to_string();
+        assert!(
+            err.contains("only a vertical connection joins levels"),
+            "{err}"
+        );
+        // A vertical connection within one level.
+        let mut bad = connections;
+        let c = bad
+            .iter_mut()
+            .find(|c| c.kind == ConnectionKind::Open)
+            .unwrap();
+        c.kind = ConnectionKind::Vertical;
+        let err = Nrg::new(spaces, bad).unwrap_err().to_string();
+        assert!(err.contains("both ends are on level 0"), "{err}");
     }
 }

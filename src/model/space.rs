@@ -8,6 +8,7 @@ use serde_json::{Map, Value};
 
 use super::doorway::{Doorway, door_doorway};
 use super::geometry::{Point, Ring, polygon_area};
+use super::level::Level;
 
 /// Stable integer identity of a space within one map.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
@@ -30,6 +31,13 @@ pub enum SpaceKind {
     Corridor,
     /// A door or doorway (IndoorGML `ConnectionSpace`, the thick-door model).
     Door,
+    /// A stairway between levels (IndoorGML `TransitionSpace`); joined to
+    /// its part on another level by a vertical connection.
+    Stairs,
+    /// A lift (elevator) car's stop on a level (IndoorGML
+    /// `TransitionSpace`); joined to its stops on other levels by vertical
+    /// connections.
+    Elevator,
     /// Anything else (IndoorGML `CellSpace`); navigable where its
     /// connections say so.
     Other,
@@ -37,10 +45,12 @@ pub enum SpaceKind {
 
 impl SpaceKind {
     /// All kinds, in a fixed order.
-    pub const ALL: [SpaceKind; 4] = [
+    pub const ALL: [SpaceKind; 6] = [
         SpaceKind::Room,
         SpaceKind::Corridor,
         SpaceKind::Door,
+        SpaceKind::Stairs,
+        SpaceKind::Elevator,
         SpaceKind::Other,
     ];
 
@@ -50,6 +60,8 @@ impl SpaceKind {
             SpaceKind::Room => "room",
             SpaceKind::Corridor => "corridor",
             SpaceKind::Door => "door",
+            SpaceKind::Stairs => "stairs",
+            SpaceKind::Elevator => "elevator",
             SpaceKind::Other => "other",
         }
     }
@@ -68,7 +80,7 @@ impl FromStr for SpaceKind {
             .into_iter()
             .find(|k| k.as_str().eq_ignore_ascii_case(s))
             .ok_or_else(|| {
-                format!("unknown space kind '{s}' (expected room, corridor, door or other)")
+                format!("unknown space kind '{s}' (expected room, corridor, door, stairs, elevator or other)")
             })
     }
 }
@@ -116,6 +128,10 @@ pub struct Space {
     /// Free attributes (JSON values), kept through every format.
     #[serde(default)]
     pub attributes: Map<String, Value>,
+    /// The level the space is on; None in a model without levels (one
+    /// floor).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub level: Option<Level>,
 }
 
 /// The fields of a [`Space`] that JSON gives; the rest is derived.
@@ -133,6 +149,8 @@ struct SpaceJson {
     holes: Vec<Ring>,
     #[serde(default)]
     attributes: Map<String, Value>,
+    #[serde(default)]
+    level: Option<Level>,
 }
 
 impl From<SpaceJson> for Space {
@@ -148,6 +166,7 @@ impl From<SpaceJson> for Space {
             polygon: j.polygon,
             holes: j.holes,
             attributes: j.attributes,
+            level: j.level,
         };
         space.update_area();
         space.update_doorway();
@@ -169,6 +188,7 @@ impl Space {
             polygon,
             holes: Vec::new(),
             attributes: Map::new(),
+            level: None,
         };
         space.update_area();
         space.update_doorway();
@@ -210,6 +230,14 @@ impl Space {
                 .zip(&other.holes)
                 .all(|(x, y)| bits(x) == bits(y))
             && self.attributes.iter().eq(other.attributes.iter())
+            && self
+                .level
+                .as_ref()
+                .map(|l| (&l.name, l.elevation_m.to_bits()))
+                == other
+                    .level
+                    .as_ref()
+                    .map(|l| (&l.name, l.elevation_m.to_bits()))
     }
 
     /// The name if set, else `"<kind> <id>"` (e.g. "room 12").

@@ -404,6 +404,7 @@ impl fmt::Display for Statement {
             } => {
                 let target = match kind {
                     None => "spaces".to_string(),
+                    Some(SpaceKind::Stairs) => "stairs".to_string(),
                     Some(k) => format!("{k}s"),
                 };
                 write!(f, "FIND {target}")?;

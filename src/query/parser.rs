@@ -90,7 +90,15 @@ pub const KEYWORDS: [&str; 53] = [
 ];
 
 const FIELDS: [&str; 7] = ["id", "kind", "name", "area", "degree", "width", "attr"];
-const TARGETS: [&str; 5] = ["rooms", "corridors", "doors", "others", "spaces"];
+const TARGETS: [&str; 7] = [
+    "rooms",
+    "corridors",
+    "doors",
+    "stairs",
+    "elevators",
+    "others",
+    "spaces",
+];
 
 /// Parses `;`-separated statements (empty ones are skipped).
 ///
@@ -466,9 +474,12 @@ impl Parser {
     fn find(&mut self) -> Result<Statement, QueryError> {
         let t = self.peek().clone();
         let target = t.text.to_ascii_lowercase();
-        let kind = match target.trim_end_matches('s') {
-            "space" if t.kind == TokenKind::Word => None,
-            k if t.kind == TokenKind::Word && k.parse::<SpaceKind>().is_ok() => k.parse().ok(),
+        // Plurals: "rooms", "elevators"; "stairs" is its own plural.
+        let singular = target.strip_suffix('s').unwrap_or(&target);
+        let kind = match (target.as_str(), singular) {
+            (_, "space") if t.kind == TokenKind::Word => None,
+            ("stairs", _) if t.kind == TokenKind::Word => Some(SpaceKind::Stairs),
+            (_, k) if t.kind == TokenKind::Word && k.parse::<SpaceKind>().is_ok() => k.parse().ok(),
             _ => return Err(self.expected(&TARGETS)),
         };
         self.pos += 1;

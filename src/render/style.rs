@@ -29,12 +29,15 @@ pub mod okabe_ito {
 use okabe_ito::*;
 
 /// Fill of a space by kind: room sky blue, corridor orange, door bluish
-/// green, other yellow (semi-transparent so the map shows through).
+/// green, stairs reddish purple, elevator blue, other yellow
+/// (semi-transparent so the map shows through).
 pub fn kind_fill(kind: SpaceKind) -> Rgba {
     match kind {
         SpaceKind::Room => SKY_BLUE,
         SpaceKind::Corridor => ORANGE,
         SpaceKind::Door => BLUISH_GREEN,
+        SpaceKind::Stairs => REDDISH_PURPLE,
+        SpaceKind::Elevator => BLUE,
         SpaceKind::Other => YELLOW,
     }
     .with_alpha(170)
@@ -51,12 +54,13 @@ pub fn doorway_stroke() -> Stroke {
 }
 
 /// An edge of the graph by connection kind: door solid black, open long
-/// dashes, adjacent thin grey dots.
+/// dashes, adjacent thin grey dots, vertical reddish purple dots.
 pub fn edge_stroke(kind: ConnectionKind) -> Stroke {
     match kind {
         ConnectionKind::Door => Stroke::solid(BLACK, 1.5),
         ConnectionKind::Open => Stroke::dashed(BLACK, 1.5, &[6.0, 3.0]),
         ConnectionKind::Adjacent => Stroke::dashed(Rgba::rgb(110, 110, 110), 1.0, &[1.5, 3.0]),
+        ConnectionKind::Vertical => Stroke::dashed(REDDISH_PURPLE, 2.0, &[2.0, 2.0]),
     }
 }
 

@@ -8,7 +8,7 @@ use std::sync::Arc;
 use serde::Serialize;
 
 use super::{Budget, NavMesh, Profile};
-use crate::model::{Connection, ConnectionPaths, Nrg, Point, SpaceId};
+use crate::model::{Connection, ConnectionKind, ConnectionPaths, Nrg, Point, SpaceId};
 
 /// The walked path of one connection.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -38,6 +38,14 @@ pub fn connection_walks(nav: &NavMesh) -> Vec<ConnectionWalk> {
         .iter()
         .filter(|c| c.kind.is_navigable())
         .map(|c| {
+            // Between levels the cost is the connection's own (stairs
+            // climbed, a lift ridden), not a walk in the plane.
+            if c.kind == ConnectionKind::Vertical {
+                return ConnectionWalk {
+                    length_m: c.length_m,
+                    ..straight(nrg, c)
+                };
+            }
             let walked = nav.walk_between(&level, c.a, c.b, &mut closed, &budget);
             match walked {
                 Some((length_m, points)) => ConnectionWalk {

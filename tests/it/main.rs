@@ -30,6 +30,7 @@ mod georef;
 mod georef_import;
 mod ingest;
 mod ingest_gate;
+mod levels;
 mod nav2;
 mod osm;
 mod paper_cuts;

@@ -334,6 +334,51 @@ fn a_georeference_stays_with_its_map() {
     });
 }
 
+/// Levels (issue 25) are kept space by space; re-mapping one level makes
+/// a revision in which only that level's spaces change.
+#[test]
+fn levels_are_kept_and_one_level_changes_alone() {
+    each(|e| {
+        let mut store = e.open();
+        let nrg = nrgdb::fixtures::storeys(3, 4);
+        store.import("tower", &nrg, meta("three floors")).unwrap();
+        let back = store.load("tower", None).unwrap();
+        assert_eq!(back, nrg, "{}", e.name);
+        assert_eq!(back.levels().len(), 3, "{}", e.name);
+        // Move one room on level 1 only.
+        let (mut spaces, connections) = nrg.into_parts();
+        let room = spaces
+            .iter_mut()
+            .find(|s| s.kind == SpaceKind::Room && s.level.as_ref().unwrap().name == "1")
+            .unwrap();
+        for p in &mut room.polygon {
+            p[1] += 0.2;
+        }
+        room.anchor[1] += 0.2;
+        let moved = nrgdb::model::Nrg::new(spaces, connections).unwrap();
+        let done = store
+            .import("tower", &moved, meta("level 1 re-mapped"))
+            .unwrap();
+        assert_eq!(
+            (
+                done.revision.spaces_changed,
+                done.revision.spaces_added,
+                done.revision.spaces_removed
+            ),
+            (1, 0, 0),
+            "{}",
+            e.name
+        );
+        assert_eq!(store.load("tower", None).unwrap(), moved, "{}", e.name);
+        assert_eq!(
+            store.load("tower", Some(1)).unwrap().levels().len(),
+            3,
+            "{}",
+            e.name
+        );
+    });
+}
+
 #[test]
 fn the_change_token_moves_when_anyone_commits() {
     each(|e| {

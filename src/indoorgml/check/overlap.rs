@@ -79,7 +79,9 @@ pub fn check_overlaps(doc: &Document, out: &mut Vec<Finding>) {
                 .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), z| {
                     (lo.min(z), hi.max(z))
                 }),
-            _ => (0.0, 0.0),
+            // A flat cell lies at its height (0 in 2D).
+            Some(CellGeometry::Surface(p)) => p.exterior.z().next().map_or((0.0, 0.0), |z| (z, z)),
+            None => (0.0, 0.0),
         };
         groups.entry(group).or_default().push(Footprint {
             id: &c.info.id,
@@ -161,9 +163,12 @@ fn rects_overlap(a: &Rect, b: &Rect) -> bool {
 }
 
 fn z_overlap(a: (f64, f64), b: (f64, f64)) -> bool {
-    // 2D cells have a zero-height range and always overlap in z.
-    if a.0 == a.1 || b.0 == b.1 {
-        return true;
+    // Two flat cells (2D, or a level's floor) meet when at one height; a
+    // flat cell and a solid are compared as in 2D.
+    match (a.0 == a.1, b.0 == b.1) {
+        (true, true) => return (a.0 - b.0).abs() < 1e-6,
+        (true, false) | (false, true) => return true,
+        (false, false) => {}
     }
     a.0.max(b.0) < a.1.min(b.1) - 1e-6
 }

@@ -9,7 +9,7 @@ use postgres::{Client, GenericClient, IsolationLevel, Row, Transaction};
 
 use super::fault::{R, fail};
 use super::prepared::Prepared;
-use crate::model::{Connection as Link, ConnectionKind, Nrg, Space, SpaceId, SpaceKind};
+use crate::model::{Connection as Link, ConnectionKind, Level, Nrg, Space, SpaceId, SpaceKind};
 use crate::store::delta::smallest_containing;
 use crate::store::{EncodedGrid, MapInfo, RevisionInfo, StoreError, geometry_blob};
 
@@ -168,9 +168,9 @@ pub(super) fn load(client: &mut Client, p: &mut Prepared, map: &str, rev: Option
         } else {
             links.push(Link {
                 a: space_id(map, 0, r.get(3))?,
-                b: space_id(map, 0, r.get(14))?,
+                b: space_id(map, 0, r.get(16))?,
                 kind: ConnectionKind::from_str(r.get(4)).map_err(|e| corrupt(0, e))?,
-                length_m: r.get(15),
+                length_m: r.get(17),
             });
         }
     }
@@ -188,18 +188,19 @@ const LOAD: &str = "
         WHERE m.name = $1)
     SELECT 0 AS part, q.latest, s.row_id, s.space_id, s.kind, s.name, s.attributes::text,
            s.anchor_x, s.anchor_y, s.geometry, s.doorway_ax, s.doorway_ay, s.doorway_bx,
-           s.doorway_by, NULL::bigint AS b, NULL::float8 AS length_m
+           s.doorway_by, s.level_name, s.level_elevation, NULL::bigint AS b,
+           NULL::float8 AS length_m
     FROM q LEFT JOIN spaces s ON s.map_id = q.map_id AND s.valid_from <= q.seq
                                AND (s.valid_to IS NULL OR s.valid_to > q.seq)
     UNION ALL
     SELECT 1, q.latest, 0, c.a, c.kind, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL,
-           c.b, c.length_m
+           NULL, NULL, c.b, c.length_m
     FROM q JOIN connections c ON c.map_id = q.map_id AND c.valid_from <= q.seq
                               AND (c.valid_to IS NULL OR c.valid_to > q.seq)";
 
 /// A space from a row whose columns from `at` on are `row_id, space_id,
 /// kind, name, attributes, anchor_x, anchor_y, geometry, doorway_ax,
-/// doorway_ay, doorway_bx, doorway_by`.
+/// doorway_ay, doorway_bx, doorway_by, level_name, level_elevation`.
 fn space_of(map: &str, r: &Row, at: usize) -> Result<Space, String> {
     let row_id: i64 = r.get(at);
     let kind = SpaceKind::from_str(r.get(at + 2))?;
@@ -213,6 +214,10 @@ fn space_of(map: &str, r: &Row, at: usize) -> Result<Space, String> {
     let line: [Option<f64>; 4] = [r.get(at + 8), r.get(at + 9), r.get(at + 10), r.get(at + 11)];
     if let [Some(ax), Some(ay), Some(bx), Some(by)] = line {
         space.doorway = Some([[ax, ay], [bx, by]]);
+    }
+    let level: (Option<String>, Option<f64>) = (r.get(at + 12), r.get(at + 13));
+    if let (Some(name), Some(elevation_m)) = level {
+        space.level = Some(Level { name, elevation_m });
     }
     Ok(space)
 }
@@ -386,7 +391,7 @@ pub(super) fn load_at(
     let rows = p.query(
         c,
         "SELECT row_id, space_id, kind, name, attributes::text, anchor_x, anchor_y, geometry,
-                doorway_ax, doorway_ay, doorway_bx, doorway_by
+                doorway_ax, doorway_ay, doorway_bx, doorway_by, level_name, level_elevation
          FROM spaces WHERE map_id = $1 AND valid_from <= $2
            AND (valid_to IS NULL OR valid_to > $2)",
         &[&map_id, &seq],

@@ -11,6 +11,7 @@ use crate::store::StoreError;
 const MIGRATIONS: &[&str] = &[
     include_str!("../../../migrations/postgres/0001_init.sql"),
     include_str!("../../../migrations/postgres/0002_georef.sql"),
+    include_str!("../../../migrations/postgres/0003_levels.sql"),
 ];
 
 /// The newest PostgreSQL schema version this build knows.

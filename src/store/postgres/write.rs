@@ -143,9 +143,10 @@ fn write_revision(
     }
     let insert =
         "INSERT INTO spaces (map_id, space_id, valid_from, kind, name, attributes, anchor_x,
-             anchor_y, geometry, geom, doorway_ax, doorway_ay, doorway_bx, doorway_by)
+             anchor_y, geometry, geom, doorway_ax, doorway_ay, doorway_bx, doorway_by,
+             level_name, level_elevation)
          VALUES ($1, $2, $3, $4, $5, $6::text::json, $7, $8, $9, ST_GeomFromWKB($10, 0),
-                 $11, $12, $13, $14)";
+                 $11, $12, $13, $14, $15, $16)";
     for s in &delta.open_spaces {
         let attributes = serde_json::Value::Object(s.attributes.clone()).to_string();
         let wkb = polygon_wkb(s)?;
@@ -167,6 +168,8 @@ fn write_revision(
                 &s.doorway.map(|l| l[0][1]),
                 &s.doorway.map(|l| l[1][0]),
                 &s.doorway.map(|l| l[1][1]),
+                &s.level.as_ref().map(|l| l.name.as_str()),
+                &s.level.as_ref().map(|l| l.elevation_m),
             ],
         )?;
     }

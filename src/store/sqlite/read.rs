@@ -6,7 +6,7 @@ use std::str::FromStr;
 use rusqlite::{Connection, OptionalExtension, Row, params};
 
 use super::fault::{R, fail};
-use crate::model::{Connection as Link, ConnectionKind, Nrg, Space, SpaceId, SpaceKind};
+use crate::model::{Connection as Link, ConnectionKind, Level, Nrg, Space, SpaceId, SpaceKind};
 use crate::store::delta::smallest_containing;
 use crate::store::geometry_blob;
 use crate::store::{EncodedGrid, MapInfo, RevisionInfo, StoreError};
@@ -202,11 +202,11 @@ pub(super) fn load_at(conn: &Connection, map_id: i64, map: &str, seq: u32) -> R<
     let is_latest = seq == latest(conn, map_id)?;
     let mut stmt = conn.prepare_cached(if is_latest {
         "SELECT row_id, space_id, kind, name, attributes, anchor_x, anchor_y, geometry,
-                doorway_ax, doorway_ay, doorway_bx, doorway_by
+                doorway_ax, doorway_ay, doorway_bx, doorway_by, level_name, level_elevation
          FROM spaces WHERE map_id = ?1 AND valid_to IS NULL AND ?2 > 0"
     } else {
         "SELECT row_id, space_id, kind, name, attributes, anchor_x, anchor_y, geometry,
-                doorway_ax, doorway_ay, doorway_bx, doorway_by
+                doorway_ax, doorway_ay, doorway_bx, doorway_by, level_name, level_elevation
          FROM spaces WHERE map_id = ?1 AND valid_from <= ?2
            AND (valid_to IS NULL OR valid_to > ?2)"
     })?;
@@ -231,6 +231,10 @@ pub(super) fn load_at(conn: &Connection, map_id: i64, map: &str, seq: u32) -> R<
         let line: [Option<f64>; 4] = [r.get(8)?, r.get(9)?, r.get(10)?, r.get(11)?];
         if let [Some(ax), Some(ay), Some(bx), Some(by)] = line {
             space.doorway = Some([[ax, ay], [bx, by]]);
+        }
+        let level: (Option<String>, Option<f64>) = (r.get(12)?, r.get(13)?);
+        if let (Some(name), Some(elevation_m)) = level {
+            space.level = Some(Level { name, elevation_m });
         }
         spaces.push(space);
     }

@@ -15,6 +15,7 @@ const MIGRATIONS: &[M<'static>] = &[
     M::up(include_str!("../../../migrations/0003_doorways.sql")),
     M::up(include_str!("../../../migrations/0004_corrections.sql")),
     M::up(include_str!("../../../migrations/0005_georef.sql")),
+    M::up(include_str!("../../../migrations/0006_levels.sql")),
 ];
 
 /// The newest schema version this build knows (the number of migrations).

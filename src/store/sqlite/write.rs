@@ -182,8 +182,8 @@ fn insert_space(conn: &Connection, map_id: i64, seq: u32, s: &Space) -> R<()> {
     let attributes = serde_json::Value::Object(s.attributes.clone()).to_string();
     conn.prepare_cached(
         "INSERT INTO spaces (map_id, space_id, valid_from, kind, name, attributes, anchor_x, anchor_y, geometry,
-                             doorway_ax, doorway_ay, doorway_bx, doorway_by)
-         VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13)",
+                             doorway_ax, doorway_ay, doorway_bx, doorway_by, level_name, level_elevation)
+         VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15)",
     )?
     .execute(params![
         map_id,
@@ -199,6 +199,8 @@ fn insert_space(conn: &Connection, map_id: i64, seq: u32, s: &Space) -> R<()> {
         s.doorway.map(|l| l[0][1]),
         s.doorway.map(|l| l[1][0]),
         s.doorway.map(|l| l[1][1]),
+        s.level.as_ref().map(|l| l.name.as_str()),
+        s.level.as_ref().map(|l| l.elevation_m),
     ])?;
     let row_id = conn.last_insert_rowid();
     let [min_x, max_x, min_y, max_y] = bounding_box(s);
