@@ -37,6 +37,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod building;
 mod correct;
 mod error;
 mod read;
@@ -44,6 +45,7 @@ mod recording;
 mod source;
 mod valid;
 
+pub use building::{MAX_CONNECTORS, MAX_LEVELS};
 pub use correct::{CorrectError, Corrected, edit};
 pub use error::IngestError;
 pub use read::{IngestOptions, InputFile, Prepared, read, read_path};

@@ -15,8 +15,9 @@ use super::{load_model_into, report_fixes};
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// The model: .gml/.xml (IndoorGML), .json, .geojson, .yaml (a ROS occupancy map, extracted
-    /// first), or a ROS 2 recording (.mcap, .db3, or a bag folder with metadata.yaml: one revision
-    /// per map that changed).
+    /// first), .toml (a building manifest: each level's map, its elevation, the stairs and lifts),
+    /// or a ROS 2 recording (.mcap, .db3, or a bag folder with metadata.yaml: one revision per map
+    /// that changed).
     pub file: PathBuf,
     /// The map to add a revision to.
     #[arg(long, value_name = "NAME")]

@@ -34,6 +34,10 @@ pub struct Args {
     /// door-wide aisles, desk clusters with chairs, a counter and a table.
     #[arg(long)]
     pub clutter: bool,
+    /// A building of this many levels (2 to 50): the same plan on each, one robot run per
+    /// level, written to `OUT/levelK/` with `OUT/building.toml` for `nrgdb import`.
+    #[arg(long, value_name = "N")]
+    pub levels: Option<usize>,
 }
 
 /// Runs the subcommand.
@@ -43,6 +47,28 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     params.plan.furniture = args.furniture;
     params.plan.non_manhattan = args.non_manhattan;
     params.plan.clutter = args.clutter;
+    if let Some(levels) = args.levels {
+        let files = nrgdb::sim::write_storeys(&args.out, &params, levels)
+            .into_diagnostic()
+            .wrap_err_with(|| {
+                format!(
+                    "cannot simulate {levels} levels into {}",
+                    args.out.display()
+                )
+            })?;
+        writeln!(
+            out,
+            "simulated seed {}: {levels} levels, stairs at ({:.2}, {:.2}), Lift A at ({:.2}, {:.2})\nwrote building manifest: {}",
+            args.seed,
+            files.stairs_at[0],
+            files.stairs_at[1],
+            files.lift_at[0],
+            files.lift_at[1],
+            files.manifest.display()
+        )
+        .into_diagnostic()?;
+        return Ok(ExitCode::SUCCESS);
+    }
     let sim = simulate(&params)
         .into_diagnostic()
         .wrap_err("cannot simulate")?;

@@ -55,6 +55,9 @@ pub enum FileKind {
     Model(ModelFormat),
     /// A ROS 2 recording (rosbag2) holding maps.
     Recording(RecordingFormat),
+    /// A building manifest (TOML): each level's map, elevation and the
+    /// stairs and lifts between them.
+    Building,
 }
 
 impl std::fmt::Display for FileKind {
@@ -69,6 +72,7 @@ impl std::fmt::Display for FileKind {
             FileKind::Model(ModelFormat::IndoorJson) => "IndoorJSON2 (IndoorGML 2.0 draft)",
             FileKind::Recording(RecordingFormat::Mcap) => "a ROS 2 recording (MCAP)",
             FileKind::Recording(RecordingFormat::Db3) => "a ROS 2 bag (SQLite)",
+            FileKind::Building => "a building manifest (TOML)",
         })
     }
 }
@@ -123,6 +127,7 @@ impl FileKind {
             "geojson" => FileKind::Model(ModelFormat::GeoJson),
             "mcap" => FileKind::Recording(RecordingFormat::Mcap),
             "db3" => FileKind::Recording(RecordingFormat::Db3),
+            "toml" => FileKind::Building,
             _ => return None,
         })
     }
@@ -242,6 +247,9 @@ fn content(bytes: &[u8]) -> Content {
     if looks_like_map_yaml(text) {
         return Content::Kind(FileKind::MapYaml);
     }
+    if looks_like_manifest(text) {
+        return Content::Kind(FileKind::Building);
+    }
     Content::Unknown
 }
 
@@ -260,6 +268,14 @@ fn looks_like_map_yaml(text: &[u8]) -> bool {
             .iter()
             .any(|k| l.starts_with(k))
     })
+}
+
+/// A building manifest has a `[[level]]` table in its first few KiB.
+fn looks_like_manifest(text: &[u8]) -> bool {
+    let head = &text[..text.len().min(4096)];
+    String::from_utf8_lossy(head)
+        .lines()
+        .any(|l| l.trim() == "[[level]]")
 }
 
 /// Decides what `bytes` are, given what was `declared` about them (see

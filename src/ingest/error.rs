@@ -34,6 +34,24 @@ pub enum IngestError {
         /// The cause.
         source: ExtractError,
     },
+    /// A building manifest that cannot be used.
+    #[error("{path}: line {line}: {message}")]
+    Manifest {
+        /// The manifest.
+        path: PathBuf,
+        /// The line of the entry concerned (1-based).
+        line: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// A building manifest given as bytes: its maps are files beside it.
+    #[error(
+        "{path}: a building manifest names map files beside it; import it from disk (`nrgdb import building.toml --map NAME`)"
+    )]
+    ManifestNotFromDisk {
+        /// The manifest.
+        path: PathBuf,
+    },
     /// A map YAML came without an image.
     #[error("{yaml}: a map YAML needs its image (a PGM or PNG file)")]
     MapWithoutImage {

@@ -139,6 +139,11 @@ pub fn read(files: &[InputFile<'_>], options: &IngestOptions) -> Result<Prepared
                     path: file.label().into(),
                 });
             }
+            FileKind::Building => {
+                return Err(IngestError::ManifestNotFromDisk {
+                    path: file.label().into(),
+                });
+            }
             FileKind::Model(f) => {
                 if let Some((_, first)) = model.replace((f, file)) {
                     return Err(twice("model file", first, file));
@@ -179,6 +184,7 @@ pub fn read_path(path: &Path, options: &IngestOptions) -> Result<Prepared, Inges
         FileKind::Model(format) => read_model(&file, format, options),
         FileKind::Image(_) => Err(IngestError::ImageWithoutMap { image: path.into() }),
         FileKind::Recording(_) => Err(IngestError::Recording { path: path.into() }),
+        FileKind::Building => super::building::read_building(path, options),
         FileKind::MapYaml => {
             let text = format::utf8_text(&bytes, path, FileKind::MapYaml)?;
             let image_path = MapYaml::parse(text, path)?.image;

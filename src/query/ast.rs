@@ -333,11 +333,15 @@ pub struct WalkOptions {
     pub min_door_width_m: Option<f64>,
     /// Walking speed, metres per second.
     pub speed_m_s: Option<f64>,
+    /// `NO STAIRS`: never take stairs between levels.
+    pub no_stairs: bool,
+    /// `NO ELEVATOR`: never take a lift between levels.
+    pub no_elevator: bool,
 }
 
 impl fmt::Display for WalkOptions {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let parts: Vec<String> = [
+        let mut parts: Vec<String> = [
             ("CLEARANCE", self.clearance_m),
             ("MIN_DOOR_WIDTH", self.min_door_width_m),
             ("SPEED", self.speed_m_s),
@@ -345,6 +349,12 @@ impl fmt::Display for WalkOptions {
         .iter()
         .filter_map(|(k, v)| v.map(|v| format!("{k} {}", number(v))))
         .collect();
+        if self.no_stairs {
+            parts.push("NO STAIRS".into());
+        }
+        if self.no_elevator {
+            parts.push("NO ELEVATOR".into());
+        }
         if !parts.is_empty() {
             write!(f, " WITH {}", parts.join(", "))?;
         }

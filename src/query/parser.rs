@@ -434,15 +434,33 @@ impl Parser {
         })
     }
 
-    /// `[WITH CLEARANCE r [,] MIN_DOOR_WIDTH w [,] SPEED v]`, any order,
-    /// each at most once.
+    /// `[WITH CLEARANCE r [,] MIN_DOOR_WIDTH w [,] SPEED v [,] NO STAIRS
+    /// [,] NO ELEVATOR]`, any order, each at most once.
     fn walk_options(&mut self) -> Result<WalkOptions, QueryError> {
         let mut with = WalkOptions::default();
         if !self.eat_word("WITH") {
             return Ok(with);
         }
-        const OPTIONS: [&str; 3] = ["CLEARANCE", "MIN_DOOR_WIDTH", "SPEED"];
+        const OPTIONS: [&str; 4] = ["CLEARANCE", "MIN_DOOR_WIDTH", "SPEED", "NO"];
         loop {
+            if self.eat_word("NO") {
+                let flag = if self.eat_word("STAIRS") {
+                    &mut with.no_stairs
+                } else if self.eat_word("ELEVATOR") {
+                    &mut with.no_elevator
+                } else {
+                    return Err(self.expected(&["STAIRS", "ELEVATOR"]));
+                };
+                if *flag {
+                    return Err(self.expected(&["each WITH option once"]));
+                }
+                *flag = true;
+                self.eat_punct(",");
+                if !OPTIONS.iter().any(|o| self.at_word(o)) {
+                    return Ok(with);
+                }
+                continue;
+            }
             let slot = if self.eat_word("CLEARANCE") {
                 &mut with.clearance_m
             } else if self.eat_word("MIN_DOOR_WIDTH") {

@@ -219,6 +219,8 @@ fn profile(with: &WalkOptions) -> Result<Profile, QueryError> {
         clearance_m: with.clearance_m.unwrap_or(d.clearance_m),
         min_door_width_m: with.min_door_width_m.unwrap_or(d.min_door_width_m),
         speed_m_s: with.speed_m_s.unwrap_or(d.speed_m_s),
+        no_stairs: with.no_stairs,
+        no_elevator: with.no_elevator,
     };
     p.validate().map_err(QueryError::Route)?;
     Ok(p)

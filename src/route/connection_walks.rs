@@ -75,6 +75,25 @@ fn straight(nrg: &Nrg, c: &Connection) -> ConnectionWalk {
     }
 }
 
+/// The walks of a model with levels, level by level: each level's spaces
+/// and connections on a navigation layer of their own (floors stacked in
+/// one plane would overlap), then the vertical connections with their own
+/// costs.
+fn walks_per_level(nav: &NavMesh) -> Vec<ConnectionWalk> {
+    let nrg = nav.nrg();
+    let mut walks: Vec<ConnectionWalk> = nav.floors().navs().flat_map(connection_walks).collect();
+    walks.extend(
+        nrg.connections()
+            .iter()
+            .filter(|c| c.kind == ConnectionKind::Vertical)
+            .map(|c| ConnectionWalk {
+                length_m: c.length_m,
+                ..straight(nrg, c)
+            }),
+    );
+    walks
+}
+
 /// A model as nrgdb stores and writes it: every navigable connection's
 /// `length_m` is its walked length, and `paths` holds the walked polyline
 /// of each (what IndoorGML Transitions and GeoJSON connection lines draw).
@@ -111,7 +130,11 @@ impl WalkedModel {
     /// [`walked_model`] over an already built navigation layer (a cached
     /// revision's).
     pub fn on(nav: &NavMesh) -> WalkedModel {
-        let walks = connection_walks(nav);
+        let walks = if nav.nrg().levels().is_empty() {
+            connection_walks(nav)
+        } else {
+            walks_per_level(nav)
+        };
         let mut changed = 0;
         let mut paths = ConnectionPaths::new();
         let mut walked: std::collections::HashMap<(SpaceId, SpaceId), f64> =

@@ -43,4 +43,19 @@ pub enum RouteError {
         /// Its value.
         value: f64,
     },
+    /// Alternatives asked in a building with levels.
+    #[error(
+        "this map has {0} levels; alternative routes across levels are not computed yet (drop ALTERNATIVES)"
+    )]
+    Levels(usize),
+    /// A point given as a route's stop in a building with levels.
+    #[error(
+        "({x}, {y}): in a building with levels a route's stops are spaces (a point does not say its level)"
+    )]
+    PointNeedsLevel {
+        /// The point's x.
+        x: f64,
+        /// Its y.
+        y: f64,
+    },
 }

@@ -25,6 +25,7 @@
 //! assert!(routes[0].length_m > 0.0);
 //! ```
 
+mod across_levels;
 mod alternatives;
 mod budget;
 mod connection_walks;

@@ -12,6 +12,11 @@ use crate::model::SpaceId;
 /// Checks the request and the avoided spaces against its stops.
 pub(crate) fn check_request(nav: &NavMesh, request: &RouteRequest) -> Result<(), RouteError> {
     request.profile.validate()?;
+    // Alternatives are not computed across levels yet.
+    let levels = nav.nrg().levels().len();
+    if levels > 0 {
+        return Err(RouteError::Levels(levels));
+    }
     for stop in stops(request) {
         if let Endpoint::Space(id) = stop {
             if nav.nrg().space(*id).is_none() {
@@ -39,6 +44,9 @@ pub(crate) fn route_avoiding(
     avoid: &[SpaceId],
     budget: &Budget,
 ) -> Result<Option<Route>, RouteError> {
+    if !nav.nrg().levels().is_empty() {
+        return super::across_levels::route_across_levels(nav, request, avoid, budget);
+    }
     check_request(nav, request)?;
     let level = nav.level(&request.profile);
     let banned = nav.banned(&level, avoid, &request.profile);

@@ -25,6 +25,7 @@ mod ray_cast;
 mod robot_path;
 mod separation;
 mod simulate;
+mod storeys;
 
 pub use bresenham::bresenham;
 pub use carmen::{DEFAULT_NO_RETURN_M, parse_carmen, read_carmen};
@@ -40,3 +41,4 @@ pub use ray_cast::{WallIndex, ray_segment};
 pub use robot_path::{Pose, sample_poses};
 pub use separation::separation_gap;
 pub use simulate::{SimFiles, SimParams, Simulation, simulate, write_simulation};
+pub use storeys::{MAX_SIM_LEVELS, STOREY_HEIGHT_M, StoreyFiles, write_storeys};

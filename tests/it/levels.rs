@@ -107,3 +107,293 @@ fn sample_201_reads_as_its_three_floors() {
     per_level.sort_unstable();
     assert!(per_level[0] >= 10, "{per_level:?}");
 }
+
+/// Runs nrgdb in `dir` and returns (success, stdout + stderr).
+fn run(dir: &std::path::Path, args: &[&str]) -> (bool, String) {
+    let out = crate::support::nrgdb(dir, args);
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stdout).to_string() + &String::from_utf8_lossy(&out.stderr),
+    )
+}
+
+fn model(dir: &std::path::Path, file: &str) -> nrgdb::model::Nrg {
+    nrgdb::model::Nrg::from_json(&std::fs::read_to_string(dir.join(file)).unwrap()).unwrap()
+}
+
+#[test]
+fn a_simulated_tower_imports_from_its_manifest_level_by_level() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let (ok, said) = run(
+        d,
+        &["simulate", "--levels", "3", "--seed", "3", "--out", "sim"],
+    );
+    assert!(ok, "{said}");
+    let db = ["--db", "t.sqlite"];
+    let (ok, said) = run(
+        d,
+        &[&["import", "sim/building.toml", "--map", "tower"][..], &db].concat(),
+    );
+    assert!(ok, "{said}");
+    // Each level alone, as the single-floor import extracts it.
+    let (ok, said) = run(
+        d,
+        &[&["import", "sim/level0/map.yaml", "--map", "flat"][..], &db].concat(),
+    );
+    assert!(ok, "{said}");
+    assert!(
+        run(
+            d,
+            &[&["export", "tower", "--out", "tower.json"][..], &db].concat()
+        )
+        .0
+    );
+    assert!(
+        run(
+            d,
+            &[&["export", "flat", "--out", "flat.json"][..], &db].concat()
+        )
+        .0
+    );
+    let (tower, flat) = (model(d, "tower.json"), model(d, "flat.json"));
+    let levels = tower.levels();
+    assert_eq!(
+        levels
+            .iter()
+            .map(|l| (l.name.as_str(), l.elevation_m))
+            .collect::<Vec<_>>(),
+        [("0", 0.0), ("1", 3.5), ("2", 7.0)]
+    );
+    let on = |name: &str| {
+        tower
+            .spaces()
+            .iter()
+            .filter(|s| s.level.as_ref().is_some_and(|l| l.name == name))
+            .count()
+    };
+    assert_eq!(on("0"), flat.spaces().len());
+    // The stairwell and the lift shaft on every level, joined: stairs
+    // between neighbours (3.5 m of rise: 14 m), the lift between every pair.
+    let count = |k: SpaceKind| tower.spaces().iter().filter(|s| s.kind == k).count();
+    assert_eq!(
+        (count(SpaceKind::Stairs), count(SpaceKind::Elevator)),
+        (3, 3)
+    );
+    let mut vertical: Vec<(SpaceKind, f64)> = tower
+        .connections()
+        .iter()
+        .filter(|c| c.kind == ConnectionKind::Vertical)
+        .map(|c| (tower.space(c.a).unwrap().kind, c.length_m))
+        .collect();
+    vertical.sort_by(|a, b| a.1.total_cmp(&b.1));
+    let expected = [
+        (SpaceKind::Stairs, nrgdb::model::stairs_length_m(3.5)),
+        (SpaceKind::Stairs, nrgdb::model::stairs_length_m(3.5)),
+        (SpaceKind::Elevator, nrgdb::model::elevator_length_m(1)),
+        (SpaceKind::Elevator, nrgdb::model::elevator_length_m(1)),
+        (SpaceKind::Elevator, nrgdb::model::elevator_length_m(2)),
+    ];
+    assert_eq!(vertical.len(), expected.len(), "{vertical:?}");
+    for (got, want) in vertical.iter().zip(&expected) {
+        assert_eq!(got.0, want.0);
+        assert!((got.1 - want.1).abs() < 1e-9, "{got:?} vs {want:?}");
+    }
+    // The same manifest again: nothing changed, no revision.
+    let (ok, said) = run(
+        d,
+        &[&["import", "sim/building.toml", "--map", "tower"][..], &db].concat(),
+    );
+    assert!(ok && said.contains("nothing changed"), "{said}");
+    // Level 1 re-mapped (another robot run of the same floor): the new
+    // revision changes level 1 only; levels 0 and 2 are kept as they were.
+    for file in ["map.pgm", "map.yaml"] {
+        std::fs::copy(
+            d.join("sim/level2").join(file),
+            d.join("sim/level1").join(file),
+        )
+        .unwrap();
+    }
+    let (ok, said) = run(
+        d,
+        &[&["import", "sim/building.toml", "--map", "tower"][..], &db].concat(),
+    );
+    assert!(ok && said.contains("tower@2"), "{said}");
+    assert!(
+        run(
+            d,
+            &[&["export", "tower@2", "--out", "tower2.json"][..], &db].concat()
+        )
+        .0
+    );
+    let again = model(d, "tower2.json");
+    let level_of = |nrg: &nrgdb::model::Nrg, name: &str| -> Vec<nrgdb::model::Space> {
+        nrg.spaces()
+            .iter()
+            .filter(|s| s.level.as_ref().is_some_and(|l| l.name == name))
+            .cloned()
+            .collect()
+    };
+    assert_eq!(level_of(&again, "0"), level_of(&tower, "0"));
+    assert_eq!(level_of(&again, "2"), level_of(&tower, "2"));
+    assert_ne!(level_of(&again, "1"), level_of(&tower, "1"));
+}
+
+#[test]
+fn a_bad_manifest_names_its_line_and_stores_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    assert!(
+        run(
+            d,
+            &["simulate", "--levels", "2", "--seed", "3", "--out", "sim"]
+        )
+        .0
+    );
+    let good = std::fs::read_to_string(d.join("sim/building.toml")).unwrap();
+    let cases: Vec<(&str, String, &str)> = vec![
+        (
+            "missing map",
+            good.replace("level1/map.yaml", "level9/map.yaml"),
+            "does not exist",
+        ),
+        (
+            "same level name twice",
+            good.replace("name = \"1\"", "name = \"0\""),
+            "listed twice",
+        ),
+        (
+            "a lift serving one level",
+            good.replace("levels = [\"0\", \"1\"]", "levels = [\"1\"]"),
+            "serves 1 level",
+        ),
+        (
+            "a transform with NaN",
+            good.replace(
+                "map = \"level1/map.yaml\"",
+                "map = \"level1/map.yaml\"\ntransform = { x = nan }",
+            ),
+            "not a finite number",
+        ),
+        (
+            "stairs on one level",
+            good.replace("level = \"1\" }", "level = \"0\" }"),
+            "stairs join two levels",
+        ),
+    ];
+    for (what, text, says) in cases {
+        std::fs::write(d.join("sim/bad.toml"), &text).unwrap();
+        let (ok, said) = run(
+            d,
+            &["import", "sim/bad.toml", "--map", "b", "--db", "t.sqlite"],
+        );
+        assert!(!ok, "{what}: {said}");
+        assert!(said.contains("bad.toml: line "), "{what}: {said}");
+        assert!(said.contains(says), "{what}: {said}");
+        let maps = run(d, &["maps", "--db", "t.sqlite"]).1;
+        assert!(!maps.lines().any(|l| l.starts_with("b ")), "{what}: {maps}");
+    }
+    // A lift standing outside every space.
+    let lift_line = good.lines().find(|l| l.starts_with("at = [")).unwrap();
+    let far = good.replace(lift_line, "at = [-500.0, -500.0]");
+    std::fs::write(d.join("sim/far.toml"), far).unwrap();
+    let (ok, said) = run(
+        d,
+        &["import", "sim/far.toml", "--map", "b", "--db", "t.sqlite"],
+    );
+    assert!(
+        !ok && said.contains("lies outside every space of that level"),
+        "{said}"
+    );
+    assert!(said.contains("far.toml: line "), "{said}");
+}
+
+/// The shortest route in `nrg` (exact profile unless given).
+fn route(
+    nav: &nrgdb::route::NavMesh,
+    from: u32,
+    to: u32,
+    profile: nrgdb::route::Profile,
+) -> Result<Option<nrgdb::route::Route>, nrgdb::route::RouteError> {
+    let mut request =
+        nrgdb::route::RouteRequest::new(nrgdb::model::SpaceId(from), nrgdb::model::SpaceId(to));
+    request.profile = profile;
+    nrgdb::route::shortest_route(nav, &request, &nrgdb::route::Budget::unlimited())
+        .map(|mut r| r.pop())
+}
+
+/// Routes across levels are the shortest combination of walks on each
+/// level and the rides between them: the test enumerates the ways (two
+/// flights of stairs, or the lift) from walks it asks level by level,
+/// and checks the route takes the cheapest allowed.
+#[test]
+fn routes_cross_levels_by_the_cheapest_allowed_way() {
+    use nrgdb::model::{elevator_length_m, stairs_length_m};
+    use nrgdb::route::{NavMesh, Profile};
+    let nrg = walked_model(&nrgdb::fixtures::storeys(3, 4)).nrg;
+    let nav = NavMesh::new(std::sync::Arc::new(nrg.clone()));
+    let exact = Profile::exact();
+    // Room 10 on level 0 to room 13 on level 2 (ids + 100 000 a level).
+    let (from, to) = (10, 200_013);
+    let (stairs, lift) = (90_000, 90_001);
+    let walk = |a: u32, b: u32| route(&nav, a, b, exact).unwrap().unwrap().length_m;
+    let by_stairs = walk(from, stairs) + 2.0 * stairs_length_m(3.5) + walk(200_000 + stairs, to);
+    let by_lift = walk(from, lift) + elevator_length_m(2) + walk(200_000 + lift, to);
+    let best = route(&nav, from, to, exact).unwrap().unwrap();
+    assert!(
+        (best.length_m - by_stairs.min(by_lift)).abs() < 1e-6,
+        "{} vs {by_stairs} / {by_lift}",
+        best.length_m
+    );
+    let said: Vec<String> = best.steps.iter().map(|s| s.instruction.clone()).collect();
+    assert!(
+        said.iter()
+            .any(|s| s == "walk up the West stairs L0 to level 1"),
+        "{said:?}"
+    );
+    assert!(
+        said.iter()
+            .any(|s| s == "walk up the West stairs L1 to level 2"),
+        "{said:?}"
+    );
+    assert!(said.last().unwrap().starts_with("arrive at"), "{said:?}");
+    assert_eq!(*best.spaces.first().unwrap(), nrgdb::model::SpaceId(from));
+    assert_eq!(*best.spaces.last().unwrap(), nrgdb::model::SpaceId(to));
+    // Without stairs: the lift, at its own cost.
+    let no_stairs = Profile {
+        no_stairs: true,
+        ..exact
+    };
+    let lifted = route(&nav, from, to, no_stairs).unwrap().unwrap();
+    assert!(
+        (lifted.length_m - by_lift).abs() < 1e-6,
+        "{} vs {by_lift}",
+        lifted.length_m
+    );
+    let said: Vec<String> = lifted.steps.iter().map(|s| s.instruction.clone()).collect();
+    assert!(
+        said.iter()
+            .any(|s| s == "take Lift A L0 from level 0 to level 2"),
+        "{said:?}"
+    );
+    assert!(!said.iter().any(|s| s.contains("stairs")), "{said:?}");
+    // Neither stairs nor lift: no route between levels, one within a level.
+    let neither = Profile {
+        no_stairs: true,
+        no_elevator: true,
+        ..exact
+    };
+    assert!(route(&nav, from, to, neither).unwrap().is_none());
+    let same_level = route(&nav, from, 13, neither).unwrap().unwrap();
+    assert!((same_level.length_m - walk(from, 13)).abs() < 1e-9);
+    // A point has no level: a clear error.
+    let mut request = nrgdb::route::RouteRequest::between(
+        nrgdb::route::Endpoint::Point([2.0, 4.0]),
+        nrgdb::route::Endpoint::Space(nrgdb::model::SpaceId(to)),
+    );
+    request.profile = exact;
+    let err = nrgdb::route::shortest_route(&nav, &request, &nrgdb::route::Budget::unlimited())
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("does not say its level"), "{err}");
+}

@@ -168,12 +168,18 @@ fn walk_options() -> impl Strategy<Value = WalkOptions> {
         proptest::option::of(number()),
         proptest::option::of(number()),
         proptest::option::of(number()),
+        any::<bool>(),
+        any::<bool>(),
     )
-        .prop_map(|(clearance_m, min_door_width_m, speed_m_s)| WalkOptions {
-            clearance_m,
-            min_door_width_m,
-            speed_m_s,
-        })
+        .prop_map(
+            |(clearance_m, min_door_width_m, speed_m_s, no_stairs, no_elevator)| WalkOptions {
+                clearance_m,
+                min_door_width_m,
+                speed_m_s,
+                no_stairs,
+                no_elevator,
+            },
+        )
 }
 
 proptest! {

@@ -59,6 +59,12 @@ pub struct Profile {
     pub min_door_width_m: f64,
     /// Walking speed for durations, metres per second.
     pub speed_m_s: f64,
+    /// Never take stairs between levels (a wheelchair, most robots).
+    #[serde(default)]
+    pub no_stairs: bool,
+    /// Never take a lift between levels.
+    #[serde(default)]
+    pub no_elevator: bool,
 }
 
 impl Default for Profile {
@@ -67,6 +73,8 @@ impl Default for Profile {
             clearance_m: 0.2,
             min_door_width_m: 0.0,
             speed_m_s: 1.4,
+            no_stairs: false,
+            no_elevator: false,
         }
     }
 }
@@ -118,6 +126,9 @@ pub struct NavMesh {
     nrg: Arc<Nrg>,
     exact: Arc<Level>,
     by_clearance: Mutex<HashMap<u32, Arc<Level>>>,
+    /// A building's floors, each with its own layer (built on the first
+    /// route of a model with levels).
+    floors: std::sync::OnceLock<crate::route::across_levels::Floors>,
 }
 
 /// The mesh and tables for one clearance.
@@ -168,7 +179,14 @@ impl NavMesh {
             nrg,
             exact,
             by_clearance: Mutex::new(HashMap::new()),
+            floors: std::sync::OnceLock::new(),
         }
+    }
+
+    /// The floors of a model with levels, each on its own layer.
+    pub(crate) fn floors(&self) -> &crate::route::across_levels::Floors {
+        self.floors
+            .get_or_init(|| crate::route::across_levels::Floors::new(&self.nrg))
     }
 
     /// The model this layer was built from.

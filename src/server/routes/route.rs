@@ -17,7 +17,7 @@ use crate::server::state::{AppState, Ctx};
 use crate::route::MAX_ALTERNATIVES;
 
 /// Query parameters of the route endpoint.
-pub const PARAMS: [ParamDoc; 10] = [
+pub const PARAMS: [ParamDoc; 12] = [
     q(
         "from",
         "string",
@@ -71,6 +71,18 @@ pub const PARAMS: [ParamDoc; 10] = [
         "number",
         false,
         "walking speed for durations, m/s (default 1.4)",
+    ),
+    q(
+        "no_stairs",
+        "boolean",
+        false,
+        "true: never take stairs between levels (a wheelchair, most robots)",
+    ),
+    q(
+        "no_elevator",
+        "boolean",
+        false,
+        "true: never take a lift between levels",
     ),
     REV,
 ];
@@ -149,10 +161,19 @@ fn profile(p: &Params) -> Result<Profile, ApiError> {
             parse_value(name, raw.trim(), "a number of metres")
         })
     };
+    let flag = |name: &str| -> Result<bool, ApiError> {
+        match p.get(name).map(str::trim) {
+            None | Some("false") => Ok(false),
+            Some("true") => Ok(true),
+            Some(other) => Err(ApiError::bad(name, format!("'{other}': use true or false"))),
+        }
+    };
     let profile = Profile {
         clearance_m: number("clearance", d.clearance_m)?,
         min_door_width_m: number("min_door_width", d.min_door_width_m)?,
         speed_m_s: number("speed", d.speed_m_s)?,
+        no_stairs: flag("no_stairs")?,
+        no_elevator: flag("no_elevator")?,
     };
     profile.validate().map_err(ApiError::from)?;
     Ok(profile)
@@ -203,6 +224,8 @@ pub async fn route(
             "clearance",
             "min_door_width",
             "speed",
+            "no_stairs",
+            "no_elevator",
             "rev",
         ],
     )?;
