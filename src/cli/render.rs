@@ -51,6 +51,9 @@ pub struct Args {
     /// Leave out the graph (nodes and edges).
     #[arg(long)]
     pub no_graph: bool,
+    /// The level drawn, in a building with levels (each level is a picture of its own).
+    #[arg(long, value_name = "LEVEL")]
+    pub level: Option<String>,
     #[command(flatten)]
     pub db: DbArg,
 }
@@ -81,6 +84,27 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
             (new.rev.nrg, title, Some(overlay))
         }
         None => (base.rev.nrg, base.rev.label, None),
+    };
+    let levels = nrg.levels();
+    let (nrg, title) = match (&args.level, levels.is_empty()) {
+        (None, true) => (nrg, title),
+        (Some(l), true) => miette::bail!("--level {l}: this map has no levels"),
+        (level, false) => {
+            let names: Vec<&str> = levels.iter().map(|l| l.name.as_str()).collect();
+            let Some(l) = level else {
+                miette::bail!(
+                    "this map has levels {}: draw one with --level",
+                    names.join(", ")
+                );
+            };
+            let Some(floor) = nrg.level_model(l) else {
+                miette::bail!(
+                    "--level {l}: no such level (the map has {})",
+                    names.join(", ")
+                );
+            };
+            (floor, format!("{title} level {l}"))
+        }
     };
     let map = background;
     let route = match &args.route {

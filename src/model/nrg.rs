@@ -98,6 +98,27 @@ impl Nrg {
         })
     }
 
+    /// The spaces on level `name` and the connections among them (vertical
+    /// ones leave), as a model of its own; None when no space is on it.
+    pub fn level_model(&self, name: &str) -> Option<Nrg> {
+        let on = |id: SpaceId| {
+            self.space(id)
+                .and_then(|s| s.level.as_ref())
+                .is_some_and(|l| l.name == name)
+        };
+        let spaces: Vec<Space> = self.spaces.iter().filter(|s| on(s.id)).cloned().collect();
+        if spaces.is_empty() {
+            return None;
+        }
+        let connections = self
+            .connections
+            .iter()
+            .filter(|c| on(c.a) && on(c.b))
+            .cloned()
+            .collect();
+        Nrg::new(spaces, connections).ok()
+    }
+
     /// The levels the spaces are on, lowest first (by elevation, then
     /// name); empty for a model without levels.
     pub fn levels(&self) -> Vec<Level> {

@@ -46,10 +46,12 @@ pub enum Statement {
         /// Row limit.
         limit: Option<u64>,
     },
-    /// `LOCATE (x, y)`.
+    /// `LOCATE (x, y) [ON LEVEL l]`.
     Locate {
         /// The point in metres.
         point: [f64; 2],
+        /// The level searched (every level when None).
+        level: Option<String>,
     },
     /// `REACHABLE FROM a WITHIN d [WITH …]` (metres walked).
     Reachable {
@@ -243,6 +245,8 @@ pub enum Field {
     Degree,
     /// `width` in metres (door width, see `exec`).
     Width,
+    /// `level`: the name of the space's level (null without levels).
+    Level,
     /// `attr.key`.
     Attr(String),
 }
@@ -433,8 +437,12 @@ impl fmt::Display for Statement {
                 }
                 Ok(())
             }
-            Statement::Locate { point } => {
-                write!(f, "LOCATE ({}, {})", number(point[0]), number(point[1]))
+            Statement::Locate { point, level } => {
+                write!(f, "LOCATE ({}, {})", number(point[0]), number(point[1]))?;
+                if let Some(l) = level {
+                    write!(f, " ON LEVEL {}", quote(l))?;
+                }
+                Ok(())
             }
             Statement::Reachable {
                 from,
@@ -499,6 +507,7 @@ impl fmt::Display for Field {
             Field::Area => f.write_str("area"),
             Field::Degree => f.write_str("degree"),
             Field::Width => f.write_str("width"),
+            Field::Level => f.write_str("level"),
             Field::Attr(k) => write!(f, "attr.{}", name_or_quoted(k)),
         }
     }

@@ -175,18 +175,29 @@ pub fn execute(
                 rows,
             })
         }
-        Plan::Locate(p) => {
+        Plan::Locate(p, level) => {
+            let leveled = !rev.nrg.levels().is_empty();
             let rows = rev
-                .locate(*p)
+                .locate_on(*p, level.as_deref())
+                .into_iter()
                 .map(|s| {
                     let mut row = space_cells(s);
                     row.push(Cell::Float(s.area_m2));
+                    if leveled {
+                        row.push(Cell::Text(
+                            s.level.as_ref().map_or(String::new(), |l| l.name.clone()),
+                        ));
+                    }
                     row
                 })
-                .into_iter()
                 .collect();
+            let names: &[&str] = if leveled {
+                &["id", "kind", "name", "area_m2", "level"]
+            } else {
+                &["id", "kind", "name", "area_m2"]
+            };
             QueryResult::Table(Table {
-                columns: columns(&["id", "kind", "name", "area_m2"]),
+                columns: columns(names),
                 rows,
             })
         }

@@ -17,6 +17,10 @@ pub fn field_value(field: &Field, space: &Space, rev: &IndexedRevision) -> Value
         Field::Area => Value::Number(space.area_m2),
         Field::Degree => Value::Number(rev.graph.degree(space.id) as f64),
         Field::Width => doorway(space).map_or(Value::Null, |d| Value::Number(d.width_m)),
+        Field::Level => space
+            .level
+            .as_ref()
+            .map_or(Value::Null, |l| Value::Text(l.name.clone())),
         Field::Attr(key) => match space.attributes.get(key) {
             None | Some(serde_json::Value::Null) => Value::Null,
             Some(serde_json::Value::Bool(b)) => Value::Bool(*b),
@@ -52,6 +56,15 @@ fn type_error(field: &Field, value: &Value, hint: &'static str) -> QueryError {
 
 fn compare(field: &Field, left: &Value, op: CompareOp, right: &Value) -> Result<bool, QueryError> {
     use CompareOp::*;
+    // Level names are text; `level = 1` means the level named "1".
+    let as_name;
+    let right = match (field, right) {
+        (Field::Level, Value::Number(n)) if n.fract() == 0.0 && n.abs() < 1e15 => {
+            as_name = Value::Text(format!("{}", *n as i64));
+            &as_name
+        }
+        _ => right,
+    };
     let fixed_numeric = matches!(
         field,
         Field::Id | Field::Area | Field::Degree | Field::Width

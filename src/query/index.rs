@@ -84,6 +84,36 @@ impl IndexedRevision {
             .min_by(|a, b| a.area_m2.total_cmp(&b.area_m2).then(a.id.cmp(&b.id)))
     }
 
+    /// The spaces containing `p`: on `level` only when given, else the
+    /// smallest on each level (one for a model without levels), lowest
+    /// level first.
+    pub fn locate_on(&self, p: Point, level: Option<&str>) -> Vec<&Space> {
+        let mut best: Vec<&Space> = Vec::new();
+        let containing = self
+            .envelopes
+            .locate_all_at_point(&p)
+            .filter_map(|e| self.nrg.spaces().get(e.data))
+            .filter(|s| {
+                level.is_none_or(|l| s.level.as_ref().is_some_and(|m| m.name == l))
+                    && point_in_ring(p, &s.polygon)
+                    && !s.holes.iter().any(|h| point_in_ring(p, h))
+            });
+        for s in containing {
+            let same =
+                |b: &&Space| b.level.as_ref().map(|l| &l.name) == s.level.as_ref().map(|l| &l.name);
+            match best.iter_mut().find(|b| same(b)) {
+                Some(b) if (s.area_m2, s.id) < (b.area_m2, b.id) => *b = s,
+                Some(_) => {}
+                None => best.push(s),
+            }
+        }
+        best.sort_by(|a, b| {
+            let e = |s: &Space| s.level.as_ref().map_or(0.0, |l| l.elevation_m);
+            e(a).total_cmp(&e(b))
+        });
+        best
+    }
+
     /// The error for a point outside every space, naming the nearest one.
     pub fn outside(&self, p: Point) -> RouteError {
         self.nav.outside(p)

@@ -322,9 +322,16 @@ impl Parser {
                 Ok(Statement::Neighbours { of, depth })
             }
             "FIND" => self.find(),
-            "LOCATE" => Ok(Statement::Locate {
-                point: self.point()?,
-            }),
+            "LOCATE" => {
+                let point = self.point()?;
+                let level = if self.eat_word("ON") {
+                    self.expect_word("LEVEL")?;
+                    Some(self.level_name()?)
+                } else {
+                    None
+                };
+                Ok(Statement::Locate { point, level })
+            }
             "REACHABLE" => {
                 self.expect_word("FROM")?;
                 let from = self.space_ref()?;
@@ -481,6 +488,20 @@ impl Parser {
         }
     }
 
+    /// A level's name: `"M"`, `2`, `-1` or a bare word.
+    fn level_name(&mut self) -> Result<String, QueryError> {
+        let t = self.bump();
+        match t.kind {
+            TokenKind::Str(s) => Ok(s),
+            TokenKind::Word => Ok(t.text),
+            TokenKind::Number => Ok(t.text),
+            _ => {
+                self.pos -= 1;
+                Err(self.expected(&["a level name (\"0\", 1, M)"]))
+            }
+        }
+    }
+
     fn ref_list(&mut self) -> Result<Vec<SpaceRef>, QueryError> {
         let mut refs = vec![self.space_ref()?];
         while self.eat_punct(",") {
@@ -632,6 +653,7 @@ impl Parser {
             "area" => Field::Area,
             "degree" => Field::Degree,
             "width" => Field::Width,
+            "level" => Field::Level,
             "attr" => {
                 self.pos += 1;
                 self.expect_punct(".")?;

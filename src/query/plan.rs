@@ -33,7 +33,7 @@ pub enum Plan {
         limit: Option<u64>,
     },
     /// R*-tree then point-in-polygon.
-    Locate(Point),
+    Locate(Point, Option<String>),
     /// Distance-bounded Dijkstra over the navigation layer.
     Reachable {
         /// Start.
@@ -125,9 +125,9 @@ pub fn plan(
                 limit: *limit,
             }
         }
-        Statement::Locate { point } => {
+        Statement::Locate { point, level } => {
             model()?;
-            Plan::Locate(*point)
+            Plan::Locate(*point, level.clone())
         }
         Statement::Reachable {
             from,
@@ -312,10 +312,15 @@ impl fmt::Display for Plan {
                 }
                 Ok(())
             }
-            Plan::Locate(p) => write!(
+            Plan::Locate(p, level) => write!(
                 f,
-                "RTreeEnvelopes at ({}, {})\n  PointInPolygon, smallest area wins",
-                p[0], p[1]
+                "RTreeEnvelopes at ({}, {})\n  PointInPolygon, smallest area wins{}",
+                p[0],
+                p[1],
+                match level {
+                    Some(l) => format!(" on level {l}"),
+                    None => " on each level".to_string(),
+                }
             ),
             Plan::Reachable {
                 from,

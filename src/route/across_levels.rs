@@ -27,22 +27,14 @@ impl Floors {
     pub(crate) fn new(nrg: &Nrg) -> Floors {
         let mut by_level = HashMap::new();
         for level in nrg.levels() {
-            let on = |id: SpaceId| on_level(nrg, id, &level);
+            let Some(floor) = nrg.level_model(&level.name) else {
+                continue;
+            };
             // Each floor alone is a plain one-level model.
-            let spaces = nrg
-                .spaces()
-                .iter()
-                .filter(|s| on(s.id))
-                .map(|s| crate::model::Space {
-                    level: None,
-                    ..s.clone()
-                })
-                .collect();
-            let connections = nrg
-                .connections()
-                .iter()
-                .filter(|c| on(c.a) && on(c.b))
-                .cloned()
+            let (spaces, connections) = floor.into_parts();
+            let spaces = spaces
+                .into_iter()
+                .map(|s| crate::model::Space { level: None, ..s })
                 .collect();
             if let Ok(floor) = Nrg::new(spaces, connections) {
                 by_level.insert(level.name.clone(), NavMesh::new(Arc::new(floor)));
@@ -55,12 +47,6 @@ impl Floors {
     pub(crate) fn navs(&self) -> impl Iterator<Item = &NavMesh> {
         self.by_level.values()
     }
-}
-
-fn on_level(nrg: &Nrg, id: SpaceId, level: &Level) -> bool {
-    nrg.space(id)
-        .and_then(|s| s.level.as_ref())
-        .is_some_and(|l| l.name == level.name)
 }
 
 fn level_of(nrg: &Nrg, id: SpaceId) -> Option<&Level> {

@@ -199,6 +199,56 @@ fn a_simulated_tower_imports_from_its_manifest_level_by_level() {
         assert_eq!(got.0, want.0);
         assert!((got.1 - want.1).abs() < 1e-9, "{got:?} vs {want:?}");
     }
+    // Where a point is, level by level; FIND by level.
+    let stairs1 = tower
+        .spaces()
+        .iter()
+        .find(|s| s.kind == SpaceKind::Stairs && s.level.as_ref().unwrap().name == "1")
+        .unwrap();
+    let [x, y] = stairs1.anchor;
+    let query = |q: &str| run(d, &["query", "--db", "t.sqlite", "--map", "tower", q]);
+    let (ok, said) = query(&format!("LOCATE ({x}, {y}) ON LEVEL 1"));
+    assert!(ok, "{said}");
+    let rows: Vec<&str> = said.lines().filter(|l| l.contains("stairs")).collect();
+    assert_eq!(rows.len(), 1, "{said}");
+    assert!(
+        rows[0].trim_start().starts_with(&stairs1.id.to_string()),
+        "{said}"
+    );
+    let (ok, said) = query(&format!("LOCATE ({x}, {y})"));
+    assert!(
+        ok && said.contains("(3 rows)"),
+        "one space on each level: {said}"
+    );
+    let (ok, said) = query("FIND stairs WHERE level = 2");
+    assert!(ok && said.contains("(1 row)"), "{said}");
+    let (ok, said) = query("FIND spaces WHERE level = \"0\"");
+    assert!(
+        ok && said.contains(&format!("({} rows)", flat.spaces().len())),
+        "{said}"
+    );
+    // One picture a level.
+    let (ok, said) = run(
+        d,
+        &[
+            &["render", "tower", "--out", "l1.png", "--level", "1"][..],
+            &db,
+        ]
+        .concat(),
+    );
+    assert!(
+        ok && said.contains(&format!("({} spaces)", on("1"))),
+        "{said}"
+    );
+    let (ok, said) = run(
+        d,
+        &[&["render", "tower", "--out", "all.png"][..], &db].concat(),
+    );
+    assert!(
+        !ok && said.contains("levels 0, 1, 2: draw one with --level"),
+        "{said}"
+    );
+    assert!(!d.join("all.png").exists());
     // The same manifest again: nothing changed, no revision.
     let (ok, said) = run(
         d,

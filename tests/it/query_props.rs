@@ -44,6 +44,7 @@ fn field() -> impl Strategy<Value = Field> {
         Just(Field::Area),
         Just(Field::Degree),
         Just(Field::Width),
+        Just(Field::Level),
         text().prop_map(Field::Attr),
     ]
 }
@@ -122,7 +123,12 @@ fn statement() -> impl Strategy<Value = Statement> {
                 order,
                 limit
             }),
-        (number(), number()).prop_map(|(x, y)| Statement::Locate { point: [x, y] }),
+        (number(), number(), proptest::option::of(text())).prop_map(|(x, y, level)| {
+            Statement::Locate {
+                point: [x, y],
+                level,
+            }
+        }),
         (space_ref(), number(), walk_options()).prop_map(|(from, within_m, with)| {
             Statement::Reachable {
                 from,
