@@ -13,7 +13,7 @@ use std::sync::Arc;
 
 use super::route_avoiding::route_avoiding;
 use super::steps::{Step, Turn};
-use super::{Budget, Endpoint, NavMesh, Route, RouteError, RouteRequest};
+use super::{Budget, Endpoint, LevelSpan, NavMesh, Route, RouteError, RouteRequest};
 use crate::model::{ConnectionKind, Level, Nrg, SpaceId, SpaceKind};
 
 /// The floors of a building, each with its own navigation layer.
@@ -253,18 +253,27 @@ fn joined(nrg: &Nrg, parts: Vec<Part>, leg_lengths_m: Vec<f64>, request: &RouteR
         duration_s: 0.0,
         waypoints: Vec::new(),
         steps: Vec::new(),
+        levels: Vec::new(),
     };
     for part in parts {
         route.length_m += part.length();
         match part {
             Part::Walk(r) => {
+                if let Some(&first) = r.spaces.first() {
+                    enter_level(nrg, &mut route, first);
+                }
+                // A walk from stairs or a lift starts where the ride ended.
+                let mut waypoints = r.waypoints.as_slice();
+                if route.waypoints.last() == waypoints.first() {
+                    waypoints = &waypoints[1..];
+                }
+                route.waypoints.extend_from_slice(waypoints);
                 for id in r.spaces {
                     if route.spaces.last() != Some(&id) {
                         route.spaces.push(id);
                     }
                 }
                 route.doors.extend(r.doors);
-                route.waypoints.extend(r.waypoints);
                 // The arrival of a walk that ends at stairs or a lift is
                 // not the route's arrival.
                 let mut steps = r.steps;
@@ -281,6 +290,12 @@ fn joined(nrg: &Nrg, parts: Vec<Part>, leg_lengths_m: Vec<f64>, request: &RouteR
                 }
                 route.spaces.push(to);
                 route.steps.push(level_step(nrg, from, to, length_m));
+                // The ride in 3D: from the anchor on one level to the
+                // anchor on the other.
+                enter_level(nrg, &mut route, to);
+                if let Some(s) = nrg.space(to) {
+                    route.waypoints.push(s.anchor);
+                }
             }
         }
     }
@@ -301,6 +316,22 @@ fn joined(nrg: &Nrg, parts: Vec<Part>, leg_lengths_m: Vec<f64>, request: &RouteR
     });
     route.duration_s = route.length_m / request.profile.speed_m_s;
     route
+}
+
+/// Starts a new level span at the next waypoint when `space` is on
+/// another level than the last span.
+fn enter_level(nrg: &Nrg, route: &mut Route, space: SpaceId) {
+    let Some(level) = level_of(nrg, space) else {
+        return;
+    };
+    if route.levels.last().is_some_and(|l| l.level == level.name) {
+        return;
+    }
+    route.levels.push(LevelSpan {
+        from_waypoint: route.waypoints.len(),
+        level: level.name.clone(),
+        elevation_m: level.elevation_m,
+    });
 }
 
 /// "take Lift A from level 3 to level 0" / "walk up the Stairs to level 1".

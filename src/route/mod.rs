@@ -101,7 +101,8 @@ pub struct Route {
     pub spaces: Vec<SpaceId>,
     /// The door spaces passed, in order.
     pub doors: Vec<SpaceId>,
-    /// Walked length in metres (the length of `waypoints`).
+    /// Walked length in metres (the length of `waypoints`; in a building
+    /// with levels, plus the costs of the stairs and lifts taken).
     pub length_m: f64,
     /// Walked length of each leg between consecutive stops (one leg
     /// without VIA).
@@ -112,4 +113,38 @@ pub struct Route {
     pub waypoints: Vec<Point>,
     /// Steps: distance walked in a space, then the turn into the next.
     pub steps: Vec<Step>,
+    /// In a building with levels, the level of each stretch of
+    /// `waypoints`, in order (empty without levels).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub levels: Vec<LevelSpan>,
+}
+
+/// A stretch of a route on one level: from waypoint `from_waypoint` on,
+/// until the next span starts.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LevelSpan {
+    /// Index in the route's `waypoints` of the first point on this level.
+    pub from_waypoint: usize,
+    /// The level's name.
+    pub level: String,
+    /// Its elevation, metres.
+    pub elevation_m: f64,
+}
+
+impl Route {
+    /// Each waypoint's elevation (0 without levels): the z of the route's
+    /// 3D geometry.
+    pub fn waypoint_elevations(&self) -> Vec<f64> {
+        let mut z = vec![0.0; self.waypoints.len()];
+        for (k, span) in self.levels.iter().enumerate() {
+            let end = self
+                .levels
+                .get(k + 1)
+                .map_or(z.len(), |n| n.from_waypoint.min(z.len()));
+            for v in z.iter_mut().take(end).skip(span.from_waypoint) {
+                *v = span.elevation_m;
+            }
+        }
+        z
+    }
 }

@@ -294,6 +294,7 @@ pub(crate) fn describe(nrg: &Nrg, mesh: &Mesh, legs: &[Walk], profile: &Profile)
         i = j;
     }
     Route {
+        levels: Vec::new(),
         spaces: ids,
         doors,
         length_m,

@@ -447,3 +447,50 @@ fn routes_cross_levels_by_the_cheapest_allowed_way() {
         .to_string();
     assert!(err.contains("does not say its level"), "{err}");
 }
+
+/// The HTTP route answer in a building: positions with z (each level's
+/// elevation), the level of each stretch, and the profiles' flags.
+#[tokio::test(flavor = "multi_thread", worker_threads = 2)]
+async fn the_server_routes_across_levels_in_3d() {
+    let s = crate::server_client::TestServer::read_only().await;
+    {
+        let mut store = nrgdb::store::Store::open(&s.db).unwrap();
+        let tower = walked_model(&nrgdb::fixtures::storeys(3, 4)).nrg;
+        store
+            .import(
+                "tower",
+                &tower,
+                nrgdb::store::ImportMeta::new("floors", "test"),
+            )
+            .unwrap();
+    }
+    let body = s.get("/maps/tower/route?from=10&to=200013").await.json();
+    let route = &body["routes"][0];
+    let coords = route["geometry"]["coordinates"].as_array().unwrap();
+    assert!(coords.iter().all(|p| p.as_array().unwrap().len() == 3));
+    let z: Vec<f64> = coords.iter().map(|p| p[2].as_f64().unwrap()).collect();
+    assert_eq!(z.first(), Some(&0.0));
+    assert_eq!(z.last(), Some(&7.0));
+    let levels: Vec<&str> = route["levels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|l| l["level"].as_str().unwrap())
+        .collect();
+    assert_eq!(levels, ["0", "1", "2"], "by the stairs, floor by floor");
+    let lifted = s
+        .get("/maps/tower/route?from=10&to=200013&no_stairs=true")
+        .await
+        .json();
+    let steps = lifted["routes"][0]["legs"][0]["steps"].as_array().unwrap();
+    assert!(
+        steps
+            .iter()
+            .any(|st| st["instruction"] == "take Lift A L0 from level 0 to level 2"),
+        "{steps:?}"
+    );
+    s.get("/maps/tower/route?from=10&to=200013&no_stairs=maybe")
+        .await
+        .assert_error(400, "no_stairs");
+    s.stop().await;
+}

@@ -9,7 +9,7 @@ use serde::Serialize;
 
 use crate::model::{Point, SpaceId};
 use crate::query::IndexedRevision;
-use crate::route::{Endpoint, Route, Step, Turn};
+use crate::route::{Endpoint, LevelSpan, Route, Step, Turn};
 
 /// The whole answer of `GET /maps/{map}/route`.
 #[derive(Debug, Serialize)]
@@ -57,6 +57,10 @@ pub struct RouteJson<'a> {
     pub spaces: Vec<SpaceJson<'a>>,
     /// The door spaces passed, in order.
     pub doors: Vec<SpaceId>,
+    /// In a building with levels: the level of each stretch of the
+    /// geometry (`from_waypoint` indexes its positions).
+    #[serde(skip_serializing_if = "<[LevelSpan]>::is_empty")]
+    pub levels: &'a [LevelSpan],
 }
 
 /// The part of a route between two waypoints.
@@ -97,9 +101,37 @@ pub struct LineString<'a> {
     /// Always "LineString".
     #[serde(rename = "type")]
     pub kind: &'static str,
-    /// `[x, y]` in metres.
-    #[serde(serialize_with = "points_mm")]
-    pub coordinates: &'a [Point],
+    /// `[x, y]` in metres, or `[x, y, z]` (z the level's elevation) in a
+    /// building with levels.
+    pub coordinates: Coordinates<'a>,
+}
+
+/// A LineString's positions.
+#[derive(Debug, Serialize)]
+#[serde(untagged)]
+pub enum Coordinates<'a> {
+    /// `[x, y]`, to the millimetre.
+    Flat(#[serde(serialize_with = "points_mm")] &'a [Point]),
+    /// `[x, y, z]`, to the millimetre.
+    WithZ(Vec<[f64; 3]>),
+}
+
+impl<'a> Coordinates<'a> {
+    /// The route's positions, with z when it has levels.
+    fn of(route: &'a Route) -> Coordinates<'a> {
+        if route.levels.is_empty() {
+            return Coordinates::Flat(&route.waypoints);
+        }
+        let z = route.waypoint_elevations();
+        Coordinates::WithZ(
+            route
+                .waypoints
+                .iter()
+                .zip(z)
+                .map(|(p, z)| [millimetres(p[0]), millimetres(p[1]), millimetres(z)])
+                .collect(),
+        )
+    }
 }
 
 /// A space passed.
@@ -219,8 +251,9 @@ pub fn route_response<'a>(
             legs: legs(r),
             geometry: LineString {
                 kind: "LineString",
-                coordinates: &r.waypoints,
+                coordinates: Coordinates::of(r),
             },
+            levels: &r.levels,
             spaces: r
                 .spaces
                 .iter()
@@ -279,7 +312,7 @@ mod tests {
             "{steps} vs {}",
             r.distance
         );
-        assert!(r.geometry.coordinates.len() >= 2);
+        assert!(matches!(r.geometry.coordinates, Coordinates::Flat(c) if c.len() >= 2));
         assert_eq!(
             r.doors.len(),
             4,
