@@ -76,23 +76,23 @@ fn same_anchors(a: &Value, b: &Value, tolerance: f64) {
     }
 }
 
+/// The database the tests use.
+const DB: [&str; 2] = ["--db", "t.sqlite"];
+
+/// The demo map in `dir`'s database, georeferenced at `origin`
+/// ("LAT,LON") with +y at `heading` degrees.
+fn georeferenced_demo(dir: &Path, origin: &str, heading: &str) {
+    nrgdb_ok(dir, &[&["demo", "--dir", "d"][..], &DB[..]].concat());
+    let georef = ["georef", "demo", "--origin", origin, "--heading", heading];
+    nrgdb_ok(dir, &[&georef[..], &DB[..]].concat());
+}
+
 #[test]
 fn indoorgml_of_a_georeferenced_map_is_in_its_utm_zone_and_imports_back() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    let db = ["--db", "t.sqlite"];
-    let run = |args: &[&str]| nrgdb_ok(d, &[args, &db].concat());
-    run(&["demo", "--dir", "d"]);
-    run(&[
-        "georef",
-        "demo",
-        "--origin",
-        "48.1374,11.5755",
-        "--heading",
-        "-30",
-        "--level",
-        "2",
-    ]);
+    let run = |args: &[&str]| nrgdb_ok(d, &[args, &DB[..]].concat());
+    georeferenced_demo(d, "48.1374,11.5755", "-30");
     run(&["export", "demo", "--out", "g.gml"]);
     run(&["export", "demo", "--out", "local.gml", "--local-frame"]);
     run(&["export", "demo", "--out", "m.json"]);
@@ -177,17 +177,8 @@ fn indoorgml_of_a_georeferenced_map_is_in_its_utm_zone_and_imports_back() {
 fn a_utm_file_from_elsewhere_imports_at_its_corner_in_true_metres() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
-    let db = ["--db", "t.sqlite"];
-    let run = |args: &[&str]| nrgdb_ok(d, &[args, &db].concat());
-    run(&["demo", "--dir", "d"]);
-    run(&[
-        "georef",
-        "demo",
-        "--origin",
-        "-33.9,151.2",
-        "--heading",
-        "10",
-    ]);
+    let run = |args: &[&str]| nrgdb_ok(d, &[args, &DB[..]].concat());
+    georeferenced_demo(d, "-33.9,151.2", "10");
     run(&["export", "demo", "--out", "u.geojson", "--crs", "utm"]);
     run(&["export", "demo", "--out", "w.geojson"]);
     run(&["export", "demo", "--out", "m.json"]);
