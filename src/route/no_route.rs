@@ -34,6 +34,25 @@ pub fn no_route_reason(nav: &NavMesh, request: &RouteRequest) -> String {
         min_door_width_m: 0.0,
         ..p
     };
+    // Between levels: the connectors the profile refuses.
+    if (p.no_stairs || p.no_elevator)
+        && !found(loose, false)
+        && found(
+            Profile {
+                no_stairs: false,
+                no_elevator: false,
+                ..loose
+            },
+            false,
+        )
+    {
+        let refused = match (p.no_stairs, p.no_elevator) {
+            (true, true) => "without stairs or lifts",
+            (true, false) => "without stairs (no lift serves both levels)",
+            _ => "without a lift (no stairs lead there)",
+        };
+        return format!("no route: {from} and {to} are on levels not joined {refused}");
+    }
     if !found(loose, false) {
         return format!("no route: {from} and {to} are not connected by any door or opening");
     }

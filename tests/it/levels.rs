@@ -434,6 +434,14 @@ fn routes_cross_levels_by_the_cheapest_allowed_way() {
         ..exact
     };
     assert!(route(&nav, from, to, neither).unwrap().is_none());
+    let mut request =
+        nrgdb::route::RouteRequest::new(nrgdb::model::SpaceId(from), nrgdb::model::SpaceId(to));
+    request.profile = neither;
+    let why = nrgdb::route::no_route_reason(&nav, &request);
+    assert!(
+        why.contains("on levels not joined without stairs or lifts"),
+        "{why}"
+    );
     let same_level = route(&nav, from, 13, neither).unwrap().unwrap();
     assert!((same_level.length_m - walk(from, 13)).abs() < 1e-9);
     // A point has no level: a clear error.
