@@ -117,7 +117,7 @@ fn closed(ring: &[Point]) -> Value {
 
 /// The member a WGS84 document carries its georeference in, so that it
 /// reads back into map-frame metres.
-pub const GEOREF_MEMBER: &str = "nrgdb:georef";
+pub const GEOREF_MEMBER: &str = crate::model::GEOREF_KEY;
 
 /// `doc` (as [`to_geojson_with_paths`] writes it) in WGS84 longitude and
 /// latitude (RFC 7946), placed by `georef`: every geometry's coordinates
@@ -235,10 +235,7 @@ pub fn from_geojson_in(
         Some(g) => {
             let g: Georef =
                 serde_json::from_value(g.clone()).map_err(|e| at_member(e.to_string()))?;
-            Some(
-                Georef::new(g.lat, g.lon, g.heading_deg, &g.level)
-                    .map_err(|e| at_member(e.to_string()))?,
-            )
+            Some(g.checked().map_err(|e| at_member(e.to_string()))?)
         }
         None => None,
     };

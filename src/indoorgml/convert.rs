@@ -239,7 +239,7 @@ fn space_description(s: &Space) -> Option<String> {
 }
 
 /// The description key of a door's doorway extras.
-const DOORWAY_KEY: &str = "doorway";
+pub(super) const DOORWAY_KEY: &str = "doorway";
 
 /// Takes the doorway line nrgdb wrote out of a cell's attributes.
 fn take_doorway(attributes: &mut Map<String, Value>) -> Option<[Point; 2]> {

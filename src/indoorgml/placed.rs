@@ -18,11 +18,8 @@ use super::IndoorGmlError;
 use super::document::{BoundaryGeometry, CellGeometry, Coords, Document, Polygon};
 use crate::model::{Georef, NamedCrs, Point, UtmZone, lowest_corner};
 
-/// The root description key of the georeference.
-const GEOREF_KEY: &str = "nrgdb:georef";
-
-/// The description key of a door cell's doorway (see `convert`).
-const DOORWAY_KEY: &str = "doorway";
+use super::convert::DOORWAY_KEY;
+use crate::model::GEOREF_KEY;
 
 /// Moves `doc` (in map-frame metres) into the WGS84 / UTM zone of
 /// `georef`'s origin: every position, `srsName` set to the zone's URN,
@@ -93,7 +90,7 @@ fn carried_georef(description: &str) -> Result<Option<Georef>, String> {
         return Ok(None);
     };
     let g: Georef = serde_json::from_value(g.clone()).map_err(|e| format!("{GEOREF_KEY}: {e}"))?;
-    Georef::new(g.lat, g.lon, g.heading_deg, &g.level)
+    g.checked()
         .map(Some)
         .map_err(|e| format!("{GEOREF_KEY}: {e}"))
 }

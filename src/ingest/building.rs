@@ -380,6 +380,17 @@ fn connector(
             at[0], at[1]
         ));
     };
+    if matches!(s.kind, SpaceKind::Stairs | SpaceKind::Elevator)
+        && (s.kind != kind || s.name.as_deref() != Some(name))
+    {
+        return Err(format!(
+            "{kind} {name:?} at ({:.2}, {:.2}) on level {level} lies in the space already taken by {} {:?}; give each connector its own space",
+            at[0],
+            at[1],
+            s.kind,
+            s.name.as_deref().unwrap_or("")
+        ));
+    }
     if s.kind == SpaceKind::Door {
         return Err(format!(
             "{kind} {name:?} at ({:.2}, {:.2}) on level {level} lies in a doorway; put it inside the stairwell or lift",

@@ -57,7 +57,8 @@ impl NamedCrs {
 
     /// The map frame a file in this CRS is read into: the map's own
     /// georeference when it has one (`stored`: revisions keep one frame),
-    /// else the one the file carries (`carried`: a file nrgdb wrote), else
+    /// else the one the file carries (`carried`: a file nrgdb wrote,
+    /// already [`Georef::checked`]), else
     /// one made at `corner` (the file's lowest x and y, in this CRS):
     /// origin there, +y along the CRS's north (grid north for UTM),
     /// level `level`. An origin the georeference refuses (beyond ±85°
@@ -73,7 +74,7 @@ impl NamedCrs {
             return Ok(g.clone());
         }
         if let Some(g) = carried {
-            return Georef::new(g.lat, g.lon, g.heading_deg, &g.level);
+            return Ok(g);
         }
         let [lon, lat] = self.to_lon_lat(corner);
         let north_up = Georef::new(lat, lon, 0.0, level)?;

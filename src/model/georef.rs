@@ -17,6 +17,10 @@ const WGS84_A: f64 = 6_378_137.0;
 /// WGS84 first eccentricity squared.
 const WGS84_E2: f64 = 6.694_379_990_14e-3;
 
+/// The JSON key a file carries its georeference under (GeoJSON's member,
+/// IndoorGML's root description), so it reads back into its frame.
+pub const GEOREF_KEY: &str = "nrgdb:georef";
+
 /// A map's georeference.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Georef {
@@ -102,6 +106,12 @@ impl Georef {
         let n = WGS84_A / w.sqrt();
         let per_rad = std::f64::consts::PI / 180.0;
         (m * per_rad, n * phi.cos() * per_rad)
+    }
+
+    /// This georeference checked as [`Georef::new`] checks (one read from
+    /// a file).
+    pub fn checked(self) -> Result<Georef, GeorefError> {
+        Georef::new(self.lat, self.lon, self.heading_deg, &self.level)
     }
 
     /// East and north offsets (metres) of a map-frame point from the origin.

@@ -31,7 +31,7 @@ pub use error::ModelError;
 pub use geometry::{
     Point, Ring, point_in_ring, polygon_area, polygon_centroid, ring_is_ccw, segment_distance,
 };
-pub use georef::{Georef, GeorefError};
+pub use georef::{GEOREF_KEY, Georef, GeorefError};
 pub use graph::ConnectivityGraph;
 pub use interior_point::pole_of_inaccessibility;
 pub use level::{Level, LevelError, MAX_ELEVATION_M, MAX_LEVEL_NAME_CHARS, level_name};

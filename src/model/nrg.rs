@@ -119,6 +119,12 @@ impl Nrg {
         Nrg::new(spaces, connections).ok()
     }
 
+    /// Whether the spaces have levels (all do or none do, see
+    /// [`Nrg::new`]): O(1), for hot paths.
+    pub fn has_levels(&self) -> bool {
+        self.spaces.first().is_some_and(|s| s.level.is_some())
+    }
+
     /// The levels the spaces are on, lowest first (by elevation, then
     /// name); empty for a model without levels.
     pub fn levels(&self) -> Vec<Level> {

@@ -176,7 +176,7 @@ pub fn execute(
             })
         }
         Plan::Locate(p, level) => {
-            let leveled = !rev.nrg.levels().is_empty();
+            let leveled = rev.nrg.has_levels();
             let rows = rev
                 .locate_on(*p, level.as_deref())
                 .into_iter()

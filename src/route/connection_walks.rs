@@ -38,14 +38,6 @@ pub fn connection_walks(nav: &NavMesh) -> Vec<ConnectionWalk> {
         .iter()
         .filter(|c| c.kind.is_navigable())
         .map(|c| {
-            // Between levels the cost is the connection's own (stairs
-            // climbed, a lift ridden), not a walk in the plane.
-            if c.kind == ConnectionKind::Vertical {
-                return ConnectionWalk {
-                    length_m: c.length_m,
-                    ..straight(nrg, c)
-                };
-            }
             let walked = nav.walk_between(&level, c.a, c.b, &mut closed, &budget);
             match walked {
                 Some((length_m, points)) => ConnectionWalk {
@@ -78,7 +70,8 @@ fn straight(nrg: &Nrg, c: &Connection) -> ConnectionWalk {
 /// The walks of a model with levels, level by level: each level's spaces
 /// and connections on a navigation layer of their own (floors stacked in
 /// one plane would overlap), then the vertical connections with their own
-/// costs.
+/// costs (between levels the cost is the connection's own, stairs climbed
+/// or a lift ridden, not a walk in the plane).
 fn walks_per_level(nav: &NavMesh) -> Vec<ConnectionWalk> {
     let nrg = nav.nrg();
     let mut walks: Vec<ConnectionWalk> = nav.floors().navs().flat_map(connection_walks).collect();
@@ -130,10 +123,10 @@ impl WalkedModel {
     /// [`walked_model`] over an already built navigation layer (a cached
     /// revision's).
     pub fn on(nav: &NavMesh) -> WalkedModel {
-        let walks = if nav.nrg().levels().is_empty() {
-            connection_walks(nav)
-        } else {
+        let walks = if nav.nrg().has_levels() {
             walks_per_level(nav)
+        } else {
+            connection_walks(nav)
         };
         let mut changed = 0;
         let mut paths = ConnectionPaths::new();

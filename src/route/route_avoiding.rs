@@ -13,9 +13,8 @@ use crate::model::SpaceId;
 pub(crate) fn check_request(nav: &NavMesh, request: &RouteRequest) -> Result<(), RouteError> {
     request.profile.validate()?;
     // Alternatives are not computed across levels yet.
-    let levels = nav.nrg().levels().len();
-    if levels > 0 {
-        return Err(RouteError::Levels(levels));
+    if nav.nrg().has_levels() {
+        return Err(RouteError::Levels(nav.nrg().levels().len()));
     }
     for stop in stops(request) {
         if let Endpoint::Space(id) = stop {
@@ -44,7 +43,7 @@ pub(crate) fn route_avoiding(
     avoid: &[SpaceId],
     budget: &Budget,
 ) -> Result<Option<Route>, RouteError> {
-    if !nav.nrg().levels().is_empty() {
+    if nav.nrg().has_levels() {
         return super::across_levels::route_across_levels(nav, request, avoid, budget);
     }
     check_request(nav, request)?;

@@ -16,5 +16,5 @@ pub(crate) fn decode(map: &str, text: &str) -> Result<Georef, StoreError> {
         what: format!("georeference: {what}"),
     };
     let g: Georef = serde_json::from_str(text).map_err(|e| corrupt(e.to_string()))?;
-    Georef::new(g.lat, g.lon, g.heading_deg, &g.level).map_err(|e| corrupt(e.to_string()))
+    g.checked().map_err(|e| corrupt(e.to_string()))
 }
