@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr, miette};
-use nrgdb::diff::{AlignMode, Comparison, DiffOptions, DiffParams, compare, with_base_ids};
+use nrgdb::diff::{AlignMode, Comparison, DiffOptions, DiffParams, compare, update_model};
 use nrgdb::query::LoadedRevision;
 
 use super::db::DbArg;
@@ -32,7 +32,8 @@ pub struct Args {
     /// Also write the change set as JSON to this file (atomically).
     #[arg(long, short, value_name = "FILE")]
     pub output: Option<PathBuf>,
-    /// Write the IndoorGML update: B in which matched spaces keep A's ids and new ones get new ids.
+    /// Write the IndoorGML update: B in which matched spaces keep A's ids and new ones get new ids
+    /// (in a building with levels, only the levels that changed).
     #[arg(long, value_name = "FILE")]
     pub gml: Option<PathBuf>,
     /// Always align B to A (default: only when their frames differ).
@@ -97,12 +98,26 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
             .into_diagnostic()
             .wrap_err_with(|| format!("writing {}", path.display()))?;
     }
+    // Said after the report: which levels the IndoorGML update covers.
+    let mut update_said = None;
     if let Some(path) = &args.gml {
-        let (update, _) = with_base_ids(&a.nrg, &moved, &changes).into_diagnostic()?;
+        let (update, levels) = update_model(&a.nrg, &moved, &changes).into_diagnostic()?;
         let text = nrgdb::format::render_model(&update, nrgdb::format::ModelFormat::IndoorGml);
         nrgdb::atomic::write(path, text.as_bytes())
             .into_diagnostic()
             .wrap_err_with(|| format!("writing the IndoorGML update {}", path.display()))?;
+        if a.nrg.has_levels() && !args.json {
+            let covered = if levels.is_empty() {
+                "no level changed".to_string()
+            } else {
+                format!("level {}", levels.join(", "))
+            };
+            update_said = Some(format!(
+                "IndoorGML update {}: {covered} ({} cells)",
+                path.display(),
+                update.spaces().len()
+            ));
+        }
     }
     if args.json {
         writeln!(out, "{}", changes.to_json()).into_diagnostic()?;
@@ -119,6 +134,9 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
             .into_diagnostic()?;
         }
         write!(out, "{}", changes.table()).into_diagnostic()?;
+        if let Some(said) = update_said {
+            writeln!(out, "{said}").into_diagnostic()?;
+        }
     }
     Ok(if changes.is_empty() {
         ExitCode::SUCCESS

@@ -179,6 +179,41 @@ pub fn with_base_ids(
     Ok((Nrg::new(spaces, links)?, ids))
 }
 
+/// The IndoorGML update of a change: B under A's ids
+/// ([`with_base_ids`]). In a building with levels it covers only the
+/// levels with a reported change ([`ChangeSet::changed_levels`]): their
+/// spaces and the connections among them, so a receiver replaces those
+/// levels and keeps the others. Returns the model and the levels it
+/// covers (empty without levels).
+///
+/// ```
+/// use nrgdb::diff::{diff, update_model, DiffParams};
+/// use nrgdb::fixtures::storeys;
+/// let a = storeys(3, 2);
+/// // B: a room on level 1 renamed.
+/// let (mut spaces, links) = a.clone().into_parts();
+/// spaces.iter_mut().find(|s| s.id.0 == 100_010).unwrap().name = Some("Lab".into());
+/// let b = nrgdb::model::Nrg::new(spaces, links)?;
+/// let changes = diff(&a, &b, &DiffParams::default());
+/// let (update, levels) = update_model(&a, &b, &changes)?;
+/// assert_eq!(levels, ["1"]);
+/// assert_eq!(update.spaces().len(), a.level_model("1").unwrap().spaces().len());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn update_model(
+    base: &Nrg,
+    changed: &Nrg,
+    changes: &ChangeSet,
+) -> Result<(Nrg, Vec<String>), DiffError> {
+    let (update, _) = with_base_ids(base, changed, changes)?;
+    if !update.has_levels() {
+        return Ok((update, Vec::new()));
+    }
+    let levels = changes.changed_levels();
+    let names: Vec<&str> = levels.iter().map(String::as_str).collect();
+    Ok((update.levels_model(&names).unwrap_or_default(), levels))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -165,6 +165,10 @@ pub struct SpaceChange {
     /// Door widths in A and B (m), for matched doors whose width changed.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub door_width_m: Option<[f64; 2]>,
+    /// The space's level (B's; A's for a removed space), in a building
+    /// with levels.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub level: Option<String>,
     /// B's space (with B's id) whenever it is not A's space bit for bit
     /// under a new id: always for added spaces, and for matched spaces
     /// whose geometry, kind, name or attributes differ at all.
@@ -237,6 +241,10 @@ pub struct ConnectionChange {
     /// The connection in B (B's ids); absent when removed.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub new: Option<Connection>,
+    /// The levels of its two ends (one name for a connection on one
+    /// level, two for a vertical one), in a building with levels.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub levels: Vec<String>,
 }
 
 impl ConnectionChange {
@@ -296,6 +304,31 @@ impl ChangeSet {
         self.connections
             .iter()
             .filter(|c| c.change != ConnectionChangeKind::Length)
+    }
+
+    /// The levels with a reported change (a space changed on it, or a
+    /// connection with an end on it changed), sorted by name; empty
+    /// without levels or without changes.
+    ///
+    /// ```
+    /// use nrgdb::diff::{diff, DiffParams};
+    /// use nrgdb::fixtures::storeys;
+    /// let (a, b) = (storeys(2, 2), storeys(2, 3));
+    /// assert_eq!(diff(&a, &b, &DiffParams::default()).changed_levels(), ["0", "1"]);
+    /// assert!(diff(&a, &a, &DiffParams::default()).changed_levels().is_empty());
+    /// ```
+    pub fn changed_levels(&self) -> Vec<String> {
+        let mut levels: Vec<String> = self
+            .changed_spaces()
+            .filter_map(|s| s.level.clone())
+            .chain(
+                self.changed_connections()
+                    .flat_map(|c| c.levels.iter().cloned()),
+            )
+            .collect();
+        levels.sort();
+        levels.dedup();
+        levels
     }
 
     /// Matched pairs `(old id, new id)`, sorted by old id.

@@ -170,6 +170,7 @@ fn matched(old: &Space, new: &Space, iou: f64, params: &DiffParams) -> SpaceChan
         new_area_m2: Some(new.area_m2),
         names: renamed.then(|| [old.name.clone(), new.name.clone()]),
         door_width_m: widths,
+        level: level_name(new),
         space: (!old.same_but_id(new)).then(|| new.clone()),
     }
 }
@@ -194,8 +195,26 @@ fn alone(space: &Space, in_b: bool, part: bool) -> SpaceChange {
         new_area_m2: in_b.then_some(space.area_m2),
         names: None,
         door_width_m: None,
+        level: level_name(space),
         space: in_b.then(|| space.clone()),
     }
+}
+
+/// The name of a space's level, when it has one.
+fn level_name(space: &Space) -> Option<String> {
+    space.level.as_ref().map(|l| l.name.clone())
+}
+
+/// The levels of a connection's ends in `nrg` (one name when both are on
+/// one level; none without levels).
+fn link_levels(nrg: &Nrg, c: &Connection) -> Vec<String> {
+    let mut levels: Vec<String> = [c.a, c.b]
+        .iter()
+        .filter_map(|id| nrg.space(*id).and_then(level_name))
+        .collect();
+    levels.sort();
+    levels.dedup();
+    levels
 }
 
 fn connection_changes(
@@ -225,6 +244,7 @@ fn connection_changes(
                         change,
                         old: Some(c.clone()),
                         new: Some(n.clone()),
+                        levels: link_levels(b, n),
                     });
                 }
             }
@@ -232,6 +252,7 @@ fn connection_changes(
                 change: ConnectionChangeKind::Removed,
                 old: Some(c.clone()),
                 new: None,
+                levels: link_levels(a, c),
             }),
         }
     }
@@ -243,6 +264,7 @@ fn connection_changes(
                 change: ConnectionChangeKind::Added,
                 old: None,
                 new: Some(n.clone()),
+                levels: link_levels(b, n),
             }),
     );
     out

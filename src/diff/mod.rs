@@ -8,8 +8,8 @@
 //! ([`diff`] → [`ChangeSet`]: unchanged, added, removed, resized, split,
 //! merged, re-kinded, renamed spaces; connections added, removed and
 //! re-kinded; door width changes), its replay ([`apply`], with
-//! `apply(a, &diff(a, b)) == b`), the IndoorGML update ([`with_base_ids`]:
-//! B under A's identifiers) and the alignment of two maps from different
+//! `apply(a, &diff(a, b)) == b`), the IndoorGML update ([`update_model`]:
+//! B under A's identifiers, only the changed levels of a building) and the alignment of two maps from different
 //! mapping runs ([`align_grids`] → [`Alignment`], a rigid transform with a
 //! quality score, refused when unreliable). [`compare`] is the change-set
 //! service every caller uses (CLI, query `DIFF`, server, the pictures):
@@ -50,7 +50,7 @@ mod split_merge;
 mod transform;
 
 pub use align::{Alignment, align_grids, alignment_quality, wall_points};
-pub use apply::{apply, with_base_ids};
+pub use apply::{apply, update_model, with_base_ids};
 pub use change_set::{
     CHANGESET_FORMAT, ChangeSet, ConnectionChange, ConnectionChangeKind, Merge, Part, SpaceChange,
     SpaceChangeKind, Split, Summary,

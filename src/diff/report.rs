@@ -20,6 +20,9 @@ pub struct ChangeRow {
     pub space: String,
     /// Before → after.
     pub detail: String,
+    /// The level (`0`, or `0-1` for a vertical connection), in a
+    /// building with levels; empty otherwise.
+    pub level: String,
 }
 
 fn ids(list: &[crate::model::SpaceId]) -> String {
@@ -75,20 +78,17 @@ impl ChangeSet {
                     new: opt(s.new),
                     space: s.label.clone(),
                     detail,
+                    level: s.level.clone().unwrap_or_default(),
                 });
             }
         }
-        let label_new = |id| {
-            self.spaces
-                .iter()
-                .find(|s| s.new == Some(id))
-                .map_or_else(String::new, |s| s.label.clone())
+        let entry_new = |id| self.spaces.iter().find(|s| s.new == Some(id));
+        let entry_old = |id| self.spaces.iter().find(|s| s.old == Some(id));
+        let label = |e: Option<&super::change_set::SpaceChange>| {
+            e.map_or_else(String::new, |s| s.label.clone())
         };
-        let label_old = |id| {
-            self.spaces
-                .iter()
-                .find(|s| s.old == Some(id))
-                .map_or_else(String::new, |s| s.label.clone())
+        let level = |e: Option<&super::change_set::SpaceChange>| {
+            e.and_then(|s| s.level.clone()).unwrap_or_default()
         };
         for sp in &self.splits {
             let parts: Vec<String> = sp
@@ -101,8 +101,9 @@ impl ChangeSet {
                 change: "split".into(),
                 old: sp.old.to_string(),
                 new: ids(&new),
-                space: label_old(sp.old),
+                space: label(entry_old(sp.old)),
                 detail: format!("into {}", parts.join(", ")),
+                level: level(entry_old(sp.old)),
             });
         }
         for m in &self.merges {
@@ -116,8 +117,9 @@ impl ChangeSet {
                 change: "merged".into(),
                 old: ids(&old),
                 new: m.new.to_string(),
-                space: label_new(m.new),
+                space: label(entry_new(m.new)),
                 detail: format!("from {}", parts.join(", ")),
+                level: level(entry_new(m.new)),
             });
         }
         for c in self.changed_connections() {
@@ -136,6 +138,7 @@ impl ChangeSet {
                 new: link(c.new.as_ref()),
                 space: String::new(),
                 detail,
+                level: c.levels.join("-"),
             });
         }
         rows
@@ -183,10 +186,15 @@ impl ChangeSet {
             let _ = writeln!(out, "no changes ({} unchanged)", self.summary.unchanged);
             return out;
         }
-        let header = ["change", "old", "new", "space", "detail"];
-        let cells: Vec<[&str; 5]> = rows
+        let leveled = rows.iter().any(|r| !r.level.is_empty());
+        let header = ["change", "level", "old", "new", "space", "detail"];
+        let cells: Vec<[&str; 6]> = rows
             .iter()
-            .map(|r| [&*r.change, &*r.old, &*r.new, &*r.space, &*r.detail])
+            .map(|r| {
+                [
+                    &*r.change, &*r.level, &*r.old, &*r.new, &*r.space, &*r.detail,
+                ]
+            })
             .collect();
         let mut widths = header.map(|h| h.chars().count());
         for row in &cells {
@@ -194,21 +202,30 @@ impl ChangeSet {
                 *w = (*w).max(c.chars().count());
             }
         }
-        let mut line = |cols: [&str; 5]| {
+        // The level column only in a building with levels.
+        let mut line = |cols: [&str; 6]| {
             let parts: Vec<String> = cols
                 .iter()
                 .zip(widths)
-                .map(|(c, w)| format!("{c:<w$}"))
+                .enumerate()
+                .filter(|(k, _)| leveled || *k != 1)
+                .map(|(_, (c, w))| format!("{c:<w$}"))
                 .collect();
             let _ = writeln!(out, "{}", parts.join("  ").trim_end());
         };
         line(header);
         let rules = widths.map(|w| "-".repeat(w));
-        line([&rules[0], &rules[1], &rules[2], &rules[3], &rules[4]]);
+        line([
+            &rules[0], &rules[1], &rules[2], &rules[3], &rules[4], &rules[5],
+        ]);
         for row in cells {
             line(row);
         }
         let _ = writeln!(out, "{}", self.summary_line());
+        let levels = self.changed_levels();
+        if !levels.is_empty() {
+            let _ = writeln!(out, "changed levels: {}", levels.join(", "));
+        }
         out
     }
 }

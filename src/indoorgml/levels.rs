@@ -6,8 +6,11 @@
 //! stacked floors of sample 201) gets its levels from the geometry: each
 //! cell's floor is its lowest z, floors more than [`FLOOR_GAP_M`] apart
 //! are different levels, named "0", "1", … from the lowest (elevation:
-//! the lowest floor of the level). A document with one floor keeps no
-//! levels. Connections that join two levels become vertical; adjacency
+//! the lowest floor of the level) unless the cells name their storey in
+//! their description (`storey="2"`, as the InFactory/KU tools write it):
+//! when every described cell of a floor names the same storey, and the
+//! floors' storeys differ, the storeys are the levels' names. A document
+//! with one floor keeps no levels. Connections that join two levels become vertical; adjacency
 //! (a shared wall) between levels is dropped.
 
 use serde_json::{Map, Value};
@@ -66,14 +69,54 @@ pub(super) fn assign(cells: &[Cell], spaces: &mut [Space]) {
     if levels.len() < 2 {
         return;
     }
-    for (space, floor) in spaces.iter_mut().zip(floors) {
-        let z = floor.unwrap_or(levels[0]);
-        let k = levels.iter().rposition(|&l| l <= z + 1e-9).unwrap_or(0);
+    let level_of: Vec<usize> = floors
+        .iter()
+        .map(|floor| {
+            let z = floor.unwrap_or(levels[0]);
+            levels.iter().rposition(|&l| l <= z + 1e-9).unwrap_or(0)
+        })
+        .collect();
+    let names = storey_names(spaces, &level_of, levels.len())
+        .unwrap_or_else(|| (0..levels.len()).map(|k| k.to_string()).collect());
+    for (space, k) in spaces.iter_mut().zip(level_of) {
         space.level = Some(Level {
-            name: k.to_string(),
+            name: names[k].clone(),
             elevation_m: levels[k],
         });
     }
+}
+
+/// The storey a cell's description names (`storey="2":indoor="room":`).
+fn described_storey(space: &Space) -> Option<&str> {
+    let text = space.attributes.get("description")?.as_str()?;
+    let rest = &text[text.find("storey=\"")? + "storey=\"".len()..];
+    let name = &rest[..rest.find('"')?];
+    (!name.trim().is_empty()).then_some(name.trim())
+}
+
+/// The name of each of `count` floors from its cells' storeys, when every
+/// described cell of a floor agrees, every floor has one, and no two
+/// floors share one; else None.
+fn storey_names(spaces: &[Space], level_of: &[usize], count: usize) -> Option<Vec<String>> {
+    let mut names: Vec<Option<&str>> = vec![None; count];
+    for (space, &k) in spaces.iter().zip(level_of) {
+        let Some(storey) = described_storey(space) else {
+            continue;
+        };
+        match names[k] {
+            None => names[k] = Some(storey),
+            Some(name) if name == storey => {}
+            Some(_) => return None,
+        }
+    }
+    let names: Vec<String> = names
+        .into_iter()
+        .map(|n| n.map(str::to_string))
+        .collect::<Option<_>>()?;
+    let mut distinct = names.clone();
+    distinct.sort();
+    distinct.dedup();
+    (distinct.len() == names.len()).then_some(names)
 }
 
 /// Connections between two levels become vertical; adjacency between

@@ -101,10 +101,17 @@ impl Nrg {
     /// The spaces on level `name` and the connections among them (vertical
     /// ones leave), as a model of its own; None when no space is on it.
     pub fn level_model(&self, name: &str) -> Option<Nrg> {
+        self.levels_model(&[name])
+    }
+
+    /// The spaces on the levels named and the connections among them (a
+    /// vertical connection stays when both its levels are named), as a
+    /// model of its own; None when no space is on them.
+    pub fn levels_model(&self, names: &[&str]) -> Option<Nrg> {
         let on = |id: SpaceId| {
             self.space(id)
                 .and_then(|s| s.level.as_ref())
-                .is_some_and(|l| l.name == name)
+                .is_some_and(|l| names.contains(&l.name.as_str()))
         };
         let spaces: Vec<Space> = self.spaces.iter().filter(|s| on(s.id)).cloned().collect();
         if spaces.is_empty() {

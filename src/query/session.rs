@@ -270,14 +270,27 @@ fn diff_result(changes: &ChangeSet) -> QueryResult {
             )),
         ]);
     }
-    for r in changes.rows() {
-        rows.push(vec![
+    let all = changes.rows();
+    // A level column in a building with levels.
+    let leveled = all.iter().any(|r| !r.level.is_empty());
+    for r in all {
+        let mut row = vec![
             Cell::Text(r.change),
             Cell::Text(r.old),
             Cell::Text(r.new),
             Cell::Text(r.space),
             Cell::Text(r.detail),
-        ]);
+        ];
+        if leveled {
+            row.push(Cell::Text(r.level));
+        }
+        rows.push(row);
+    }
+    if leveled {
+        for row in rows.iter_mut().filter(|r| r.len() == 5) {
+            row.push(Cell::Null);
+        }
+        return table(&["change", "old", "new", "space", "detail", "level"], rows);
     }
     table(&["change", "old", "new", "space", "detail"], rows)
 }

@@ -80,6 +80,76 @@ fn levels_come_from_the_heights_of_a_3d_document() {
         [("0", 0.0), ("1", 3.5)]
     );
     assert_eq!(back.spaces().len(), nrg.spaces().len());
+    // Cells that name their storey (`storey="…"`, as the InFactory/KU
+    // tools write it) give the levels those names; a floor whose cells
+    // disagree keeps the numbering.
+    let storey = |doc: &mut nrgdb::indoorgml::Document, name_of: &dyn Fn(usize, f64) -> String| {
+        for (k, cell) in doc.primal.as_mut().unwrap().cells.iter_mut().enumerate() {
+            // The cell's height: the z of its first position (2D cells
+            // written at their level's elevation).
+            let z = match &cell.geometry {
+                Some(nrgdb::indoorgml::document::CellGeometry::Surface(p)) => p.exterior.values[2],
+                other => panic!("a surface cell, got {other:?}"),
+            };
+            cell.info.description = Some(format!("storey=\"{}\":indoor=\"room\":", name_of(k, z)));
+        }
+        let gml = nrgdb::indoorgml::write_string(doc);
+        let (nrg, _) =
+            model_from_bytes(gml.as_bytes(), ModelFormat::IndoorGml, "t.gml".as_ref()).unwrap();
+        let levels: Vec<(String, f64)> = nrg
+            .levels()
+            .into_iter()
+            .map(|l| (l.name, l.elevation_m))
+            .collect();
+        levels
+    };
+    let mut named = doc.clone();
+    let by_floor = |_: usize, z: f64| {
+        if z < 1.0 {
+            "EG".to_string()
+        } else {
+            "OG1".to_string()
+        }
+    };
+    assert_eq!(
+        storey(&mut named, &by_floor),
+        [("EG".to_string(), 0.0), ("OG1".to_string(), 3.5)]
+    );
+    let mut mixed = doc.clone();
+    let disagree = |k: usize, z: f64| {
+        if k == 0 {
+            "X".to_string()
+        } else {
+            by_floor(k, z)
+        }
+    };
+    assert_eq!(
+        storey(&mut mixed, &disagree),
+        [("0".to_string(), 0.0), ("1".to_string(), 3.5)]
+    );
+}
+
+/// The cells of an IndoorGML text per floor, counted from the text itself
+/// (each `cellSpaceMember`'s lowest `gml:pos` z), lowest floor first.
+fn cells_per_floor(text: &str) -> Vec<(f64, usize)> {
+    let mut floors: std::collections::BTreeMap<i64, usize> = Default::default();
+    for member in text.split("<core:cellSpaceMember>").skip(1) {
+        let member = member.split("</core:cellSpaceMember>").next().unwrap();
+        let lowest = member
+            .split("<gml:pos")
+            .skip(1)
+            .filter_map(|p| {
+                let body = &p[p.find('>')? + 1..p.find('<')?];
+                body.split_whitespace().nth(2)?.parse::<f64>().ok()
+            })
+            .reduce(f64::min)
+            .expect("a cell with 3D positions");
+        *floors.entry((lowest * 1000.0).round() as i64).or_default() += 1;
+    }
+    floors
+        .into_iter()
+        .map(|(z, n)| (z as f64 / 1000.0, n))
+        .collect()
 }
 
 #[test]
@@ -104,6 +174,19 @@ fn sample_201_reads_as_its_three_floors() {
         })
         .collect();
     eprintln!("201: levels {levels:?}, spaces per level {per_level:?}");
+    // Each level holds exactly the cells the file has on that floor, and
+    // is named by the storey its cells give (1, 2, 3).
+    let text = std::str::from_utf8(&bytes).unwrap();
+    let floors = cells_per_floor(text);
+    assert_eq!(floors.len(), 3, "{floors:?}");
+    let ours: Vec<(f64, usize)> = levels
+        .iter()
+        .map(|l| l.elevation_m)
+        .zip(per_level.iter().copied())
+        .collect();
+    assert_eq!(ours, floors);
+    let names: Vec<&str> = levels.iter().map(|l| l.name.as_str()).collect();
+    assert_eq!(names, ["1", "2", "3"]);
     per_level.sort_unstable();
     assert!(per_level[0] >= 10, "{per_level:?}");
 }
@@ -287,6 +370,61 @@ fn a_simulated_tower_imports_from_its_manifest_level_by_level() {
     assert_eq!(level_of(&again, "0"), level_of(&tower, "0"));
     assert_eq!(level_of(&again, "2"), level_of(&tower, "2"));
     assert_ne!(level_of(&again, "1"), level_of(&tower, "1"));
+    // The diff says where: every change row on level 1, and the IndoorGML
+    // update holds level 1's cells only (under revision 1's ids where
+    // they match), checked and schema-valid.
+    // A room on level 1 becomes a corridor (an edit: revision 3).
+    let room = level_of(&again, "1")
+        .into_iter()
+        .find(|s| s.kind == SpaceKind::Room)
+        .unwrap();
+    let (ok, said) = run(
+        d,
+        &[
+            &[
+                "query",
+                "--map",
+                "tower",
+                &format!("SET {} KIND corridor", room.id),
+            ][..],
+            &db,
+        ]
+        .concat(),
+    );
+    assert!(ok, "{said}");
+    let (ok, said) = run(
+        d,
+        &[&["diff", "tower", "2", "3", "--gml", "update.gml"][..], &db].concat(),
+    );
+    assert!(!ok, "a change exits 1: {said}");
+    assert!(said.contains("changed levels: 1\n"), "{said}");
+    assert!(
+        said.contains(&format!("rekinded  1      {}", room.id)),
+        "{said}"
+    );
+    let header = said
+        .lines()
+        .find(|l| l.starts_with("change "))
+        .expect("a table");
+    assert!(header.contains(" level "), "{header}");
+    let on_level_1 = level_of(&again, "1").len();
+    assert!(
+        said.contains(&format!("update.gml: level 1 ({on_level_1} cells)")),
+        "{said}"
+    );
+    let (ok, said) = run(d, &["check", "update.gml"]);
+    assert!(ok, "{said}");
+    let text = std::fs::read_to_string(d.join("update.gml")).unwrap();
+    assert_eq!(text.matches("<core:cellSpaceMember>").count(), on_level_1);
+    let (update, _) = model_from_bytes(
+        text.as_bytes(),
+        ModelFormat::IndoorGml,
+        "update.gml".as_ref(),
+    )
+    .unwrap();
+    let names: Vec<String> = update.levels().into_iter().map(|l| l.name).collect();
+    assert_eq!(names, ["1"]);
+    crate::support::schema_valid_if_shared(&d.join("update.gml"));
 }
 
 #[test]

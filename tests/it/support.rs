@@ -32,6 +32,25 @@ pub fn have_xmllint() -> bool {
     Command::new("xmllint").arg("--version").output().is_ok()
 }
 
+/// Asserts that `path` validates against the OGC IndoorGML schema with
+/// the shared `validate.sh`, where xmllint and the shared data are here.
+pub fn schema_valid_if_shared(path: &std::path::Path) {
+    if have_xmllint()
+        && let Some(shared) = shared_dir("indoorgml/validate.sh")
+    {
+        let v = Command::new(shared.join("indoorgml/validate.sh"))
+            .arg(path)
+            .output()
+            .unwrap();
+        assert!(
+            v.status.success(),
+            "{}: {}",
+            path.display(),
+            String::from_utf8_lossy(&v.stderr)
+        );
+    }
+}
+
 /// Flags for headless Chromium on this closed network (no background
 /// connections, no sandbox as root), shared by the viewer tests.
 pub const HEADLESS_CHROMIUM: &[&str] = &[
