@@ -23,6 +23,7 @@ fn render(c: &mut Criterion) {
         ],
         doors: vec![anchor(10_000), anchor(10_199)],
         length_m: 800.0,
+        ..RouteOverlay::default()
     };
     let options = RenderOptions {
         px_per_m: Some(4.0),

@@ -12,8 +12,11 @@ use nrgdb::format::PictureFormat;
 use nrgdb::grid::{LoadOptions, OccupancyGrid, load_map};
 use nrgdb::model::{Nrg, SpaceId};
 use nrgdb::query::LoadedRevision;
-use nrgdb::render::{LabelMode, RenderOptions, RouteOverlay, Scene, diff_overlay, render_svg};
-use nrgdb::route::{Budget, NavMesh, RouteRequest, shortest_route};
+use nrgdb::render::{
+    Drawing, LabelMode, RenderOptions, RouteOverlay, Scene, diff_overlay, drawing_svg, layout,
+    route_by_level,
+};
+use nrgdb::route::{Budget, NavMesh, Route, RouteRequest, shortest_route};
 
 use super::db::{DbArg, parse_map_rev};
 use super::diff::load_file;
@@ -66,7 +69,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         Some(path) => Some(load_grid(path)?),
         None => base.map_grid.clone(),
     };
-    let (nrg, title, diff) = match &args.diff {
+    let (nrg, title, diff, old) = match &args.diff {
         Some(pair) => {
             let (Some(a), Some(b)) = (pair.first(), pair.get(1)) else {
                 miette::bail!("--diff needs two revisions: --diff A B");
@@ -81,38 +84,17 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
                 })?;
             let overlay = diff_overlay(&done.changes, &old.rev.nrg, &new.rev.nrg);
             let title = format!("{} -> {}", old.rev.label, new.rev.label);
-            (new.rev.nrg, title, Some(overlay))
+            (new.rev.nrg, title, Some(overlay), Some(old.rev.nrg))
         }
-        None => (base.rev.nrg, base.rev.label, None),
+        None => (base.rev.nrg, base.rev.label, None, None),
     };
-    let levels = nrg.levels();
-    let (nrg, title) = match (&args.level, levels.is_empty()) {
-        (None, true) => (nrg, title),
-        (Some(l), true) => miette::bail!("--level {l}: this map has no levels"),
-        (level, false) => {
-            let names: Vec<&str> = levels.iter().map(|l| l.name.as_str()).collect();
-            let Some(l) = level else {
-                miette::bail!(
-                    "this map has levels {}: draw one with --level",
-                    names.join(", ")
-                );
-            };
-            let Some(floor) = nrg.level_model(l) else {
-                miette::bail!(
-                    "--level {l}: no such level (the map has {})",
-                    names.join(", ")
-                );
-            };
-            (floor, format!("{title} level {l}"))
-        }
-    };
-    let map = background;
+    // The route over the whole building (across its levels).
     let route = match &args.route {
         Some(pair) => {
             let (Some(from), Some(to)) = (pair.first(), pair.get(1)) else {
                 miette::bail!("--route needs two spaces: --route FROM TO");
             };
-            match route_overlay(&nrg, from, to)? {
+            match shortest(&nrg, from, to)? {
                 Some(r) => Some(r),
                 None => {
                     writeln!(out, "no route from {from} to {to}").into_diagnostic()?;
@@ -127,13 +109,78 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         labels: args.labels,
         legend: !args.no_legend,
         graph: !args.no_graph,
-        title: Some(title),
+        title: Some(title.clone()),
         ..RenderOptions::default()
     };
+    let route_said = |r: &Route| format!(", route {:.1} m", r.length_m);
+    let levels = nrg.levels();
+    let names: Vec<&str> = levels.iter().map(|l| l.name.as_str()).collect();
+    let (floor, overlay, diff, level) = match (&args.level, levels.is_empty(), &route) {
+        (Some(l), true, _) => miette::bail!("--level {l}: this map has no levels"),
+        (None, true, _) => (
+            nrg.clone(),
+            route.as_ref().map(|r| RouteOverlay::of_route(&nrg, r)),
+            diff,
+            None,
+        ),
+        (None, false, Some(r)) => {
+            if diff.is_some() {
+                miette::bail!(
+                    "this map has levels {}: draw the diff of one with --level",
+                    names.join(", ")
+                );
+            }
+            // One panel for each level the route is on.
+            let drawing = route_by_level(&nrg, r, &options)
+                .into_diagnostic()
+                .wrap_err_with(|| format!("{}: cannot draw the picture", args.out.display()))?;
+            write_drawing(&args.out, format, &drawing)?;
+            let on: Vec<&str> = r.levels.iter().map(|s| s.level.as_str()).collect();
+            writeln!(
+                out,
+                "wrote {} (levels {}{})",
+                args.out.display(),
+                on.join(" -> "),
+                route_said(r)
+            )
+            .into_diagnostic()?;
+            return Ok(ExitCode::SUCCESS);
+        }
+        (None, false, None) => miette::bail!(
+            "this map has levels {}: draw one with --level",
+            names.join(", ")
+        ),
+        (Some(l), false, _) => {
+            let Some(floor) = nrg.level_model(l) else {
+                miette::bail!(
+                    "--level {l}: no such level (the map has {})",
+                    names.join(", ")
+                );
+            };
+            let overlay = route
+                .as_ref()
+                .and_then(|r| RouteOverlay::on_level(&nrg, r, l));
+            if route.is_some() && overlay.is_none() {
+                writeln!(out, "the route does not pass level {l}").into_diagnostic()?;
+            }
+            let diff = match (diff, &old) {
+                (Some(d), Some(old)) => Some(d.on_level(old, &nrg, l)),
+                _ => None,
+            };
+            (floor, overlay, diff, Some(l.clone()))
+        }
+    };
+    let options = RenderOptions {
+        title: Some(match &level {
+            Some(l) => format!("{title} level {l}"),
+            None => title,
+        }),
+        ..options
+    };
     let scene = Scene {
-        nrg: &nrg,
-        map: map.as_ref(),
-        route: route.as_ref(),
+        nrg: &floor,
+        map: background.as_ref(),
+        route: overlay.as_ref(),
         diff: diff.as_ref(),
         options: &options,
     };
@@ -142,11 +189,8 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         out,
         "wrote {} ({} spaces{}{})",
         args.out.display(),
-        nrg.spaces().len(),
-        route
-            .as_ref()
-            .map(|r| format!(", route {:.1} m", r.length_m))
-            .unwrap_or_default(),
+        floor.spaces().len(),
+        route.as_ref().map(route_said).unwrap_or_default(),
         diff.as_ref()
             .map(|d| format!(
                 ", {} added, {} removed, {} changed",
@@ -162,10 +206,18 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
 
 /// Renders `scene` and writes it atomically to `path` as `format`.
 pub fn write_picture(path: &Path, format: PictureFormat, scene: &Scene<'_>) -> miette::Result<()> {
+    let drawing = layout(scene)
+        .into_diagnostic()
+        .wrap_err_with(|| format!("{}: cannot draw the picture", path.display()))?;
+    write_drawing(path, format, &drawing)
+}
+
+/// Writes a laid-out drawing atomically to `path` as `format`.
+fn write_drawing(path: &Path, format: PictureFormat, drawing: &Drawing) -> miette::Result<()> {
     let bytes = match format {
-        PictureFormat::Svg => render_svg(scene).map(String::into_bytes),
+        PictureFormat::Svg => drawing_svg(drawing).map(String::into_bytes),
         #[cfg(feature = "render")]
-        PictureFormat::Png => nrgdb::render::render_png(scene),
+        PictureFormat::Png => nrgdb::render::drawing_png(drawing),
         #[cfg(not(feature = "render"))]
         PictureFormat::Png => miette::bail!(
             "{}: this nrgdb was built without the `render` feature, so it cannot write PNG (write .svg)",
@@ -265,15 +317,13 @@ fn find_space(nrg: &Nrg, text: &str) -> miette::Result<SpaceId> {
         })
 }
 
-/// The shortest route between two spaces as an overlay; `None` when there
-/// is no route.
-fn route_overlay(nrg: &Nrg, from: &str, to: &str) -> miette::Result<Option<RouteOverlay>> {
+/// The shortest route between two spaces (across levels in a building);
+/// `None` when there is none.
+fn shortest(nrg: &Nrg, from: &str, to: &str) -> miette::Result<Option<Route>> {
     let request = RouteRequest::new(find_space(nrg, from)?, find_space(nrg, to)?);
     let nav = NavMesh::new(std::sync::Arc::new(nrg.clone()));
     let routes = shortest_route(&nav, &request, &Budget::unlimited())
         .into_diagnostic()
         .wrap_err_with(|| format!("--route {from} {to}"))?;
-    Ok(routes
-        .first()
-        .map(|r| RouteOverlay::along(nrg, &r.spaces, r.waypoints.clone(), r.length_m)))
+    Ok(routes.into_iter().next())
 }

@@ -186,3 +186,81 @@ pub struct Drawing {
     /// SVG so a page can place things given in metres).
     pub transform: Option<super::transform::MapTransform>,
 }
+
+impl Item {
+    /// The item moved by `d` pixels.
+    fn moved(mut self, d: [f64; 2]) -> Item {
+        let shift = |p: &mut [f64; 2]| {
+            p[0] += d[0];
+            p[1] += d[1];
+        };
+        match &mut self {
+            Item::Raster { affine, .. } => {
+                affine[4] += d[0];
+                affine[5] += d[1];
+            }
+            Item::Polygon { rings, .. } => rings.iter_mut().flatten().for_each(shift),
+            Item::Line { points, .. } => points.iter_mut().for_each(shift),
+            Item::Circle { centre, .. } => shift(centre),
+            Item::Text { at, .. } => shift(at),
+        }
+        self
+    }
+
+    fn tag_mut(&mut self) -> Option<&mut Tag> {
+        match self {
+            Item::Raster { .. } => None,
+            Item::Polygon { tag, .. }
+            | Item::Line { tag, .. }
+            | Item::Circle { tag, .. }
+            | Item::Text { tag, .. } => Some(tag),
+        }
+    }
+}
+
+impl Drawing {
+    /// Pictures side by side, left to right with tops aligned, as one
+    /// picture (e.g. a route's levels). Element ids after the first panel
+    /// get `-2`, `-3`, … so they stay unique; the result has no single
+    /// map transform. None when there are no panels or the result would
+    /// be wider or taller than `max_px`.
+    ///
+    /// ```
+    /// use nrgdb::render::{Drawing, Rgba};
+    /// let panel = |w| Drawing { width: w, height: 50, background: Rgba::rgb(255, 255, 255), items: vec![], transform: None };
+    /// let both = Drawing::beside(vec![panel(100), panel(60)], 8_192).unwrap();
+    /// assert_eq!((both.width, both.height), (160, 50));
+    /// assert!(Drawing::beside(vec![panel(100), panel(60)], 150).is_none());
+    /// ```
+    pub fn beside(panels: Vec<Drawing>, max_px: u64) -> Option<Drawing> {
+        let first = panels.first()?;
+        let background = first.background;
+        let width: u64 = panels.iter().map(|p| u64::from(p.width)).sum();
+        let height = panels.iter().map(|p| p.height).max().unwrap_or(0);
+        if width > max_px || u64::from(height) > max_px {
+            return None;
+        }
+        let mut items = Vec::new();
+        let mut x = 0.0;
+        for (k, panel) in panels.into_iter().enumerate() {
+            for item in panel.items {
+                let mut item = item.moved([x, 0.0]);
+                if k > 0
+                    && let Some(tag) = item.tag_mut()
+                    && let Some(id) = &mut tag.id
+                {
+                    id.push_str(&format!("-{}", k + 1));
+                }
+                items.push(item);
+            }
+            x += f64::from(panel.width);
+        }
+        Some(Drawing {
+            width: u32::try_from(width).ok()?,
+            height,
+            background,
+            items,
+            transform: None,
+        })
+    }
+}

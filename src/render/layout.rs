@@ -176,6 +176,12 @@ fn bounds(scene: &Scene<'_>) -> Result<[f64; 4], RenderError> {
             add(map.pixel_to_metres(c, r));
         }
     }
+    if let Some([x0, y0, x1, y1]) = scene.options.frame_m
+        && [x0, y0, x1, y1].iter().all(|v| v.is_finite())
+    {
+        add([x0, y0]);
+        add([x1, y1]);
+    }
     if b[0] > b[2] || b[1] > b[3] {
         return Err(RenderError::NothingToDraw);
     }
@@ -277,15 +283,29 @@ fn route_items(route: &super::scene::RouteOverlay, t: &MapTransform, items: &mut
     let (Some(first), Some(last)) = (points.first().copied(), points.last().copied()) else {
         return;
     };
-    items.push(Item::Line {
-        points,
-        stroke: style::route_stroke(),
-        tag: Tag {
-            class: "route".into(),
-            id: Some("route".into()),
-            space: None,
-        },
-    });
+    // One line a piece (the route on another level in between); the
+    // first piece carries the id.
+    let mut cuts: Vec<usize> = route
+        .breaks
+        .iter()
+        .copied()
+        .filter(|&b| b > 0 && b < points.len())
+        .collect();
+    cuts.sort_unstable();
+    cuts.dedup();
+    let mut start = 0;
+    for end in cuts.into_iter().chain([points.len()]) {
+        items.push(Item::Line {
+            points: points[start..end].to_vec(),
+            stroke: style::route_stroke(),
+            tag: Tag {
+                class: "route".into(),
+                id: (start == 0).then(|| "route".into()),
+                space: None,
+            },
+        });
+        start = end;
+    }
     for door in &route.doors {
         items.push(Item::Circle {
             centre: t.apply(*door),
@@ -295,10 +315,53 @@ fn route_items(route: &super::scene::RouteOverlay, t: &MapTransform, items: &mut
             tag: Tag::class("route-door"),
         });
     }
-    for (centre, class, fill) in [
-        (first, "route-start", okabe_ito::VERMILLION),
-        (last, "route-goal", okabe_ito::BLACK),
+    for mark in &route.level_changes {
+        let [u, v] = t.apply(mark.at);
+        items.push(Item::Circle {
+            centre: [u, v],
+            radius: 9.0,
+            fill: Some(Rgba::rgb(255, 255, 255)),
+            stroke: Some(Stroke::solid(okabe_ito::BLACK, 3.0)),
+            tag: Tag::class("route-level"),
+        });
+        // Below the mark, centred, on a white box so it reads over
+        // outlines and labels.
+        let (size, at) = (12.0, [u, v + 25.0]);
+        let half = 0.36 * size * mark.text.chars().count() as f64 + 4.0;
+        let (top, bottom) = (at[1] - size - 1.0, at[1] + 4.0);
+        items.push(Item::Polygon {
+            rings: vec![vec![
+                [at[0] - half, top],
+                [at[0] + half, top],
+                [at[0] + half, bottom],
+                [at[0] - half, bottom],
+            ]],
+            fill: Some(Rgba::rgb(255, 255, 255).with_alpha(225)),
+            hatch: None,
+            stroke: Some(Stroke::solid(okabe_ito::BLACK, 1.0)),
+            tag: Tag::class("route-level-box"),
+        });
+        items.push(Item::Text {
+            at,
+            text: mark.text.clone(),
+            size,
+            colour: okabe_ito::BLACK,
+            anchor: Anchor::Middle,
+            tag: Tag::class("route-level-text"),
+        });
+    }
+    for (centre, class, fill, shown) in [
+        (
+            first,
+            "route-start",
+            okabe_ito::VERMILLION,
+            !route.start_elsewhere,
+        ),
+        (last, "route-goal", okabe_ito::BLACK, !route.goal_elsewhere),
     ] {
+        if !shown {
+            continue;
+        }
         items.push(Item::Circle {
             centre,
             radius: 7.0,
@@ -375,6 +438,7 @@ mod tests {
             waypoints: vec![[2.0, 4.6], [2.0, 2.1], [4.0, 1.0]],
             doors: vec![[2.0, 2.1]],
             length_m: 5.0,
+            ..RouteOverlay::default()
         };
         let o = opts(10.0);
         let d = layout(&Scene {

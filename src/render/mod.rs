@@ -10,7 +10,8 @@
 //!
 //! Uses grid, model, diff's change sets ([`diff_overlay`]: the change set
 //! comes from `diff::compare`, the renderer never diffs) and (for the
-//! demo picture) imaging labels; takes routes as a plain overlay. Knows
+//! demo picture) imaging labels; takes routes as a plain overlay, made
+//! from a route's data (`route::Route`, per level in a building). Knows
 //! nothing of SQL, HTTP or the terminal.
 
 mod data_uri;
@@ -24,6 +25,7 @@ mod overlay;
 mod picture;
 #[cfg(feature = "render")]
 mod png;
+mod route_levels;
 mod scene;
 pub mod style;
 mod svg;
@@ -37,7 +39,10 @@ pub use legend::nice_length_m;
 pub use overlay::diff_overlay;
 pub use picture::{PALETTE, kind_picture, kind_picture_png};
 #[cfg(feature = "render")]
-pub use png::{drawing_pixmap, render_png};
-pub use scene::{DiffOverlay, LabelMode, OverlaySpace, RenderOptions, RouteOverlay, Scene};
+pub use png::{drawing_pixmap, drawing_png, render_png};
+pub use route_levels::route_by_level;
+pub use scene::{
+    DiffOverlay, LabelMode, LevelMark, OverlaySpace, RenderOptions, RouteOverlay, Scene,
+};
 pub use svg::{drawing_svg, render_svg};
 pub use transform::MapTransform;

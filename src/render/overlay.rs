@@ -72,6 +72,28 @@ pub fn diff_overlay(changes: &ChangeSet, old: &Nrg, new: &Nrg) -> DiffOverlay {
     overlay
 }
 
+impl DiffOverlay {
+    /// Only the changes on level `level` of a building: removed spaces by
+    /// their level in `old`, the others by theirs in `new`.
+    pub fn on_level(&self, old: &Nrg, new: &Nrg, level: &str) -> DiffOverlay {
+        let on = |nrg: &Nrg, o: &OverlaySpace| {
+            nrg.space(o.id)
+                .and_then(|s| s.level.as_ref())
+                .is_some_and(|l| l.name == level)
+        };
+        let keep = |list: &[OverlaySpace], nrg: &Nrg| -> Vec<OverlaySpace> {
+            list.iter().filter(|o| on(nrg, o)).cloned().collect()
+        };
+        DiffOverlay {
+            added: keep(&self.added, new),
+            removed: keep(&self.removed, old),
+            changed: keep(&self.changed, new),
+            split: keep(&self.split, new),
+            merged: keep(&self.merged, new),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

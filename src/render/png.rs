@@ -24,8 +24,12 @@ use super::scene::Scene;
 /// # Ok::<(), nrgdb::render::RenderError>(())
 /// ```
 pub fn render_png(scene: &Scene<'_>) -> Result<Vec<u8>, RenderError> {
-    let pixmap = drawing_pixmap(&layout(scene)?)?;
-    pixmap
+    drawing_png(&layout(scene)?)
+}
+
+/// A laid-out drawing as PNG bytes.
+pub fn drawing_png(d: &Drawing) -> Result<Vec<u8>, RenderError> {
+    drawing_pixmap(d)?
         .encode_png()
         .map_err(|e| RenderError::Encode(e.to_string()))
 }

@@ -49,6 +49,9 @@ pub struct RenderOptions {
     pub graph: bool,
     /// A title above the picture (e.g. the map name and revision).
     pub title: Option<String>,
+    /// An area (metres: x min, y min, x max, y max) the picture covers
+    /// at least, so pictures of a building's levels share one frame.
+    pub frame_m: Option<[f64; 4]>,
 }
 
 impl Default for RenderOptions {
@@ -61,11 +64,14 @@ impl Default for RenderOptions {
             legend: true,
             graph: true,
             title: None,
+            frame_m: None,
         }
     }
 }
 
-/// A route to draw: waypoints as a thick line, doors marked.
+/// A route to draw: waypoints as a thick line, doors marked; on one level
+/// of a building, the route's parts on that level and where it changes
+/// level (see [`RouteOverlay::on_level`]).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct RouteOverlay {
     /// Waypoints in metres, start first.
@@ -74,6 +80,24 @@ pub struct RouteOverlay {
     pub doors: Vec<Point>,
     /// The route's length in metres (shown in the legend).
     pub length_m: f64,
+    /// Indices into `waypoints` where a new piece of line starts (the
+    /// route is on another level in between); empty for one line.
+    pub breaks: Vec<usize>,
+    /// The route starts on another level: no start marker here.
+    pub start_elsewhere: bool,
+    /// The route ends on another level: no goal marker here.
+    pub goal_elsewhere: bool,
+    /// Where the route leaves or reaches this level, and what to say there.
+    pub level_changes: Vec<LevelMark>,
+}
+
+/// A place where a drawn route changes level.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LevelMark {
+    /// Where, metres.
+    pub at: Point,
+    /// What to say, e.g. `up to level 2` or `from level 0`.
+    pub text: String,
 }
 
 impl RouteOverlay {
@@ -99,6 +123,7 @@ impl RouteOverlay {
                 .map(|s| s.anchor)
                 .collect(),
             length_m,
+            ..RouteOverlay::default()
         }
     }
 }

@@ -347,6 +347,7 @@ mod tests {
             waypoints: vec![[2.0, 4.6], [2.0, 2.1], [4.0, 1.0]],
             doors: vec![[2.0, 2.1]],
             length_m: 3.6,
+            ..RouteOverlay::default()
         };
         let gone = Space::new(
             SpaceId(99),

@@ -332,6 +332,72 @@ fn a_simulated_tower_imports_from_its_manifest_level_by_level() {
         "{said}"
     );
     assert!(!d.join("all.png").exists());
+    // A route across levels: one panel for each level it is on, with the
+    // marks where it changes level; on one level, that level's part.
+    let room = |level: &str| {
+        tower
+            .spaces()
+            .iter()
+            .find(|s| s.kind == SpaceKind::Room && s.level.as_ref().unwrap().name == level)
+            .unwrap()
+            .id
+            .to_string()
+    };
+    let (ok, said) = run(
+        d,
+        &[
+            &[
+                "render",
+                "tower",
+                "--out",
+                "route.svg",
+                "--route",
+                &room("0"),
+                &room("2"),
+            ][..],
+            &db,
+        ]
+        .concat(),
+    );
+    assert!(ok && said.contains("(levels 0 -> 1 -> 2, route "), "{said}");
+    let svg = std::fs::read_to_string(d.join("route.svg")).unwrap();
+    for level in ["0", "1", "2"] {
+        assert!(
+            svg.contains(&format!("level {level}</text>")),
+            "title of level {level}"
+        );
+    }
+    assert_eq!(
+        svg.matches("class=\"route-level\"").count(),
+        3,
+        "up; from and up; from"
+    );
+    assert!(svg.contains(">up to level 1<") && svg.contains(">from level 1<"));
+    let (ok, said) = run(
+        d,
+        &[
+            &[
+                "render",
+                "tower",
+                "--out",
+                "r1.svg",
+                "--level",
+                "1",
+                "--route",
+                &room("0"),
+                &room("2"),
+            ][..],
+            &db,
+        ]
+        .concat(),
+    );
+    assert!(ok, "{said}");
+    let svg = std::fs::read_to_string(d.join("r1.svg")).unwrap();
+    assert!(
+        svg.contains(">from level 0, up to level 2<"),
+        "passing level 1 on the stairs"
+    );
+    assert!(!svg.contains("route-start") && !svg.contains("route-goal"));
     // The same manifest again: nothing changed, no revision.
     let (ok, said) = run(
         d,

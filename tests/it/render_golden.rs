@@ -37,6 +37,7 @@ fn overlays(nrg: &Nrg) -> (RouteOverlay, DiffOverlay) {
         waypoints: [10, 10_000, 1, 10_002, 12].map(anchor).to_vec(),
         doors: [10_000, 10_002].map(anchor).to_vec(),
         length_m: 13.2,
+        ..RouteOverlay::default()
     };
     let gone = Space::new(
         SpaceId(7),
