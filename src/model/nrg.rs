@@ -126,6 +126,28 @@ impl Nrg {
         Nrg::new(spaces, connections).ok()
     }
 
+    /// The extent of every space's outline, metres: x min, y min, x max,
+    /// y max (all levels together); None without spaces.
+    pub fn extent(&self) -> Option<[f64; 4]> {
+        let b = self.spaces.iter().flat_map(|s| &s.polygon).fold(
+            [
+                f64::INFINITY,
+                f64::INFINITY,
+                f64::NEG_INFINITY,
+                f64::NEG_INFINITY,
+            ],
+            |b, p| {
+                [
+                    b[0].min(p[0]),
+                    b[1].min(p[1]),
+                    b[2].max(p[0]),
+                    b[3].max(p[1]),
+                ]
+            },
+        );
+        (b[0] <= b[2] && b[1] <= b[3]).then_some(b)
+    }
+
     /// Whether the spaces have levels (all do or none do, see
     /// [`Nrg::new`]): O(1), for hot paths.
     pub fn has_levels(&self) -> bool {

@@ -42,22 +42,7 @@ pub fn route_by_level(
             options,
         });
     }
-    let frame = nrg.spaces().iter().flat_map(|s| &s.polygon).fold(
-        [
-            f64::INFINITY,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NEG_INFINITY,
-        ],
-        |b, p| {
-            [
-                b[0].min(p[0]),
-                b[1].min(p[1]),
-                b[2].max(p[0]),
-                b[3].max(p[1]),
-            ]
-        },
-    );
+    let frame = nrg.extent();
     let levels: Vec<_> = nrg
         .levels()
         .into_iter()
@@ -78,7 +63,7 @@ pub fn route_by_level(
         let panel_options = RenderOptions {
             title: Some(title),
             legend: options.legend && k + 1 == levels.len(),
-            frame_m: Some(frame),
+            frame_m: frame,
             ..options.clone()
         };
         panels.push(layout(&Scene {

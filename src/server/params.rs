@@ -110,6 +110,36 @@ pub fn parse_metres(name: &str, value: &str) -> Result<f64, ApiError> {
     }
 }
 
+/// A `level` parameter checked against the revision's levels: 404 naming
+/// the levels it has, 400 on a map without levels.
+pub fn level_param(
+    raw: Option<&str>,
+    rev: &crate::query::IndexedRevision,
+) -> Result<Option<String>, ApiError> {
+    let Some(raw) = raw.map(str::trim) else {
+        return Ok(None);
+    };
+    let levels = rev.nrg.levels();
+    if levels.is_empty() {
+        return Err(ApiError::bad(
+            "level",
+            format!("map '{}' has no levels", rev.map),
+        ));
+    }
+    if !levels.iter().any(|l| l.name == raw) {
+        let names: Vec<&str> = levels.iter().map(|l| l.name.as_str()).collect();
+        return Err(ApiError::not_found(
+            "level",
+            format!(
+                "map '{}' has no level '{raw}' (it has {})",
+                rev.map,
+                names.join(", ")
+            ),
+        ));
+    }
+    Ok(Some(raw.to_string()))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

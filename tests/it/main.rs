@@ -57,6 +57,7 @@ mod render_cli;
 mod render_golden;
 mod viewer_cdp;
 mod viewer_e2e;
+mod viewer_levels;
 
 mod store;
 mod store_building;

@@ -13,7 +13,7 @@ use crate::server_client::TestServer;
 
 const CHROMIUM: &str = "/usr/bin/chromium";
 
-fn chromium_or_skip() -> Option<&'static str> {
+pub fn chromium_or_skip() -> Option<&'static str> {
     if Path::new(CHROMIUM).exists() {
         return Some(CHROMIUM);
     }

@@ -72,6 +72,44 @@ pub async fn revision(
         .await
 }
 
+/// `GET /maps/{map}/levels?rev=`: a building's levels, lowest first,
+/// each with its elevation and number of spaces, and the building's
+/// extent (`frame_m`: x min, y min, x max, y max, metres); no levels for
+/// a map without them.
+pub async fn levels(
+    State(state): State<AppState>,
+    Path(map): Path<String>,
+    uri: Uri,
+) -> Result<Json<Value>, ApiError> {
+    let rev = Params::parse(&uri, &["rev"])?.rev()?;
+    state
+        .quick(move |ctx| {
+            let r = ctx.revision(&map, rev)?;
+            let levels: Vec<Value> = r
+                .nrg
+                .levels()
+                .into_iter()
+                .map(|l| {
+                    let n = r
+                        .nrg
+                        .spaces()
+                        .iter()
+                        .filter(|s| s.level.as_ref().is_some_and(|m| m.name == l.name))
+                        .count();
+                    json!({ "name": l.name, "elevation_m": l.elevation_m, "spaces": n })
+                })
+                .collect();
+            let frame = r.nrg.extent();
+            Ok(Json(json!({
+                "map": r.map,
+                "revision": r.revision,
+                "levels": levels,
+                "frame_m": frame,
+            })))
+        })
+        .await
+}
+
 /// Cache headers: a numbered revision never changes; `latest` does.
 fn with_caching(mut response: Response, numbered: bool) -> Response {
     let value = if numbered {

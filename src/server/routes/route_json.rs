@@ -7,7 +7,7 @@
 
 use serde::Serialize;
 
-use crate::model::{Point, SpaceId};
+use crate::model::{Nrg, Point, SpaceId};
 use crate::query::IndexedRevision;
 use crate::route::{Endpoint, LevelSpan, Route, Step, Turn};
 
@@ -93,6 +93,9 @@ pub struct StepJson<'a> {
     /// Where the manoeuvre happens, metres.
     #[serde(serialize_with = "point_mm")]
     pub location: Point,
+    /// The level of the space walked in, in a building with levels.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub level: Option<&'a str>,
 }
 
 /// A GeoJSON LineString.
@@ -143,6 +146,16 @@ pub struct SpaceJson<'a> {
     pub kind: &'static str,
     /// Its name, if any.
     pub name: Option<&'a str>,
+    /// Its level, in a building with levels.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub level: Option<&'a str>,
+}
+
+/// The name of a space's level in `nrg`, if it has one.
+fn level_of(nrg: &Nrg, id: SpaceId) -> Option<&str> {
+    nrg.space(id)
+        .and_then(|s| s.level.as_ref())
+        .map(|l| l.name.as_str())
 }
 
 fn millimetres(m: f64) -> f64 {
@@ -164,8 +177,9 @@ fn tenths(s: f64) -> f64 {
     (s * 10.0).round() / 10.0
 }
 
-fn step_json(s: &Step) -> StepJson<'_> {
+fn step_json<'a>(s: &'a Step, nrg: &'a Nrg) -> StepJson<'a> {
     StepJson {
+        level: level_of(nrg, s.space),
         instruction: &s.instruction,
         distance: millimetres(s.distance_m),
         turn: s.turn,
@@ -177,7 +191,7 @@ fn step_json(s: &Step) -> StepJson<'_> {
 }
 
 /// Splits `route`'s steps into its legs by where each step ends.
-fn legs(route: &Route) -> Vec<Leg<'_>> {
+fn legs<'a>(route: &'a Route, nrg: &'a Nrg) -> Vec<Leg<'a>> {
     let speed = if route.length_m > 0.0 && route.duration_s > 0.0 {
         route.length_m / route.duration_s
     } else {
@@ -205,7 +219,7 @@ fn legs(route: &Route) -> Vec<Leg<'_>> {
             leg += 1;
         }
         if let Some(l) = out.get_mut(leg) {
-            l.steps.push(step_json(s));
+            l.steps.push(step_json(s, nrg));
         }
     }
     out
@@ -248,7 +262,7 @@ pub fn route_response<'a>(
         .map(|r| RouteJson {
             distance: millimetres(r.length_m),
             duration: tenths(r.duration_s),
-            legs: legs(r),
+            legs: legs(r, nrg),
             geometry: LineString {
                 kind: "LineString",
                 coordinates: Coordinates::of(r),
@@ -262,6 +276,7 @@ pub fn route_response<'a>(
                     id: s.id,
                     kind: s.kind.as_str(),
                     name: s.name.as_deref(),
+                    level: s.level.as_ref().map(|l| l.name.as_str()),
                 })
                 .collect(),
             doors: r.doors.clone(),

@@ -10,12 +10,13 @@ use crate::model::{Space, SpaceId, SpaceKind, doorway};
 use crate::query::{IndexedRevision, Limits, Plan, QueryResult, Table, execute, like};
 use crate::server::endpoint::{ParamDoc, REV, q};
 use crate::server::error::ApiError;
-use crate::server::params::{Params, parse_metres, parse_value};
+use crate::server::params::{Params, level_param, parse_metres, parse_value};
 use crate::server::state::AppState;
 
 /// Query parameters of `GET /maps/{map}/spaces`.
-pub const LIST_PARAMS: [ParamDoc; 3] = [
+pub const LIST_PARAMS: [ParamDoc; 4] = [
     q("kind", "string", false, "room, corridor, door or other"),
+    LEVEL,
     q(
         "name",
         "string",
@@ -35,11 +36,25 @@ pub const NEIGHBOUR_PARAMS: [ParamDoc; 2] = [
     REV,
 ];
 /// Query parameters of `GET /maps/{map}/locate`.
-pub const LOCATE_PARAMS: [ParamDoc; 3] = [
+pub const LOCATE_PARAMS: [ParamDoc; 4] = [
     q("x", "number", true, "x in metres, map frame"),
     q("y", "number", true, "y in metres, map frame"),
+    q(
+        "level",
+        "string",
+        false,
+        "in a building with levels, the level searched (default: every level, the lowest first in `spaces`)",
+    ),
     REV,
 ];
+
+/// The `level` parameter of the listing.
+const LEVEL: ParamDoc = q(
+    "level",
+    "string",
+    false,
+    "in a building with levels, only the spaces on this level",
+);
 
 /// The short JSON form of a space: id, kind, name, label, anchor, area,
 /// degree, and for a door its width and doorway line.
@@ -53,6 +68,9 @@ pub(crate) fn space_summary(s: &Space, rev: &IndexedRevision) -> Value {
         "area_m2": s.area_m2,
         "degree": rev.graph.degree(s.id),
     });
+    if let Some(level) = &s.level {
+        v["level"] = json!(level.name);
+    }
     if let Some(d) = doorway(s) {
         v["width_m"] = json!(d.width_m);
         v["doorway"] = json!(d.line);
@@ -101,18 +119,25 @@ pub async fn list_spaces(
     Path(map): Path<String>,
     uri: Uri,
 ) -> Result<Json<Value>, ApiError> {
-    let p = Params::parse(&uri, &["kind", "name", "rev"])?;
+    let p = Params::parse(&uri, &["kind", "level", "name", "rev"])?;
     let kind: Option<SpaceKind> = p.opt("kind", "a kind (room, corridor, door or other)")?;
     let name = p.get("name").map(str::to_string);
+    let level = p.get("level").map(str::to_string);
     let rev = p.rev()?;
     state
         .quick(move |ctx| {
             let r = ctx.revision(&map, rev)?;
+            let level = level_param(level.as_deref(), &r)?;
             let spaces: Vec<Value> = r
                 .nrg
                 .spaces()
                 .iter()
                 .filter(|s| kind.is_none_or(|k| s.kind == k))
+                .filter(|s| {
+                    level
+                        .as_deref()
+                        .is_none_or(|l| s.level.as_ref().is_some_and(|m| m.name == l))
+                })
                 .filter(|s| name.as_deref().is_none_or(|n| like(&s.label(), n)))
                 .map(|s| space_summary(s, &r))
                 .collect();
@@ -186,22 +211,38 @@ pub async fn neighbours(
         .await
 }
 
-/// `GET /maps/{map}/locate?x=&y=&rev=`: `"space": null` when no space
-/// contains the point.
+/// `GET /maps/{map}/locate?x=&y=&level=&rev=`: `"space": null` when no
+/// space contains the point. In a building with levels, `spaces` lists
+/// the space containing it on each level searched, lowest first, and
+/// `space` is the first of them.
 pub async fn locate(
     State(state): State<AppState>,
     Path(map): Path<String>,
     uri: Uri,
 ) -> Result<Json<Value>, ApiError> {
-    let p = Params::parse(&uri, &["x", "y", "rev"])?;
+    let p = Params::parse(&uri, &["x", "y", "level", "rev"])?;
     let x = parse_metres("x", p.required("x")?)?;
     let y = parse_metres("y", p.required("y")?)?;
+    let level = p.get("level").map(str::to_string);
     let rev = p.rev()?;
     state
         .quick(move |ctx| {
             let r = ctx.revision(&map, rev)?;
-            let found = r.locate([x, y]).map(|s| space_summary(s, &r));
-            let mut v = envelope(&r, "space", found.unwrap_or(Value::Null));
+            let level = level_param(level.as_deref(), &r)?;
+            if !r.nrg.has_levels() {
+                let found = r.locate([x, y]).map(|s| space_summary(s, &r));
+                let mut v = envelope(&r, "space", found.unwrap_or(Value::Null));
+                v["point"] = json!([x, y]);
+                return Ok(Json(v));
+            }
+            let found: Vec<Value> = r
+                .locate_on([x, y], level.as_deref())
+                .into_iter()
+                .map(|s| space_summary(s, &r))
+                .collect();
+            let first = found.first().cloned().unwrap_or(Value::Null);
+            let mut v = envelope(&r, "space", first);
+            v["spaces"] = found.into();
             v["point"] = json!([x, y]);
             Ok(Json(v))
         })

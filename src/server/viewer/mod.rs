@@ -2,7 +2,8 @@
 //! `index.html`, compiled into the binary, no build step) and
 //! `GET /maps/{map}/revisions/{rev}/svg` draws a revision with
 //! [`crate::render::render_svg`], optionally with a route (`?route=FROM,TO`)
-//! or the changes since another revision (`?diff=A`).
+//! or the changes since another revision (`?diff=A`); a building one
+//! level at a time (`?level=L`).
 //!
 //! Uses render, route, query's indexed revisions and the server's state,
 //! params and errors; the page itself only calls the JSON API.
@@ -19,7 +20,7 @@ use crate::render::{RenderOptions, RouteOverlay, Scene, diff_overlay, render_svg
 use crate::route::{Budget, RouteRequest, shortest_route};
 use crate::server::endpoint::{ParamDoc, q};
 use crate::server::error::{ApiError, comparing_error};
-use crate::server::params::{Params, parse_rev};
+use crate::server::params::{Params, level_param, parse_rev};
 use crate::server::state::AppState;
 use crate::store::StoreError;
 
@@ -27,7 +28,13 @@ use crate::store::StoreError;
 pub const INDEX_HTML: &str = include_str!("index.html");
 
 /// Query parameters of the SVG endpoint.
-pub const SVG_PARAMS: [ParamDoc; 3] = [
+pub const SVG_PARAMS: [ParamDoc; 4] = [
+    q(
+        "level",
+        "string",
+        false,
+        "in a building with levels, the level drawn (default: the lowest); a route is drawn where it is on that level, with marks where it changes level",
+    ),
     q(
         "route",
         "string",
@@ -85,7 +92,8 @@ pub async fn svg(
     Path((map, rev)): Path<(String, String)>,
     uri: Uri,
 ) -> Result<Response, ApiError> {
-    let p = Params::parse(&uri, &["route", "diff", "map"])?;
+    let p = Params::parse(&uri, &["route", "diff", "map", "level"])?;
+    let level = p.get("level").map(str::to_string);
     let rev = parse_rev("rev", &rev)?;
     let route = p.get("route").map(str::to_string);
     let diff: Option<u32> = p.opt("diff", "a revision number")?;
@@ -97,6 +105,11 @@ pub async fn svg(
     let body = state
         .blocking(move |ctx| {
             let r = ctx.revision(&map, rev)?;
+            // The level drawn: asked for, else the lowest.
+            let level = match level_param(level.as_deref(), &r)? {
+                Some(l) => Some(l),
+                None => r.nrg.levels().into_iter().next().map(|l| l.name),
+            };
             let overlay = match &route {
                 None => None,
                 Some(pair) => {
@@ -109,8 +122,9 @@ pub async fn svg(
                     let request = RouteRequest::new(space(from, &r)?, space(to, &r)?);
                     let routes =
                         shortest_route(&r.nav, &request, &Budget::within(timeout, deadline))?;
-                    routes.first().map(|x| {
-                        RouteOverlay::along(&r.nrg, &x.spaces, x.waypoints.clone(), x.length_m)
+                    routes.first().and_then(|x| match &level {
+                        Some(l) => RouteOverlay::on_level(&r.nrg, x, l),
+                        None => Some(RouteOverlay::of_route(&r.nrg, x)),
                     })
                 }
             };
@@ -146,22 +160,36 @@ pub async fn svg(
                             timeout.as_millis(),
                         )
                     })?;
-                    Some(diff_overlay(
-                        &done.comparison.changes,
-                        &done.old.nrg,
-                        &done.new.nrg,
-                    ))
+                    let all = diff_overlay(&done.comparison.changes, &done.old.nrg, &done.new.nrg);
+                    Some(match &level {
+                        Some(l) => all.on_level(&done.old.nrg, &done.new.nrg, l),
+                        None => all,
+                    })
                 }
             };
-            let title = match diff {
+            let mut title = match diff {
                 Some(a) => format!("{map}@{a} -> @{}", r.revision),
                 None => format!("{map}@{}", r.revision),
             };
+            // A level is drawn alone, in the whole building's frame so
+            // that switching levels keeps the picture in place.
+            let (floor, frame_m) = match &level {
+                Some(l) => {
+                    title.push_str(&format!(" level {l}"));
+                    let floor = r.nrg.level_model(l).ok_or_else(|| {
+                        ApiError::not_found("level", format!("no spaces on level {l}"))
+                    })?;
+                    (Some(floor), r.nrg.extent())
+                }
+                None => (None, None),
+            };
             let options = RenderOptions {
                 title: Some(title),
+                frame_m,
                 ..RenderOptions::default()
             };
-            let grid = if with_map {
+            // Buildings with levels keep no single occupancy map.
+            let grid = if with_map && level.is_none() {
                 let seq = u32::try_from(r.revision).map_err(|_| {
                     ApiError::Internal(format!("revision {} too large", r.revision))
                 })?;
@@ -170,7 +198,7 @@ pub async fn svg(
                 None
             };
             let scene = Scene {
-                nrg: &r.nrg,
+                nrg: floor.as_ref().unwrap_or(&r.nrg),
                 map: grid.as_ref(),
                 route: overlay.as_ref(),
                 diff: changes.as_ref(),
