@@ -65,20 +65,10 @@ pub(super) fn no_new_findings(before: &Nrg, edited: &Edited) -> Result<(), EditE
 
 /// `[min x, min y, max x, max y]` of the space's shell.
 fn bounds(s: &Space) -> [f64; 4] {
-    s.polygon.iter().fold(
-        [
-            f64::INFINITY,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NEG_INFINITY,
-        ],
-        |b, p| {
-            [
-                b[0].min(p[0]),
-                b[1].min(p[1]),
-                b[2].max(p[0]),
-                b[3].max(p[1]),
-            ]
-        },
-    )
+    crate::model::bounds(&s.polygon).unwrap_or([
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    ])
 }

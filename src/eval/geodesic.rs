@@ -39,7 +39,7 @@ use serde::Serialize;
 
 use super::EvalError;
 use crate::model::{Nrg, Point};
-use raster::{Raster, chessboard_clearance, ring_bounds};
+use raster::{Raster, chessboard_clearance};
 
 /// The most cells a [`FreeSpaceGrid`] may have (about 0.5 GB of search
 /// state); a larger grid is refused with [`EvalError::TooManyCells`].
@@ -117,7 +117,7 @@ impl FreeSpaceGrid {
         let bounds = nrg
             .spaces()
             .iter()
-            .filter_map(|s| ring_bounds(&s.polygon))
+            .filter_map(|s| crate::model::bounds(&s.polygon))
             .reduce(|a, b| {
                 [
                     a[0].min(b[0]),

@@ -1,5 +1,5 @@
-//! Planar geometry on the model's rings: area, centroid, orientation and
-//! point-in-ring. Metres in the map frame; rings are open (first point not
+//! Planar geometry on the model's rings: area, centroid, orientation,
+//! point-in-ring and bounds. Metres in the map frame; rings are open (first point not
 //! repeated).
 
 /// A point `[x, y]` in metres in the map frame.
@@ -105,6 +105,29 @@ pub fn point_in_ring(p: Point, ring: &[Point]) -> bool {
         j = i;
     }
     inside
+}
+
+/// `[min x, min y, max x, max y]` of some points, `None` when there are
+/// none.
+///
+/// ```
+/// use nrgdb::model::bounds;
+/// assert_eq!(bounds(&[[1.0, 5.0], [-2.0, 3.0]]), Some([-2.0, 3.0, 1.0, 5.0]));
+/// assert_eq!(bounds(&[]), None);
+/// ```
+pub fn bounds<'a>(points: impl IntoIterator<Item = &'a Point>) -> Option<[f64; 4]> {
+    let mut points = points.into_iter();
+    let first = points.next()?;
+    Some(
+        points.fold([first[0], first[1], first[0], first[1]], |b, p| {
+            [
+                b[0].min(p[0]),
+                b[1].min(p[1]),
+                b[2].max(p[0]),
+                b[3].max(p[1]),
+            ]
+        }),
+    )
 }
 
 #[cfg(test)]

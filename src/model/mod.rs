@@ -29,7 +29,8 @@ pub use crs::{NamedCrs, lowest_corner};
 pub use doorway::{Doorway, convex_hull, polygon_doorway};
 pub use error::ModelError;
 pub use geometry::{
-    Point, Ring, point_in_ring, polygon_area, polygon_centroid, ring_is_ccw, segment_distance,
+    Point, Ring, bounds, point_in_ring, polygon_area, polygon_centroid, ring_is_ccw,
+    segment_distance,
 };
 pub use georef::{GEOREF_KEY, Georef, GeorefError};
 pub use graph::ConnectivityGraph;

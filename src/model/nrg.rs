@@ -129,23 +129,7 @@ impl Nrg {
     /// The extent of every space's outline, metres: x min, y min, x max,
     /// y max (all levels together); None without spaces.
     pub fn extent(&self) -> Option<[f64; 4]> {
-        let b = self.spaces.iter().flat_map(|s| &s.polygon).fold(
-            [
-                f64::INFINITY,
-                f64::INFINITY,
-                f64::NEG_INFINITY,
-                f64::NEG_INFINITY,
-            ],
-            |b, p| {
-                [
-                    b[0].min(p[0]),
-                    b[1].min(p[1]),
-                    b[2].max(p[0]),
-                    b[3].max(p[1]),
-                ]
-            },
-        );
-        (b[0] <= b[2] && b[1] <= b[3]).then_some(b)
+        super::geometry::bounds(self.spaces.iter().flat_map(|s| &s.polygon))
     }
 
     /// Whether the spaces have levels (all do or none do, see

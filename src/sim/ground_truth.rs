@@ -76,22 +76,12 @@ fn paint(map: &GreyMap, img: &mut [u8], bbox: [f64; 4], value: u8, inside: impl 
 }
 
 fn bbox(points: &[Point]) -> [f64; 4] {
-    points.iter().fold(
-        [
-            f64::INFINITY,
-            f64::INFINITY,
-            f64::NEG_INFINITY,
-            f64::NEG_INFINITY,
-        ],
-        |b, p| {
-            [
-                b[0].min(p[0]),
-                b[1].min(p[1]),
-                b[2].max(p[0]),
-                b[3].max(p[1]),
-            ]
-        },
-    )
+    crate::model::bounds(points).unwrap_or([
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    ])
 }
 
 fn extend(s: Segment, by: f64) -> Option<Segment> {

@@ -70,7 +70,7 @@ impl Raster {
         let mut cross = Vec::new();
         let mut row: Vec<u8> = Vec::new();
         for space in nrg.spaces() {
-            let Some([x0, y0, x1, y1]) = ring_bounds(&space.polygon) else {
+            let Some([x0, y0, x1, y1]) = crate::model::bounds(&space.polygon) else {
                 continue;
             };
             let c0 = self.first_col_at_or_right_of(x0);
@@ -104,22 +104,6 @@ impl Raster {
             }
         }
     }
-}
-
-/// `[min_x, min_y, max_x, max_y]` of a ring, `None` when it is empty.
-pub(super) fn ring_bounds(ring: &[Point]) -> Option<[f64; 4]> {
-    let first = ring.first()?;
-    Some(
-        ring.iter()
-            .fold([first[0], first[1], first[0], first[1]], |b, p| {
-                [
-                    b[0].min(p[0]),
-                    b[1].min(p[1]),
-                    b[2].max(p[0]),
-                    b[3].max(p[1]),
-                ]
-            }),
-    )
 }
 
 /// Chessboard distance of each cell to the nearest blocked cell (blocked
