@@ -208,6 +208,14 @@ pub enum SpaceRef {
     Name(String),
     /// `(3.5, 7.25)`: the space containing the point.
     Point([f64; 2]),
+    /// `(3.5, 7.25) ON LEVEL 2`: the point on a level of a building (a
+    /// route's stop there), or the space containing it on that level.
+    PointOn {
+        /// The point, metres.
+        at: [f64; 2],
+        /// The level's name.
+        level: String,
+    },
 }
 
 /// A WHERE condition.
@@ -482,6 +490,13 @@ impl fmt::Display for SpaceRef {
             SpaceRef::Id { kind: Some(k), id } => write!(f, "{k} {id}"),
             SpaceRef::Name(n) => f.write_str(&quote(n)),
             SpaceRef::Point(p) => write!(f, "({}, {})", number(p[0]), number(p[1])),
+            SpaceRef::PointOn { at, level } => write!(
+                f,
+                "({}, {}) ON LEVEL {}",
+                number(at[0]),
+                number(at[1]),
+                quote(level)
+            ),
         }
     }
 }

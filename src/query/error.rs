@@ -112,6 +112,19 @@ pub enum QueryError {
         /// y in metres.
         y: f64,
     },
+    /// A point reference on a level where no space holds it, or on a
+    /// level the map does not have.
+    #[error("no space on level {level} contains the point ({x}, {y}){hint}")]
+    NoSpaceOnLevel {
+        /// x in metres.
+        x: f64,
+        /// y in metres.
+        y: f64,
+        /// The level named.
+        level: String,
+        /// What the map has instead (empty when the level exists).
+        hint: String,
+    },
     /// A statement needs a map and none is selected.
     #[error("no map selected (run USE <map>, or SHOW MAPS to list them)")]
     NoMapSelected,

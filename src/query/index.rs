@@ -148,7 +148,36 @@ impl IndexedRevision {
                 .locate(*p)
                 .map(|s| s.id)
                 .ok_or(QueryError::NoSpaceAt { x: p[0], y: p[1] }),
+            SpaceRef::PointOn { at, level } => match self.point_on(*at, level)? {
+                crate::route::Endpoint::PointIn(_, id) => Ok(id),
+                _ => Err(QueryError::NoSpaceAt { x: at[0], y: at[1] }),
+            },
         }
+    }
+
+    /// The point `at` on level `level` as a route's end (in the space
+    /// holding it there); errors name the level, or the levels the map
+    /// has when it has not this one.
+    pub fn point_on(&self, at: Point, level: &str) -> Result<crate::route::Endpoint, QueryError> {
+        let outside = |hint: String| QueryError::NoSpaceOnLevel {
+            x: at[0],
+            y: at[1],
+            level: level.to_string(),
+            hint,
+        };
+        let levels = self.nrg.levels();
+        if !levels.iter().any(|l| l.name == level) {
+            let names: Vec<&str> = levels.iter().map(|l| l.name.as_str()).collect();
+            return Err(outside(if names.is_empty() {
+                ": this map has no levels".to_string()
+            } else {
+                format!(
+                    ": the map has no level {level} (it has {})",
+                    names.join(", ")
+                )
+            }));
+        }
+        crate::route::Endpoint::point_on(&self.nrg, at, level).ok_or_else(|| outside(String::new()))
     }
 
     /// The label of a space ("Kitchen", "door 7"), or "space N" if missing.

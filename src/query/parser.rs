@@ -706,7 +706,15 @@ impl Parser {
                 self.pos += 1;
                 Ok(SpaceRef::Name(s.clone()))
             }
-            TokenKind::Punct if t.text == "(" => Ok(SpaceRef::Point(self.point()?)),
+            TokenKind::Punct if t.text == "(" => {
+                let at = self.point()?;
+                if self.eat_word("ON") {
+                    self.expect_word("LEVEL")?;
+                    let level = self.level_name()?;
+                    return Ok(SpaceRef::PointOn { at, level });
+                }
+                Ok(SpaceRef::Point(at))
+            }
             TokenKind::Word => {
                 let w = t.text.to_ascii_lowercase();
                 let kind = if w == "space" {

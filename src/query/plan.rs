@@ -208,6 +208,7 @@ fn endpoint(m: &IndexedRevision, r: &SpaceRef) -> Result<Endpoint, QueryError> {
                 .ok_or_else(|| QueryError::Route(m.outside(*p)))?;
             Ok(Endpoint::Point(*p))
         }
+        SpaceRef::PointOn { at, level } => m.point_on(*at, level),
         other => Ok(Endpoint::Space(m.resolve(other)?)),
     }
 }
@@ -235,6 +236,7 @@ fn endpoint_text(e: &Endpoint) -> String {
     match e {
         Endpoint::Space(id) => id.to_string(),
         Endpoint::Point(p) => format!("({}, {})", p[0], p[1]),
+        Endpoint::PointIn(p, id) => format!("({}, {}) in {id}", p[0], p[1]),
     }
 }
 

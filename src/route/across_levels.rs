@@ -2,7 +2,8 @@
 //! navigation layer of its own (floors stacked in one plane would
 //! overlap); levels are joined by the vertical connections (stairs, lifts)
 //! with their own costs. The route is the shortest over a small graph
-//! whose nodes are the route's stops and the ends of the vertical
+//! whose nodes are the route's stops (spaces, or points on a level) and
+//! the ends of the vertical
 //! connections the profile allows (`NO STAIRS`, `NO ELEVATOR`), whose
 //! edges are the walked routes between two nodes on one level and the
 //! vertical connections. Steps say where a level changes: "take Lift A
@@ -53,8 +54,17 @@ fn level_of(nrg: &Nrg, id: SpaceId) -> Option<&Level> {
     nrg.space(id).and_then(|s| s.level.as_ref())
 }
 
+/// A stop of a route across levels: where it is, and the space that
+/// says its level.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Stop {
+    at: Endpoint,
+    space: SpaceId,
+}
+
 /// The shortest route through the request's stops across levels, or
-/// `None` when a leg has none. Stops are spaces (a point has no level).
+/// `None` when a leg has none. Stops are spaces, or points in a known
+/// space ([`Endpoint::PointIn`]; a bare point does not say its level).
 pub(crate) fn route_across_levels(
     nav: &NavMesh,
     request: &RouteRequest,
@@ -64,23 +74,24 @@ pub(crate) fn route_across_levels(
     let nrg = nav.nrg();
     request.profile.validate()?;
     let floors = nav.floors();
-    let stops: Vec<SpaceId> = std::iter::once(&request.from)
+    let stops: Vec<Stop> = std::iter::once(&request.from)
         .chain(&request.via)
         .chain(std::iter::once(&request.to))
-        .map(|e| match e {
-            Endpoint::Space(id) => Ok(*id),
+        .map(|e| match *e {
+            Endpoint::Space(id) => Ok(Stop { at: *e, space: id }),
+            Endpoint::PointIn(_, id) => Ok(Stop { at: *e, space: id }),
             Endpoint::Point(p) => Err(RouteError::PointNeedsLevel { x: p[0], y: p[1] }),
         })
         .collect::<Result<_, _>>()?;
     let mut parts: Vec<Part> = Vec::new();
     let mut leg_lengths = Vec::new();
     for pair in stops.windows(2) {
-        for &id in pair {
-            if nrg.space(id).is_none() {
-                return Err(RouteError::NotNavigable(id));
+        for stop in pair {
+            if nrg.space(stop.space).is_none() {
+                return Err(RouteError::NotNavigable(stop.space));
             }
-            if avoid.contains(&id) {
-                return Err(RouteError::AvoidedEndpoint(id));
+            if avoid.contains(&stop.space) {
+                return Err(RouteError::AvoidedEndpoint(stop.space));
             }
         }
         let Some(leg) = shortest_leg(nrg, floors, pair[0], pair[1], request, avoid, budget)? else {
@@ -117,8 +128,8 @@ impl Part {
 fn shortest_leg(
     nrg: &Nrg,
     floors: &Floors,
-    from: SpaceId,
-    to: SpaceId,
+    from: Stop,
+    to: Stop,
     request: &RouteRequest,
     avoid: &[SpaceId],
     budget: &Budget,
@@ -131,36 +142,58 @@ fn shortest_leg(
         };
         !refused && !avoid.contains(&id)
     };
-    let vertical: Vec<(SpaceId, SpaceId, f64)> = nrg
+    if from == to {
+        return Ok(Some(Vec::new()));
+    }
+    // Nodes: the two stops (0 and 1), then each allowed connector end
+    // once (a stop that is a connector's space is that connector's node).
+    let mut nodes: Vec<Stop> = vec![from, to];
+    let node_of = |id: SpaceId, nodes: &mut Vec<Stop>| -> usize {
+        let stop = Stop {
+            at: Endpoint::Space(id),
+            space: id,
+        };
+        match nodes.iter().position(|n| *n == stop) {
+            Some(k) => k,
+            None => {
+                nodes.push(stop);
+                nodes.len() - 1
+            }
+        }
+    };
+    // Rides between connector ends: (node, node, cost).
+    let vertical: Vec<(usize, usize, f64)> = nrg
         .connections()
         .iter()
         .filter(|c| c.kind == ConnectionKind::Vertical && allowed(c.a) && allowed(c.b))
-        .map(|c| (c.a, c.b, c.length_m))
+        .map(|c| {
+            (
+                node_of(c.a, &mut nodes),
+                node_of(c.b, &mut nodes),
+                c.length_m,
+            )
+        })
         .collect();
-    let mut nodes: Vec<SpaceId> = vec![from, to];
-    for &(a, b, _) in &vertical {
-        for id in [a, b] {
-            if !nodes.contains(&id) {
-                nodes.push(id);
-            }
-        }
-    }
-    let mut walks: HashMap<(SpaceId, SpaceId), Option<Route>> = HashMap::new();
-    let mut dist: HashMap<SpaceId, f64> = HashMap::from([(from, 0.0)]);
-    let mut came: HashMap<SpaceId, (SpaceId, bool)> = HashMap::new();
-    let mut heap = BinaryHeap::from([Entry(0.0, from)]);
+    let node_level: Vec<Option<&str>> = nodes
+        .iter()
+        .map(|n| level_of(nrg, n.space).map(|l| l.name.as_str()))
+        .collect();
+    let mut walks: HashMap<(usize, usize), Option<Route>> = HashMap::new();
+    let mut dist: HashMap<usize, f64> = HashMap::from([(0, 0.0)]);
+    let mut came: HashMap<usize, (usize, bool)> = HashMap::new();
+    let mut heap = BinaryHeap::from([Entry(0.0, 0)]);
     while let Some(Entry(d, u)) = heap.pop() {
         if d > dist.get(&u).copied().unwrap_or(f64::INFINITY) {
             continue;
         }
-        if u == to {
+        if u == 1 {
             break;
         }
         if budget.is_expired() {
             return Err(RouteError::Timeout(budget.limit_ms()));
         }
-        let level = level_of(nrg, u).map(|l| l.name.clone());
-        let mut relax = |v: SpaceId, w: f64, ride: bool, heap: &mut BinaryHeap<Entry>| {
+        let level = node_level[u];
+        let mut relax = |v: usize, w: f64, ride: bool, heap: &mut BinaryHeap<Entry>| {
             let nd = d + w;
             if nd < dist.get(&v).copied().unwrap_or(f64::INFINITY) {
                 dist.insert(v, nd);
@@ -168,13 +201,21 @@ fn shortest_leg(
                 heap.push(Entry(nd, v));
             }
         };
-        for &v in &nodes {
-            if v == u || level_of(nrg, v).map(|l| &l.name) != level.as_ref() {
+        for v in 0..nodes.len() {
+            if v == u || node_level[v] != level {
                 continue;
             }
-            let walk = walks
-                .entry((u, v))
-                .or_insert_with(|| walk_on(floors, level.as_deref(), u, v, request, avoid, budget));
+            let walk = walks.entry((u, v)).or_insert_with(|| {
+                walk_on(
+                    floors,
+                    level,
+                    nodes[u].at,
+                    nodes[v].at,
+                    request,
+                    avoid,
+                    budget,
+                )
+            });
             if let Some(r) = walk {
                 let w = r.length_m;
                 relax(v, w, false, &mut heap);
@@ -188,12 +229,12 @@ fn shortest_leg(
             }
         }
     }
-    if !dist.contains_key(&to) {
+    if !came.contains_key(&1) {
         return Ok(None);
     }
     let mut parts = Vec::new();
-    let mut at = to;
-    while at != from {
+    let mut at = 1;
+    while at != 0 {
         let Some(&(prev, ride)) = came.get(&at) else {
             return Ok(None);
         };
@@ -203,8 +244,8 @@ fn shortest_leg(
                 .find(|&&(a, b, _)| (a, b) == (prev, at) || (b, a) == (prev, at))
                 .map_or(0.0, |v| v.2);
             parts.push(Part::Vertical {
-                from: prev,
-                to: at,
+                from: nodes[prev].space,
+                to: nodes[at].space,
                 length_m,
             });
         } else if let Some(Some(r)) = walks.remove(&(prev, at)) {
@@ -216,25 +257,34 @@ fn shortest_leg(
     Ok(Some(parts))
 }
 
-/// The walked route between two spaces of one level on its own layer.
+/// The walked route between two ends on one level, on its own layer.
 fn walk_on(
     floors: &Floors,
     level: Option<&str>,
-    a: SpaceId,
-    b: SpaceId,
+    a: Endpoint,
+    b: Endpoint,
     request: &RouteRequest,
     avoid: &[SpaceId],
     budget: &Budget,
 ) -> Option<Route> {
     let nav = floors.by_level.get(level?)?;
+    // A point in a space is a plain point on its floor's own layer.
+    let plain = |e: Endpoint| match e {
+        Endpoint::PointIn(p, _) => Endpoint::Point(p),
+        other => other,
+    };
+    let ends = [a, b].map(|e| match e {
+        Endpoint::Space(id) => Some(id),
+        _ => None,
+    });
     let leg = RouteRequest {
-        from: Endpoint::Space(a),
-        to: Endpoint::Space(b),
+        from: plain(a),
+        to: plain(b),
         via: Vec::new(),
         avoid: avoid
             .iter()
             .copied()
-            .filter(|&s| s != a && s != b)
+            .filter(|s| !ends.contains(&Some(*s)))
             .collect(),
         alternatives: 1,
         profile: request.profile,
@@ -378,7 +428,7 @@ fn level_step(nrg: &Nrg, from: SpaceId, to: SpaceId, length_m: f64) -> Step {
 }
 
 /// A heap entry: distance (smallest first), node.
-struct Entry(f64, SpaceId);
+struct Entry(f64, usize);
 
 impl PartialEq for Entry {
     fn eq(&self, other: &Self) -> bool {

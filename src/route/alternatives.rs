@@ -28,7 +28,7 @@ pub fn alternatives(
         .iter()
         .filter_map(|e| match e {
             Endpoint::Space(id) => Some(*id),
-            Endpoint::Point(_) => None,
+            Endpoint::Point(_) | Endpoint::PointIn(..) => None,
         })
         .collect();
     let mut base = request.avoid.clone();

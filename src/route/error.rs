@@ -50,7 +50,7 @@ pub enum RouteError {
     Levels(usize),
     /// A point given as a route's stop in a building with levels.
     #[error(
-        "({x}, {y}): in a building with levels a route's stops are spaces (a point does not say its level)"
+        "({x}, {y}): in a building with levels a point does not say its level; give it: ({x}, {y}) ON LEVEL L (over HTTP: x,y@L)"
     )]
     PointNeedsLevel {
         /// The point's x.

@@ -13,7 +13,7 @@ pub fn no_route_reason(nav: &NavMesh, request: &RouteRequest) -> String {
             .nrg()
             .space(*id)
             .map_or_else(|| format!("space {id}"), |s| s.label()),
-        Endpoint::Point(p) => format!("({:.2}, {:.2})", p[0], p[1]),
+        Endpoint::Point(p) | Endpoint::PointIn(p, _) => format!("({:.2}, {:.2})", p[0], p[1]),
     };
     let (from, to) = (label(&request.from), label(&request.to));
     let budget = Budget::new(std::time::Duration::from_secs(2));
@@ -90,6 +90,7 @@ fn narrow_doors_around(nav: &NavMesh, end: &Endpoint, w: f64) -> Option<String> 
     let id = match end {
         Endpoint::Space(id) => *id,
         Endpoint::Point(p) => nav.locate(*p)?,
+        Endpoint::PointIn(_, id) => *id,
     };
     let nrg = nav.nrg();
     let doors: Vec<_> = nrg

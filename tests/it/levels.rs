@@ -657,7 +657,58 @@ fn routes_cross_levels_by_the_cheapest_allowed_way() {
     let err = nrgdb::route::shortest_route(&nav, &request, &nrgdb::route::Budget::unlimited())
         .unwrap_err()
         .to_string();
-    assert!(err.contains("does not say its level"), "{err}");
+    assert!(
+        err.contains("does not say its level") && err.contains("ON LEVEL"),
+        "{err}"
+    );
+    // Points on levels: the walks from the point and to the point are
+    // asked of each floor alone (a plain model), and the route is the
+    // cheaper of the two ways the test puts together.
+    use nrgdb::route::{Budget, Endpoint, RouteRequest, shortest_route};
+    let floor = |level: &str| {
+        let (spaces, links) = nrg.level_model(level).unwrap().into_parts();
+        let spaces = spaces
+            .into_iter()
+            .map(|s| nrgdb::model::Space { level: None, ..s })
+            .collect();
+        NavMesh::new(std::sync::Arc::new(
+            nrgdb::model::Nrg::new(spaces, links).unwrap(),
+        ))
+    };
+    let walk_on = |nav: &NavMesh, a: Endpoint, b: Endpoint| {
+        let request = RouteRequest {
+            profile: exact,
+            ..RouteRequest::between(a, b)
+        };
+        shortest_route(nav, &request, &Budget::unlimited()).unwrap()[0].length_m
+    };
+    let anchor = |id: u32| nrg.space(nrgdb::model::SpaceId(id)).unwrap().anchor;
+    let p0 = [anchor(from)[0] + 0.4, anchor(from)[1] - 0.3];
+    let p2 = [anchor(to)[0] - 0.5, anchor(to)[1] + 0.2];
+    let (ground, top) = (floor("0"), floor("2"));
+    let space = |id: u32| Endpoint::Space(nrgdb::model::SpaceId(id));
+    let by_stairs = walk_on(&ground, Endpoint::Point(p0), space(stairs))
+        + 2.0 * stairs_length_m(3.5)
+        + walk_on(&top, space(200_000 + stairs), Endpoint::Point(p2));
+    let by_lift = walk_on(&ground, Endpoint::Point(p0), space(lift))
+        + elevator_length_m(2)
+        + walk_on(&top, space(200_000 + lift), Endpoint::Point(p2));
+    let mut request = RouteRequest::between(
+        Endpoint::point_on(&nrg, p0, "0").unwrap(),
+        Endpoint::point_on(&nrg, p2, "2").unwrap(),
+    );
+    request.profile = exact;
+    let r = &shortest_route(&nav, &request, &Budget::unlimited()).unwrap()[0];
+    assert!(
+        (r.length_m - by_stairs.min(by_lift)).abs() < 1e-6,
+        "{} vs {by_stairs} / {by_lift}",
+        r.length_m
+    );
+    assert_eq!(r.waypoints.first(), Some(&p0));
+    assert_eq!(r.waypoints.last(), Some(&p2));
+    let levels: Vec<&str> = r.levels.iter().map(|s| s.level.as_str()).collect();
+    assert_eq!(levels.first(), Some(&"0"));
+    assert_eq!(levels.last(), Some(&"2"));
 }
 
 /// The HTTP route answer in a building: positions with z (each level's

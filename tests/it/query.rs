@@ -164,6 +164,51 @@ fn locate_and_reachable() {
     assert_eq!(ids(&QueryResult::Table(t.clone())), [3, 2, 1]);
 }
 
+/// `(x, y) ON LEVEL l` as a route's stop in a building: the route starts
+/// and ends at the points, on their levels; a level the map has not, or
+/// a point outside every space of its level, is a clear error.
+#[test]
+fn routes_from_points_on_levels() {
+    let mut source = MemorySource::new();
+    let tower = nrgdb::fixtures::storeys(3, 3);
+    let a = tower.space(nrgdb::model::SpaceId(10)).unwrap().anchor;
+    let b = tower.space(nrgdb::model::SpaceId(200_012)).unwrap().anchor;
+    source.insert("tower", tower);
+    let mut s = Session::with_default_map(source).unwrap();
+    let text = format!(
+        "ROUTE FROM ({}, {}) ON LEVEL 0 TO ({}, {}) ON LEVEL 2",
+        a[0] + 0.25,
+        a[1],
+        b[0],
+        b[1] - 0.25
+    );
+    let QueryResult::Routes(routes) = one(&mut s, &text).unwrap() else {
+        panic!("not a route")
+    };
+    let r = &routes[0];
+    assert_eq!(r.waypoints.first(), Some(&[a[0] + 0.25, a[1]]));
+    assert_eq!(r.waypoints.last(), Some(&[b[0], b[1] - 0.25]));
+    assert_eq!(r.levels.last().unwrap().level, "2");
+    let e = one(
+        &mut s,
+        &format!("ROUTE FROM ({}, {}) ON LEVEL 7 TO 10", a[0], a[1]),
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("no level 7 (it has 0, 1, 2)"), "{e}");
+    let e = one(&mut s, "ROUTE FROM (-40, -40) ON LEVEL 1 TO 10")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("no space on level 1 contains the point (-40, -40)"),
+        "{e}"
+    );
+    let e = one(&mut s, &format!("ROUTE FROM ({}, {}) TO 10", a[0], a[1]))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("ON LEVEL"), "{e}");
+}
+
 #[test]
 fn show_use_name_diff_explain() {
     let mut s = session(2);

@@ -138,6 +138,34 @@ async fn levels_over_http_list_locate_and_draw_one_floor_at_a_time() {
         .get("/maps/tower/revisions/1/svg?level=M")
         .await
         .assert_error(404, "level");
+    // A route between points on two levels (`x,y@L`): it starts and ends
+    // at the points, at their levels' heights.
+    let [bx, by] = tower.space(nrgdb::model::SpaceId(200_012)).unwrap().anchor;
+    let body = server
+        .get(&format!("/maps/tower/route?from={x},{y}@0&to={bx},{by}@2"))
+        .await
+        .json();
+    assert_eq!(body["code"], "Ok", "{body}");
+    let coords = body["routes"][0]["geometry"]["coordinates"]
+        .as_array()
+        .unwrap()
+        .clone();
+    let xyz = |c: &serde_json::Value| -> Vec<f64> {
+        c.as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_f64().unwrap())
+            .collect()
+    };
+    let round = |v: f64| (v * 1000.0).round() / 1000.0;
+    assert_eq!(xyz(&coords[0]), [round(x), round(y), 0.0]);
+    assert_eq!(xyz(coords.last().unwrap()), [round(bx), round(by), 7.0]);
+    assert_eq!(body["waypoints"][0]["space"], 11);
+    assert_eq!(body["waypoints"][1]["space"], 200_012);
+    server
+        .get(&format!("/maps/tower/route?from={x},{y}@9&to=10"))
+        .await
+        .assert_error(404, "from");
     server.stop().await;
 }
 

@@ -88,9 +88,10 @@ fn statements_round_trip() {
         SPLIT corridor 2 ALONG (0, 0) TO (1, 1); ADD DOOR BETWEEN 3 AND \"Hall\" AT (4, 4) WIDTH 1.2; \
         ADD DOOR BETWEEN 3 AND 5 AT (4, 4); REMOVE DOOR door 31; SET 3 KIND corridor; \
         SET \"Hall\" ATTRIBUTE restricted = TRUE; SET 3 ATTRIBUTE \"opening hours\" = \"8-18\"; \
-        SET 3 ATTRIBUTE capacity = 12; UNSET 3 ATTRIBUTE restricted";
+        SET 3 ATTRIBUTE capacity = 12; UNSET 3 ATTRIBUTE restricted; \
+        ROUTE FROM (1.5, 2) ON LEVEL 0 TO (3, 4) ON LEVEL \"M\" WITH NO STAIRS";
     let parsed = parse(text).unwrap();
-    assert_eq!(parsed.len(), 24);
+    assert_eq!(parsed.len(), 25);
     for s in &parsed {
         assert_eq!(&parse_statement(&s.to_string()).unwrap(), s, "{s}");
     }

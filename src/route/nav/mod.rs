@@ -116,6 +116,42 @@ pub enum Endpoint {
     Space(SpaceId),
     /// A point in metres in the map frame.
     Point(Point),
+    /// A point in a given space: in a building with levels, the space
+    /// says which level the point is on (make it with
+    /// [`Endpoint::point_on`]).
+    PointIn(Point, SpaceId),
+}
+
+impl Endpoint {
+    /// The point `p` on level `level` of `nrg`: the smallest space holding
+    /// it there, or None when none does.
+    ///
+    /// ```
+    /// use nrgdb::route::Endpoint;
+    /// let nrg = nrgdb::fixtures::storeys(2, 2);
+    /// let p = nrg.space(nrgdb::model::SpaceId(10)).unwrap().anchor;
+    /// assert_eq!(Endpoint::point_on(&nrg, p, "1"), Some(Endpoint::PointIn(p, nrgdb::model::SpaceId(100_010))));
+    /// assert_eq!(Endpoint::point_on(&nrg, [-50.0, 0.0], "1"), None);
+    /// ```
+    pub fn point_on(nrg: &crate::model::Nrg, p: Point, level: &str) -> Option<Endpoint> {
+        nrg.spaces()
+            .iter()
+            .filter(|s| s.level.as_ref().is_some_and(|l| l.name == level))
+            .filter(|s| {
+                crate::model::point_in_ring(p, &s.polygon)
+                    && !s.holes.iter().any(|h| crate::model::point_in_ring(p, h))
+            })
+            .min_by(|a, b| a.area_m2.total_cmp(&b.area_m2).then(a.id.cmp(&b.id)))
+            .map(|s| Endpoint::PointIn(p, s.id))
+    }
+
+    /// The point of a point end.
+    pub fn point(&self) -> Option<Point> {
+        match self {
+            Endpoint::Space(_) => None,
+            Endpoint::Point(p) | Endpoint::PointIn(p, _) => Some(*p),
+        }
+    }
 }
 
 /// The navigation layer of one revision. Build it once ([`NavMesh::new`])
@@ -236,7 +272,7 @@ impl NavMesh {
                 }
                 End::anchor(&level.mesh, &level.layer, s).ok_or(RouteError::NotNavigable(*id))
             }
-            Endpoint::Point(p) => match mesh.locate(*p, None) {
+            Endpoint::Point(p) | Endpoint::PointIn(p, _) => match mesh.locate(*p, None) {
                 Some(t) => Ok(End::point(mesh, &level.layer, *p, t)),
                 None => Err(self.outside(*p)),
             },

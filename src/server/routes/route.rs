@@ -22,13 +22,13 @@ pub const PARAMS: [ParamDoc; 12] = [
         "from",
         "string",
         true,
-        "start: space id, name, or point 'x,y' in metres",
+        "start: space id, name, or point 'x,y' in metres ('x,y@L' on level L of a building)",
     ),
     q(
         "to",
         "string",
         true,
-        "goal: space id, name, or point 'x,y' in metres",
+        "goal: space id, name, or point 'x,y' in metres ('x,y@L' on level L of a building)",
     ),
     q(
         "via",
@@ -96,12 +96,23 @@ fn reference(raw: &str) -> SpaceRef {
             id: SpaceId(id),
         };
     }
-    if let Some((x, y)) = raw.split_once(',')
+    // `x,y@L`: the point on level L of a building.
+    let (point, level) = match raw.rsplit_once('@') {
+        Some((p, l)) if !l.trim().is_empty() => (p, Some(l.trim())),
+        _ => (raw, None),
+    };
+    if let Some((x, y)) = point.split_once(',')
         && let (Ok(x), Ok(y)) = (x.trim().parse::<f64>(), y.trim().parse::<f64>())
         && x.is_finite()
         && y.is_finite()
     {
-        return SpaceRef::Point([x, y]);
+        return match level {
+            Some(l) => SpaceRef::PointOn {
+                at: [x, y],
+                level: l.to_string(),
+            },
+            None => SpaceRef::Point([x, y]),
+        };
     }
     SpaceRef::Name(raw.to_string())
 }
@@ -112,15 +123,20 @@ fn resolve(name: &str, raw: &str, rev: &IndexedRevision) -> Result<SpaceId, ApiE
     rev.resolve(&reference(raw)).map_err(|e| match e {
         QueryError::UnknownId(_)
         | QueryError::UnknownName { .. }
-        | QueryError::NoSpaceAt { .. } => ApiError::not_found(name, format!("{name}: {e}")),
+        | QueryError::NoSpaceAt { .. }
+        | QueryError::NoSpaceOnLevel { .. } => ApiError::not_found(name, format!("{name}: {e}")),
         other => ApiError::bad(name, other.to_string()),
     })
 }
 
 /// A route end: a point `x,y` is the point itself (it must lie in a
-/// space); anything else is a space (its anchor).
+/// space; `x,y@L` in a space on level L); anything else is a space (its
+/// anchor).
 fn endpoint(name: &str, raw: &str, rev: &IndexedRevision) -> Result<Endpoint, ApiError> {
     match reference(raw) {
+        SpaceRef::PointOn { at, level } => rev
+            .point_on(at, &level)
+            .map_err(|e| ApiError::not_found(name, format!("{name}: {e}"))),
         SpaceRef::Point(p) => match rev.nav.locate(p) {
             Some(_) => Ok(Endpoint::Point(p)),
             None => Err(ApiError::not_found(

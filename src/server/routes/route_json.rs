@@ -245,14 +245,20 @@ pub fn route_response<'a>(
                     location: s.map_or([0.0, 0.0], |s| s.anchor),
                 }
             }
-            Endpoint::Point(p) => {
-                let id = rev.nav.locate(*p);
+            Endpoint::Point(_) | Endpoint::PointIn(..) => {
+                let (p, id) = match e {
+                    Endpoint::PointIn(p, id) => (*p, Some(*id)),
+                    _ => (
+                        e.point().unwrap_or_default(),
+                        e.point().and_then(|p| rev.nav.locate(p)),
+                    ),
+                };
                 Waypoint {
                     space: id,
                     name: id
                         .and_then(|id| nrg.space(id))
                         .and_then(|s| s.name.as_deref()),
-                    location: *p,
+                    location: p,
                 }
             }
         })
