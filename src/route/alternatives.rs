@@ -1,6 +1,7 @@
-//! k alternative routes, distinct by the doors they use: Yen's idea on
-//! doors (Yen 1971) — each next route is the shortest that avoids one more
-//! door of a route already found, shortest first.
+//! k alternative routes, distinct by the doors they use (and in a
+//! building, the stairs and lifts): Yen's idea on those passages (Yen
+//! 1971) — each next route is the shortest that avoids one more passage
+//! of a route already found, shortest first.
 
 use std::collections::HashSet;
 
@@ -27,22 +28,23 @@ pub fn alternatives(
     let ends: Vec<SpaceId> = [&request.from, &request.to]
         .iter()
         .filter_map(|e| match e {
-            Endpoint::Space(id) => Some(*id),
-            Endpoint::Point(_) | Endpoint::PointIn(..) => None,
+            Endpoint::Space(id) | Endpoint::PointIn(_, id) => Some(*id),
+            Endpoint::Point(_) => None,
         })
         .collect();
+    let nrg = nav.nrg();
     let mut base = request.avoid.clone();
     base.sort_unstable();
     let Some(best) = route_avoiding(nav, request, &base, budget)? else {
         return Ok(Vec::new());
     };
-    let mut seen: HashSet<Vec<SpaceId>> = HashSet::from([best.doors.clone()]);
+    let mut seen: HashSet<Vec<SpaceId>> = HashSet::from([passages(nrg, &best)]);
     let mut tried: HashSet<Vec<SpaceId>> = HashSet::from([base.clone()]);
     let mut found = vec![(best, base)];
     let mut candidates: Vec<(Route, Vec<SpaceId>)> = Vec::new();
     while found.len() < k {
         let (last, last_avoid) = &found[found.len() - 1];
-        for door in &last.doors {
+        for door in &passages(nrg, last) {
             if ends.contains(door) || last_avoid.contains(door) {
                 continue;
             }
@@ -53,7 +55,7 @@ pub fn alternatives(
                 continue;
             }
             if let Some(route) = route_avoiding(nav, request, &avoid, budget)?
-                && seen.insert(route.doors.clone())
+                && seen.insert(passages(nrg, &route))
             {
                 candidates.push((route, avoid));
             }
@@ -73,6 +75,25 @@ pub fn alternatives(
     let mut routes: Vec<Route> = found.into_iter().map(|(r, _)| r).collect();
     routes.sort_by(|a, b| a.length_m.total_cmp(&b.length_m));
     Ok(routes)
+}
+
+/// The doors a route passes and, in a building, the stairs and lifts it
+/// takes, in order: what makes two routes different.
+fn passages(nrg: &crate::model::Nrg, route: &Route) -> Vec<SpaceId> {
+    use crate::model::SpaceKind;
+    route
+        .spaces
+        .iter()
+        .copied()
+        .filter(|id| {
+            nrg.space(*id).is_some_and(|s| {
+                matches!(
+                    s.kind,
+                    SpaceKind::Door | SpaceKind::Stairs | SpaceKind::Elevator
+                )
+            })
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -43,11 +43,6 @@ pub enum RouteError {
         /// Its value.
         value: f64,
     },
-    /// Alternatives asked in a building with levels.
-    #[error(
-        "this map has {0} levels; alternative routes across levels are not computed yet (drop ALTERNATIVES)"
-    )]
-    Levels(usize),
     /// A point given as a route's stop in a building with levels.
     #[error(
         "({x}, {y}): in a building with levels a point does not say its level; give it: ({x}, {y}) ON LEVEL L (over HTTP: x,y@L)"

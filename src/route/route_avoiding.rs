@@ -12,10 +12,6 @@ use crate::model::SpaceId;
 /// Checks the request and the avoided spaces against its stops.
 pub(crate) fn check_request(nav: &NavMesh, request: &RouteRequest) -> Result<(), RouteError> {
     request.profile.validate()?;
-    // Alternatives are not computed across levels yet.
-    if nav.nrg().has_levels() {
-        return Err(RouteError::Levels(nav.nrg().levels().len()));
-    }
     for stop in stops(request) {
         if let Endpoint::Space(id) = stop {
             if nav.nrg().space(*id).is_none() {

@@ -221,7 +221,6 @@ impl From<RouteError> for ApiError {
             RouteError::AlternativesWithVia => ApiError::bad("alternatives", e.to_string()),
             RouteError::Outside { .. } => ApiError::not_found("from", e.to_string()),
             RouteError::BadProfile { name, .. } => ApiError::bad(name, e.to_string()),
-            RouteError::Levels(_) => ApiError::bad("alternatives", e.to_string()),
             RouteError::PointNeedsLevel { .. } => ApiError::bad("from", e.to_string()),
         }
     }

@@ -646,6 +646,29 @@ fn routes_cross_levels_by_the_cheapest_allowed_way() {
         why.contains("on levels not joined without stairs or lifts"),
         "{why}"
     );
+    // Alternatives across levels differ in their stairs or lifts: the
+    // best is the stairs' way, and the lift's way is among the others at
+    // the length the test put together.
+    let mut request =
+        nrgdb::route::RouteRequest::new(nrgdb::model::SpaceId(from), nrgdb::model::SpaceId(to));
+    request.profile = exact;
+    request.alternatives = 3;
+    let routes =
+        nrgdb::route::shortest_route(&nav, &request, &nrgdb::route::Budget::unlimited()).unwrap();
+    assert!(routes.len() >= 2, "{}", routes.len());
+    assert!((routes[0].length_m - by_stairs.min(by_lift)).abs() < 1e-6);
+    for w in routes.windows(2) {
+        assert!(w[0].length_m <= w[1].length_m + 1e-9);
+    }
+    let lift_way = routes
+        .iter()
+        .find(|r| r.spaces.contains(&nrgdb::model::SpaceId(lift)))
+        .expect("a way by the lift");
+    assert!(
+        (lift_way.length_m - by_lift).abs() < 1e-6,
+        "{} vs {by_lift}",
+        lift_way.length_m
+    );
     let same_level = route(&nav, from, 13, neither).unwrap().unwrap();
     assert!((same_level.length_m - walk(from, 13)).abs() < 1e-9);
     // A point has no level: a clear error.
