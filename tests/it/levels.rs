@@ -669,6 +669,31 @@ fn routes_cross_levels_by_the_cheapest_allowed_way() {
         "{} vs {by_lift}",
         lift_way.length_m
     );
+    // A lift that does not serve level 2: without stairs, level 1 is
+    // reached by the lift and level 2 not at all, said clearly.
+    let (spaces, links) = nrg.clone().into_parts();
+    let links = links
+        .into_iter()
+        .filter(|c| {
+            !(c.kind == ConnectionKind::Vertical && [c.a.0, c.b.0].contains(&(200_000 + lift)))
+        })
+        .collect();
+    let short_lift = NavMesh::new(std::sync::Arc::new(
+        nrgdb::model::Nrg::new(spaces, links).unwrap(),
+    ));
+    assert!(route(&short_lift, from, to, no_stairs).unwrap().is_none());
+    let one_up = route(&short_lift, from, 100_013, no_stairs)
+        .unwrap()
+        .unwrap();
+    assert!(one_up.spaces.contains(&nrgdb::model::SpaceId(lift)));
+    let mut request =
+        nrgdb::route::RouteRequest::new(nrgdb::model::SpaceId(from), nrgdb::model::SpaceId(to));
+    request.profile = no_stairs;
+    let why = nrgdb::route::no_route_reason(&short_lift, &request);
+    assert!(
+        why.contains("without stairs (no lift serves both levels)"),
+        "{why}"
+    );
     let same_level = route(&nav, from, 13, neither).unwrap().unwrap();
     assert!((same_level.length_m - walk(from, 13)).abs() < 1e-9);
     // A point has no level: a clear error.
