@@ -187,6 +187,32 @@ fn sample_201_reads_as_its_three_floors() {
     assert_eq!(ours, floors);
     let names: Vec<&str> = levels.iter().map(|l| l.name.as_str()).collect();
     assert_eq!(names, ["1", "2", "3"]);
+    // Imported (its overlaps repaired, as the import says) and exported,
+    // it keeps its floors: our checker and the OGC schema accept the
+    // file, which holds the same number of cells on each floor.
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    let db = ["--db", "t.sqlite"];
+    let absolute = path.canonicalize().unwrap();
+    let path_text = absolute.to_str().unwrap();
+    let (ok, said) = run(
+        d,
+        &[&["import", path_text, "--map", "b201"][..], &db].concat(),
+    );
+    assert!(ok, "{said}");
+    let (ok, said) = run(
+        d,
+        &[&["export", "b201", "--out", "b201.gml"][..], &db].concat(),
+    );
+    assert!(ok, "{said}");
+    let (ok, said) = run(d, &["check", "b201.gml"]);
+    assert!(ok, "{said}");
+    crate::support::schema_valid_if_shared(&d.join("b201.gml"));
+    let gml = std::fs::read_to_string(d.join("b201.gml")).unwrap();
+    assert_eq!(cells_per_floor(&gml), floors);
+    let (back, _) =
+        model_from_bytes(gml.as_bytes(), ModelFormat::IndoorGml, "b201.gml".as_ref()).unwrap();
+    assert_eq!(back.levels(), nrg.levels());
     per_level.sort_unstable();
     assert!(per_level[0] >= 10, "{per_level:?}");
 }
