@@ -13,8 +13,8 @@ use nrgdb::grid::{LoadOptions, OccupancyGrid, load_map};
 use nrgdb::model::{Nrg, SpaceId};
 use nrgdb::query::LoadedRevision;
 use nrgdb::render::{
-    Drawing, LabelMode, RenderOptions, RouteOverlay, Scene, diff_overlay, drawing_svg, layout,
-    route_by_level,
+    Drawing, LabelMode, RenderOptions, RouteOverlay, Scene, diff_by_level, diff_overlay,
+    drawing_svg, layout, route_by_level,
 };
 use nrgdb::route::{Budget, NavMesh, Route, RouteRequest, shortest_route};
 
@@ -69,7 +69,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         Some(path) => Some(load_grid(path)?),
         None => base.map_grid.clone(),
     };
-    let (nrg, title, diff, old) = match &args.diff {
+    let (nrg, title, diff, old, changed) = match &args.diff {
         Some(pair) => {
             let (Some(a), Some(b)) = (pair.first(), pair.get(1)) else {
                 miette::bail!("--diff needs two revisions: --diff A B");
@@ -84,9 +84,16 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
                 })?;
             let overlay = diff_overlay(&done.changes, &old.rev.nrg, &new.rev.nrg);
             let title = format!("{} -> {}", old.rev.label, new.rev.label);
-            (new.rev.nrg, title, Some(overlay), Some(old.rev.nrg))
+            let changed = done.changes.changed_levels();
+            (
+                new.rev.nrg,
+                title,
+                Some(overlay),
+                Some(old.rev.nrg),
+                changed,
+            )
         }
-        None => (base.rev.nrg, base.rev.label, None, None),
+        None => (base.rev.nrg, base.rev.label, None, None, Vec::new()),
     };
     // The route over the whole building (across its levels).
     let route = match &args.route {
@@ -126,7 +133,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         (None, false, Some(r)) => {
             if diff.is_some() {
                 miette::bail!(
-                    "this map has levels {}: draw the diff of one with --level",
+                    "this map has levels {}: draw a route or a diff, or give --level",
                     names.join(", ")
                 );
             }
@@ -146,10 +153,34 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
             .into_diagnostic()?;
             return Ok(ExitCode::SUCCESS);
         }
-        (None, false, None) => miette::bail!(
-            "this map has levels {}: draw one with --level",
-            names.join(", ")
-        ),
+        (None, false, None) => {
+            let (Some(d), Some(old)) = (&diff, &old) else {
+                miette::bail!(
+                    "this map has levels {}: draw one with --level",
+                    names.join(", ")
+                );
+            };
+            if changed.is_empty() {
+                writeln!(out, "no level changed: nothing drawn").into_diagnostic()?;
+                return Ok(ExitCode::SUCCESS);
+            }
+            // One panel for each level that changed.
+            let drawing = diff_by_level(old, &nrg, d, &changed, &options)
+                .into_diagnostic()
+                .wrap_err_with(|| format!("{}: cannot draw the picture", args.out.display()))?;
+            write_drawing(&args.out, format, &drawing)?;
+            writeln!(
+                out,
+                "wrote {} (changed levels {}: {} added, {} removed, {} changed)",
+                args.out.display(),
+                changed.join(", "),
+                d.added.len(),
+                d.removed.len(),
+                d.changed.len()
+            )
+            .into_diagnostic()?;
+            return Ok(ExitCode::SUCCESS);
+        }
         (Some(l), false, _) => {
             let Some(floor) = nrg.level_model(l) else {
                 miette::bail!(

@@ -21,11 +21,11 @@ mod error;
 mod font;
 mod layout;
 mod legend;
+mod levels;
 mod overlay;
 mod picture;
 #[cfg(feature = "render")]
 mod png;
-mod route_levels;
 mod scene;
 pub mod style;
 mod svg;
@@ -36,11 +36,11 @@ pub use drawing::{Anchor, Drawing, Hatch, Item, Rgba, Stroke, Tag};
 pub use error::RenderError;
 pub use layout::layout;
 pub use legend::nice_length_m;
+pub use levels::{diff_by_level, route_by_level};
 pub use overlay::diff_overlay;
 pub use picture::{PALETTE, kind_picture, kind_picture_png};
 #[cfg(feature = "render")]
 pub use png::{drawing_pixmap, drawing_png, render_png};
-pub use route_levels::route_by_level;
 pub use scene::{
     DiffOverlay, LabelMode, LevelMark, OverlaySpace, RenderOptions, RouteOverlay, Scene,
 };

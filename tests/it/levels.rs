@@ -504,6 +504,16 @@ fn a_simulated_tower_imports_from_its_manifest_level_by_level() {
         said.contains(&format!("update.gml: level 1 ({on_level_1} cells)")),
         "{said}"
     );
+    // The picture of that diff: one panel, level 1's.
+    let (ok, said) = run(
+        d,
+        &[&["render", "tower", "--diff", "2", "3", "--out", "d.svg"][..], &db].concat(),
+    );
+    assert!(ok && said.contains("(changed levels 1: "), "{said}");
+    let svg = std::fs::read_to_string(d.join("d.svg")).unwrap();
+    assert_eq!(svg.matches("class=\"title\"").count(), 1);
+    assert!(svg.contains("level 1</text>"));
+    assert!(svg.contains("class=\"diff changed\""), "the re-kinded room");
     let (ok, said) = run(d, &["check", "update.gml"]);
     assert!(ok, "{said}");
     let text = std::fs::read_to_string(d.join("update.gml")).unwrap();

@@ -1,11 +1,12 @@
-//! A route over a building with levels, drawn one level at a time: the
-//! pieces of the walk on that level, the doors passed there, and marks
-//! where the route leaves for another level or arrives from one.
+//! A building with levels drawn one level at a time: a route's pieces on
+//! a level, the doors passed there and marks where it leaves for another
+//! level or arrives from one; pictures of several levels side by side
+//! (a route's levels, a diff's changed levels).
 
 use super::drawing::Drawing;
 use super::error::RenderError;
 use super::layout::layout;
-use super::scene::{LevelMark, RenderOptions, RouteOverlay, Scene};
+use super::scene::{DiffOverlay, LevelMark, RenderOptions, RouteOverlay, Scene};
 use crate::model::{Nrg, SpaceKind};
 use crate::route::Route;
 
@@ -42,23 +43,64 @@ pub fn route_by_level(
             options,
         });
     }
-    let frame = nrg.extent();
-    let levels: Vec<_> = nrg
+    let levels: Vec<String> = nrg
         .levels()
         .into_iter()
         .filter(|l| route.levels.iter().any(|s| s.level == l.name))
+        .map(|l| l.name)
         .collect();
+    beside(nrg, &levels, options, |level| {
+        (RouteOverlay::on_level(nrg, route, level), None)
+    })
+}
+
+/// The changes from `old` to `new` of a building drawn level by level:
+/// one panel for each level in `levels` (e.g. the change set's
+/// [`crate::diff::ChangeSet::changed_levels`]), lowest first, side by
+/// side in the building's frame, each with that level's part of `diff`.
+pub fn diff_by_level(
+    old: &Nrg,
+    new: &Nrg,
+    diff: &DiffOverlay,
+    levels: &[String],
+    options: &RenderOptions,
+) -> Result<Drawing, RenderError> {
+    let levels: Vec<String> = new
+        .levels()
+        .into_iter()
+        .chain(old.levels())
+        .map(|l| l.name)
+        .filter(|l| levels.contains(l))
+        .fold(Vec::new(), |mut v, l| {
+            if !v.contains(&l) {
+                v.push(l);
+            }
+            v
+        });
+    beside(new, &levels, options, |level| {
+        (None, Some(diff.on_level(old, new, level)))
+    })
+}
+
+/// One panel for each of `levels` of `nrg`, side by side, in the
+/// building's frame at one scale, each titled with its level and drawn
+/// with the overlays `overlays` gives for it; the legend beside the last.
+fn beside(
+    nrg: &Nrg,
+    levels: &[String],
+    options: &RenderOptions,
+    overlays: impl Fn(&str) -> (Option<RouteOverlay>, Option<DiffOverlay>),
+) -> Result<Drawing, RenderError> {
+    let frame = nrg.extent();
     let mut panels = Vec::new();
     for (k, level) in levels.iter().enumerate() {
-        let Some(floor) = nrg.level_model(&level.name) else {
+        let Some(floor) = nrg.level_model(level) else {
             continue;
         };
-        let Some(overlay) = RouteOverlay::on_level(nrg, route, &level.name) else {
-            continue;
-        };
+        let (route, diff) = overlays(level);
         let title = match &options.title {
-            Some(t) => format!("{t} level {}", level.name),
-            None => format!("level {}", level.name),
+            Some(t) => format!("{t} level {level}"),
+            None => format!("level {level}"),
         };
         let panel_options = RenderOptions {
             title: Some(title),
@@ -69,10 +111,13 @@ pub fn route_by_level(
         panels.push(layout(&Scene {
             nrg: &floor,
             map: None,
-            route: Some(&overlay),
-            diff: None,
+            route: route.as_ref(),
+            diff: diff.as_ref(),
             options: &panel_options,
         })?);
+    }
+    if panels.is_empty() {
+        return Err(RenderError::NothingToDraw);
     }
     let (width, height) = panels.iter().fold((0u64, 0u64), |(w, h), p| {
         (w + u64::from(p.width), h.max(u64::from(p.height)))
