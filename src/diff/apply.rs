@@ -183,7 +183,11 @@ pub fn with_base_ids(
 /// ([`with_base_ids`]). In a building with levels it covers only the
 /// levels with a reported change ([`ChangeSet::changed_levels`]): their
 /// spaces and the connections among them, so a receiver replaces those
-/// levels and keeps the others. Returns the model and the levels it
+/// levels and keeps the others. A vertical connection between a changed
+/// and an unchanged level is not in it (its other end is not in the
+/// document): matched stairs and lifts keep the base's ids, so the
+/// receiver's own connection still joins them; a connector added or
+/// removed is a change on both its levels, which are then both in it. Returns the model and the levels it
 /// covers (empty without levels).
 ///
 /// ```

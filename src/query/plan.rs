@@ -88,10 +88,7 @@ pub fn plan(
                 // The route's own ends are never avoided.
                 let ends: Vec<SpaceId> = [&from, &to]
                     .into_iter()
-                    .filter_map(|e| match e {
-                        Endpoint::Space(id) => Some(*id),
-                        _ => None,
-                    })
+                    .filter_map(Endpoint::space)
                     .collect();
                 avoid.extend(super::filter::matching_spaces(cond, m, &ends)?);
             }

@@ -49,9 +49,13 @@ pub fn route_by_level(
         .filter(|l| route.levels.iter().any(|s| s.level == l.name))
         .map(|l| l.name)
         .collect();
-    beside(nrg, &levels, options, |level| {
-        (RouteOverlay::on_level(nrg, route, level), None)
-    })
+    beside(
+        nrg,
+        &levels,
+        options,
+        |level| nrg.level_model(level),
+        |level| (RouteOverlay::on_level(nrg, route, level), None),
+    )
 }
 
 /// The changes from `old` to `new` of a building drawn level by level:
@@ -77,26 +81,35 @@ pub fn diff_by_level(
             }
             v
         });
-    beside(new, &levels, options, |level| {
-        (None, Some(diff.on_level(old, new, level)))
-    })
+    // A level that is gone in `new` is drawn as `old` had it, with its
+    // removed spaces.
+    beside(
+        new,
+        &levels,
+        options,
+        |level| new.level_model(level).or_else(|| old.level_model(level)),
+        |level| (None, Some(diff.on_level(old, new, level))),
+    )
 }
 
-/// One panel for each of `levels` of `nrg`, side by side, in the
-/// building's frame at one scale, each titled with its level and drawn
-/// with the overlays `overlays` gives for it; the legend beside the last.
+/// One panel for each of `levels` (the model `floor_of` gives for it),
+/// side by side, in `nrg`'s frame at one scale, each titled with its
+/// level and drawn with the overlays `overlays` gives for it; the legend
+/// beside the last.
 fn beside(
     nrg: &Nrg,
     levels: &[String],
     options: &RenderOptions,
+    floor_of: impl Fn(&str) -> Option<Nrg>,
     overlays: impl Fn(&str) -> (Option<RouteOverlay>, Option<DiffOverlay>),
 ) -> Result<Drawing, RenderError> {
     let frame = nrg.extent();
+    let floors: Vec<(&String, Nrg)> = levels
+        .iter()
+        .filter_map(|l| Some((l, floor_of(l)?)))
+        .collect();
     let mut panels = Vec::new();
-    for (k, level) in levels.iter().enumerate() {
-        let Some(floor) = nrg.level_model(level) else {
-            continue;
-        };
+    for (k, (level, floor)) in floors.iter().enumerate() {
         let (route, diff) = overlays(level);
         let title = match &options.title {
             Some(t) => format!("{t} level {level}"),
@@ -104,12 +117,12 @@ fn beside(
         };
         let panel_options = RenderOptions {
             title: Some(title),
-            legend: options.legend && k + 1 == levels.len(),
+            legend: options.legend && k + 1 == floors.len(),
             frame_m: frame,
             ..options.clone()
         };
         panels.push(layout(&Scene {
-            nrg: &floor,
+            nrg: floor,
             map: None,
             route: route.as_ref(),
             diff: diff.as_ref(),
@@ -280,6 +293,35 @@ mod tests {
         assert!(middle.doors.is_empty());
         assert_eq!(top.doors.len(), 1);
         assert!(RouteOverlay::on_level(&nrg, &r, "7").is_none());
+    }
+
+    #[test]
+    fn a_level_that_is_gone_is_drawn_from_the_old_model() {
+        use crate::diff::{DiffParams, diff};
+        let old = crate::fixtures::storeys(3, 2);
+        let new = crate::fixtures::storeys(2, 2);
+        let changes = diff(&old, &new, &DiffParams::default());
+        let levels = changes.changed_levels();
+        assert!(levels.contains(&"2".to_string()), "{levels:?}");
+        let overlay = crate::render::diff_overlay(&changes, &old, &new);
+        let d = diff_by_level(&old, &new, &overlay, &levels, &RenderOptions::default()).unwrap();
+        let titles: Vec<&str> = d
+            .items
+            .iter()
+            .filter_map(|i| match i {
+                crate::render::Item::Text { tag, text, .. } if tag.class == "title" => {
+                    Some(text.as_str())
+                }
+                _ => None,
+            })
+            .collect();
+        assert_eq!(titles.last(), Some(&"level 2"), "{titles:?}");
+        let removed = d
+            .items
+            .iter()
+            .filter(|i| matches!(i, crate::render::Item::Polygon { tag, .. } if tag.class == "diff removed"))
+            .count();
+        assert_eq!(removed, old.level_model("2").unwrap().spaces().len());
     }
 
     #[test]

@@ -335,6 +335,14 @@ fn joined(nrg: &Nrg, parts: Vec<Part>, leg_lengths_m: Vec<f64>, request: &RouteR
                 route.steps.extend(steps);
             }
             Part::Vertical { from, to, length_m } => {
+                // A route that starts on the stairs or in the lift starts
+                // at their anchor on its own level.
+                if route.waypoints.is_empty() {
+                    enter_level(nrg, &mut route, from);
+                    if let Some(s) = nrg.space(from) {
+                        route.waypoints.push(s.anchor);
+                    }
+                }
                 if route.spaces.last() != Some(&from) {
                     route.spaces.push(from);
                 }
@@ -349,8 +357,24 @@ fn joined(nrg: &Nrg, parts: Vec<Part>, leg_lengths_m: Vec<f64>, request: &RouteR
             }
         }
     }
+    // From a stop to itself: there already, at the stop.
+    if route.waypoints.is_empty()
+        && let Some(id) = request.to.space()
+    {
+        enter_level(nrg, &mut route, id);
+        route.spaces.push(id);
+        let at = request
+            .to
+            .point()
+            .or_else(|| nrg.space(id).map(|s| s.anchor));
+        route.waypoints.extend(at);
+    }
     let end = route.waypoints.last().copied().unwrap_or_default();
-    let goal = route.spaces.last().copied().unwrap_or(SpaceId(0));
+    let goal = request
+        .to
+        .space()
+        .or(route.spaces.last().copied())
+        .unwrap_or(SpaceId(0));
     route.steps.push(Step {
         instruction: format!(
             "arrive at {}",

@@ -6,7 +6,7 @@
 use std::collections::HashSet;
 
 use super::route_avoiding::{check_request, route_avoiding};
-use super::{Budget, Endpoint, NavMesh, Route, RouteError, RouteRequest};
+use super::{Budget, NavMesh, Route, RouteError, RouteRequest};
 use crate::model::SpaceId;
 
 /// Most routes returned.
@@ -14,7 +14,8 @@ pub const MAX_ALTERNATIVES: usize = 10;
 
 /// Up to `request.alternatives` (at most 10) routes from `request.from` to
 /// `request.to` avoiding `request.avoid`, each through a different sequence
-/// of doors, in non-decreasing length. Waypoints are not supported here.
+/// of doors (and in a building, stairs and lifts), in non-decreasing
+/// length. Waypoints are not supported here.
 pub fn alternatives(
     nav: &NavMesh,
     request: &RouteRequest,
@@ -27,10 +28,7 @@ pub fn alternatives(
     let k = request.alternatives.clamp(1, MAX_ALTERNATIVES);
     let ends: Vec<SpaceId> = [&request.from, &request.to]
         .iter()
-        .filter_map(|e| match e {
-            Endpoint::Space(id) | Endpoint::PointIn(_, id) => Some(*id),
-            Endpoint::Point(_) => None,
-        })
+        .filter_map(|e| e.space())
         .collect();
     let nrg = nav.nrg();
     let mut base = request.avoid.clone();

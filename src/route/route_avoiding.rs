@@ -2,7 +2,7 @@
 //! leg by leg through the waypoints on the navigation layer, skipping
 //! avoided spaces and doors too narrow for the profile. Shared by
 //! [`super::shortest_route`] and [`super::alternatives`] (which asks for it
-//! once per set of doors to avoid), so neither imports the other.
+//! once per set of passages to avoid), so neither imports the other.
 
 use super::nav::Walk;
 use super::steps::describe;

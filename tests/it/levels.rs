@@ -507,7 +507,11 @@ fn a_simulated_tower_imports_from_its_manifest_level_by_level() {
     // The picture of that diff: one panel, level 1's.
     let (ok, said) = run(
         d,
-        &[&["render", "tower", "--diff", "2", "3", "--out", "d.svg"][..], &db].concat(),
+        &[
+            &["render", "tower", "--diff", "2", "3", "--out", "d.svg"][..],
+            &db,
+        ]
+        .concat(),
     );
     assert!(ok && said.contains("(changed levels 1: "), "{said}");
     let svg = std::fs::read_to_string(d.join("d.svg")).unwrap();
@@ -730,6 +734,19 @@ fn routes_cross_levels_by_the_cheapest_allowed_way() {
         why.contains("without stairs (no lift serves both levels)"),
         "{why}"
     );
+    // From the stairs on level 0: the route starts there, on level 0.
+    let up = route(&nav, stairs, 100_000 + from, exact).unwrap().unwrap();
+    assert_eq!(up.levels.first().unwrap().level, "0");
+    assert_eq!(
+        up.waypoints.first(),
+        Some(&nrg.space(nrgdb::model::SpaceId(stairs)).unwrap().anchor)
+    );
+    // To where one is: one point, arrived.
+    let here = route(&nav, from, from, exact).unwrap().unwrap();
+    assert_eq!(here.spaces, [nrgdb::model::SpaceId(from)]);
+    assert_eq!(here.waypoints.len(), 1);
+    assert_eq!(here.levels.len(), 1);
+    assert_eq!(here.steps.last().unwrap().instruction, "arrive at Office 1 L0");
     let same_level = route(&nav, from, 13, neither).unwrap().unwrap();
     assert!((same_level.length_m - walk(from, 13)).abs() < 1e-9);
     // A point has no level: a clear error.

@@ -162,6 +162,22 @@ async fn levels_over_http_list_locate_and_draw_one_floor_at_a_time() {
     assert_eq!(xyz(coords.last().unwrap()), [round(bx), round(by), 7.0]);
     assert_eq!(body["waypoints"][0]["space"], 11);
     assert_eq!(body["waypoints"][1]["space"], 200_012);
+    // The route's ends are never avoided, a point's space included.
+    let body = server
+        .get(&format!(
+            "/maps/tower/route?from={x},{y}@0&to=200012&avoid_where=kind%20%3D%20room"
+        ))
+        .await
+        .json();
+    assert_eq!(body["code"], "Ok", "{body}");
+    // A point alone as a waypoint.
+    let body = server
+        .get(&format!(
+            "/maps/tower/route?from=10&to=200012&via={x},{y}@1"
+        ))
+        .await
+        .json();
+    assert_eq!(body["code"], "Ok", "{body}");
     server
         .get(&format!("/maps/tower/route?from={x},{y}@9&to=10"))
         .await

@@ -145,6 +145,15 @@ impl Endpoint {
             .map(|s| Endpoint::PointIn(p, s.id))
     }
 
+    /// The space of a space end, or the space a point end is known to
+    /// be in ([`Endpoint::PointIn`]).
+    pub fn space(&self) -> Option<SpaceId> {
+        match self {
+            Endpoint::Space(id) | Endpoint::PointIn(_, id) => Some(*id),
+            Endpoint::Point(_) => None,
+        }
+    }
+
     /// The point of a point end.
     pub fn point(&self) -> Option<Point> {
         match self {

@@ -34,7 +34,7 @@ pub const PARAMS: [ParamDoc; 12] = [
         "via",
         "string",
         false,
-        "waypoints in order: comma-separated ids or names",
+        "waypoints in order: comma-separated ids or names; with points ('x,y', 'x,y@L'), ';'-separated",
     ),
     q(
         "avoid",
@@ -157,8 +157,15 @@ fn endpoints(
     let Some(raw) = raw else {
         return Ok(Vec::new());
     };
+    // One point alone (`x,y` or `x,y@L`) is one waypoint.
+    let one_point = matches!(
+        reference(raw),
+        SpaceRef::Point(_) | SpaceRef::PointOn { .. }
+    );
     let parts: Vec<&str> = if raw.contains(';') {
         raw.split(';').collect()
+    } else if one_point {
+        vec![raw]
     } else {
         raw.split(',').collect()
     };
@@ -274,10 +281,7 @@ pub async fn route(
         if let Some(cond) = &avoid_where {
             let ends: Vec<SpaceId> = [&from, &to]
                 .into_iter()
-                .filter_map(|e| match e {
-                    Endpoint::Space(id) => Some(*id),
-                    _ => None,
-                })
+                .filter_map(Endpoint::space)
                 .collect();
             avoided.extend(
                 crate::query::matching_spaces(cond, &r, &ends)

@@ -86,7 +86,7 @@ fn space(raw: &str, rev: &IndexedRevision) -> Result<SpaceId, ApiError> {
     })
 }
 
-/// `GET /maps/{map}/revisions/{rev}/svg?route=FROM,TO&diff=A`.
+/// `GET /maps/{map}/revisions/{rev}/svg?route=FROM,TO&diff=A&level=L&map=false`.
 pub async fn svg(
     State(state): State<AppState>,
     Path((map, rev)): Path<(String, String)>,
