@@ -746,7 +746,10 @@ fn routes_cross_levels_by_the_cheapest_allowed_way() {
     assert_eq!(here.spaces, [nrgdb::model::SpaceId(from)]);
     assert_eq!(here.waypoints.len(), 1);
     assert_eq!(here.levels.len(), 1);
-    assert_eq!(here.steps.last().unwrap().instruction, "arrive at Office 1 L0");
+    assert_eq!(
+        here.steps.last().unwrap().instruction,
+        "arrive at Office 1 L0"
+    );
     let same_level = route(&nav, from, 13, neither).unwrap().unwrap();
     assert!((same_level.length_m - walk(from, 13)).abs() < 1e-9);
     // A point has no level: a clear error.
