@@ -177,7 +177,11 @@ impl IndexedRevision {
                 )
             }));
         }
-        crate::route::Endpoint::point_on(&self.nrg, at, level).ok_or_else(|| outside(String::new()))
+        // The revision's own index, not a scan of every space.
+        self.locate_on(at, Some(level))
+            .first()
+            .map(|s| crate::route::Endpoint::PointIn(at, s.id))
+            .ok_or_else(|| outside(String::new()))
     }
 
     /// The label of a space ("Kitchen", "door 7"), or "space N" if missing.
