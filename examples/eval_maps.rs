@@ -33,7 +33,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         match a.as_str() {
             "--method" => params.method = args.next().unwrap_or_default().parse::<Method>()?,
             "--params" => {
-                params = toml::from_str(&std::fs::read_to_string(args.next().unwrap_or_default())?)?
+                params = ExtractParams::from_toml(&std::fs::read_to_string(
+                    args.next().unwrap_or_default(),
+                )?)?
             }
             "--pictures" => pictures = args.next().map(PathBuf::from),
             "--doors" => doors = true,

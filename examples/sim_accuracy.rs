@@ -24,7 +24,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         match a.as_str() {
             "--count" => count = args.next().unwrap_or_default().parse()?,
             "--params" => {
-                params = toml::from_str(&std::fs::read_to_string(args.next().unwrap_or_default())?)?
+                params = ExtractParams::from_toml(&std::fs::read_to_string(
+                    args.next().unwrap_or_default(),
+                )?)?
             }
             other => return Err(format!("unknown argument {other:?}").into()),
         }

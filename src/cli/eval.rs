@@ -46,6 +46,11 @@ pub struct Args {
 
 /// Runs `nrgdb eval`.
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
+    if args.map.print_params {
+        let text = super::extract::params_file(&args.map.params()?)?;
+        write!(out, "{text}").into_diagnostic()?;
+        return Ok(ExitCode::SUCCESS);
+    }
     let inputs = args.map.inputs()?;
     if let Some(spec) = &args.loo {
         if args.gt.is_some() || args.picture.is_some() {

@@ -20,7 +20,7 @@ use super::render::write_picture;
 pub struct MapArgs {
     /// The map(s): ROS map_server YAMLs, bare PGM/PNG images with --resolution,
     /// or folders (every .yaml in them).
-    #[arg(required = true, value_name = "MAP")]
+    #[arg(required_unless_present = "print_params", value_name = "MAP")]
     pub maps: Vec<PathBuf>,
     /// Metres per pixel for a bare image (ignored for a YAML).
     #[arg(long)]
@@ -31,7 +31,9 @@ pub struct MapArgs {
     /// Refuse images with more pixels than this.
     #[arg(long, default_value_t = 64 * 1024 * 1024)]
     pub max_pixels: u64,
-    /// Parameters file (TOML, keys of ExtractParams; flags below override it).
+    /// Parameters file (TOML: `[building]`, `[output]` and `[internals]`
+    /// tables of ExtractParams, or their keys on their own; flags below
+    /// override it).
     #[arg(long)]
     pub params: Option<PathBuf>,
     /// Segmentation method: watershed (paper Exp. II, default) or ccl (Exp. I).
@@ -49,11 +51,16 @@ pub struct MapArgs {
     /// Spaces smaller than this (m²) merge into a neighbour.
     #[arg(long)]
     pub min_room_area: Option<f64>,
-    /// Any parameter of ExtractParams as KEY=VALUE (a TOML value), e.g.
-    /// `--set furniture_max_m=0` or `--set working_resolution_m=0.1`;
-    /// repeatable, applied last.
+    /// Any parameter of ExtractParams as KEY=VALUE (a TOML value), KEY
+    /// as `group.key` or the bare key, e.g. `--set furniture_max_m=0`,
+    /// `--set internals.door_constriction=0.8` or `--set
+    /// working_resolution_m=0.1`; repeatable, applied last, checked together.
     #[arg(long = "set", value_name = "KEY=VALUE")]
     pub set: Vec<String>,
+    /// Print the parameters in effect (defaults, --params, flags, --set)
+    /// as a parameters file and stop; no map is needed.
+    #[arg(long)]
+    pub print_params: bool,
 }
 
 impl MapArgs {
@@ -100,6 +107,12 @@ impl MapArgs {
             })?;
             load_image(map, res, &opts).into_diagnostic()?
         };
+        Ok((grid, self.params()?))
+    }
+
+    /// The parameters in effect: the defaults, the `--params` file, the
+    /// flags and `--set`, in that order, checked together.
+    pub fn params(&self) -> miette::Result<ExtractParams> {
         let mut params = match &self.params {
             Some(p) => {
                 let text = std::fs::read_to_string(p)
@@ -107,7 +120,7 @@ impl MapArgs {
                     .wrap_err_with(|| {
                         format!("{}: cannot read the parameters file", p.display())
                     })?;
-                toml::from_str::<ExtractParams>(&text)
+                ExtractParams::from_toml(&text)
                     .into_diagnostic()
                     .wrap_err_with(|| format!("{}: invalid parameters", p.display()))?
             }
@@ -117,19 +130,18 @@ impl MapArgs {
             params.method = m;
         }
         if let Some(v) = self.core_radius {
-            params.core_radius_m = v;
+            params.internals.core_radius_m = v;
         }
         if let Some(v) = self.door_width_max {
-            params.door_width_max_m = v;
+            params.building.door_width_max_m = v;
         }
         if let Some(v) = self.noise_radius {
-            params.noise_radius_m = v;
+            params.building.noise_radius_m = v;
         }
         if let Some(v) = self.min_room_area {
-            params.min_room_area_m2 = v;
+            params.building.min_room_area_m2 = v;
         }
-        let params = apply_sets(params, &self.set)?;
-        Ok((grid, params))
+        apply_sets(params, &self.set)
     }
 }
 
@@ -139,36 +151,36 @@ pub fn is_yaml(path: &Path) -> bool {
     FileKind::by_extension(&path.to_string_lossy()) == Some(FileKind::MapYaml)
 }
 
-/// Applies `--set KEY=VALUE` overrides to `params` through its TOML form, so
-/// every field is reachable and unknown keys are refused by name.
-pub(crate) fn apply_sets(params: ExtractParams, sets: &[String]) -> miette::Result<ExtractParams> {
-    if sets.is_empty() {
-        return Ok(params);
-    }
-    let mut table = toml::Table::try_from(&params).into_diagnostic()?;
+/// Applies `--set KEY=VALUE` overrides to `params` in order (see
+/// [`ExtractParams::set`]: `group.key` or the bare key; unknown keys are
+/// refused with the list of known ones).
+pub(crate) fn apply_sets(
+    mut params: ExtractParams,
+    sets: &[String],
+) -> miette::Result<ExtractParams> {
     for set in sets {
         let Some((key, value)) = set.split_once('=') else {
             miette::bail!("--set {set}: expected KEY=VALUE, e.g. --set furniture_max_m=0");
         };
-        let key = key.trim();
-        if !table.contains_key(key) {
-            let known: Vec<&str> = table.keys().map(String::as_str).collect();
-            miette::bail!(
-                "--set {key}: no such parameter (known: {})",
-                known.join(", ")
-            );
-        }
-        // A TOML value (number, boolean, quoted string); a bare word is a string.
-        let parsed = toml::from_str::<toml::Table>(&format!("v = {}", value.trim()))
-            .ok()
-            .and_then(|mut t| t.remove("v"))
-            .unwrap_or_else(|| toml::Value::String(value.trim().to_owned()));
-        table.insert(key.to_owned(), parsed);
+        params
+            .set(key.trim(), value)
+            .into_diagnostic()
+            .wrap_err_with(|| format!("--set {set}"))?;
     }
-    table
-        .try_into()
-        .into_diagnostic()
-        .wrap_err("--set: a value has the wrong type for its parameter")
+    params.validate().into_diagnostic()?;
+    Ok(params)
+}
+
+/// `params` as a TOML parameters file, its groups explained.
+pub(crate) fn params_file(params: &ExtractParams) -> miette::Result<String> {
+    let body = toml::to_string_pretty(params).into_diagnostic()?;
+    Ok(format!(
+        "# nrgdb extraction parameters (lengths in metres, areas in m²).\n\
+         # [building]: what the building and its sensor are like; change these for a building.\n\
+         # [output]: how the spaces are drawn.\n\
+         # [internals]: thresholds of the method's rules; change them to study the method.\n\
+         {body}"
+    ))
 }
 
 /// Extracts an IndoorGML NRG (rooms, corridors, doors, connections) from an occupancy grid map.
@@ -230,6 +242,10 @@ pub enum OutputFormat {
 
 /// Runs `nrgdb extract`.
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
+    if args.map.print_params {
+        write!(out, "{}", params_file(&args.map.params()?)?).into_diagnostic()?;
+        return Ok(ExitCode::SUCCESS);
+    }
     let inputs = args.map.inputs()?;
     if inputs.len() > 1 || args.out_dir.is_some() {
         return run_batch(&args, &inputs, out);

@@ -13,23 +13,20 @@ pub(crate) struct FreeSpace {
     pub reachable: Vec<bool>,
 }
 
-/// Fills furniture islands no wider than `furniture_m` (see
-/// [`free_without_furniture`]), opens the free mask with a disk of
-/// `noise_radius_m` (rays and speckle are narrower than its diameter) and
-/// drops 8-connected components under `min_area_m2`.
+/// Fills furniture islands no wider than `furniture_px` (see
+/// [`free_without_furniture`]; `wall_piece_gap_px` for the wall pieces
+/// between doorways), opens the free mask with a disk of `noise_px`
+/// (rays and speckle are narrower than its diameter) and drops
+/// 8-connected components under `min_area_px`. Lengths in pixels.
 pub(crate) fn clean_free(
     grid: &OccupancyGrid,
-    noise_radius_m: f64,
-    min_area_m2: f64,
-    furniture_m: f64,
-    wall_gap_m: f64,
+    noise_px: f64,
+    min_area_px: usize,
+    furniture_px: f64,
+    wall_piece_gap_px: f64,
 ) -> FreeSpace {
-    let free = free_without_furniture(
-        grid,
-        furniture_m / grid.resolution,
-        wall_gap_m / grid.resolution,
-    );
-    let r = noise_radius_m / grid.resolution;
+    let free = free_without_furniture(grid, furniture_px, wall_piece_gap_px);
+    let r = noise_px;
     let mut clean = if r >= 0.5 {
         open(&free, r)
     } else {
@@ -37,7 +34,7 @@ pub(crate) fn clean_free(
     };
     let comps = label_runs(&clean, true);
     let areas = comps.areas();
-    let min_px = (min_area_m2 / (grid.resolution * grid.resolution)).ceil() as usize;
+    let min_px = min_area_px;
     let w = clean.width() as usize;
     for r in comps
         .runs
@@ -74,7 +71,7 @@ mod tests {
              ##########????",
             0.1,
         );
-        let f = clean_free(&g, 0.1, 0.05, 0.0, 0.0);
+        let f = clean_free(&g, 1.0, 5, 0.0, 0.0);
         let w = g.width as usize;
         assert_eq!(f.clean.as_raw()[2 * w + 10], 0, "ray removed");
         assert_eq!(f.clean.as_raw()[4 * w + 11], 0, "island removed");

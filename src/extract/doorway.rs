@@ -13,6 +13,7 @@
 //! speck (up to [`NOISE_RUN_MAX`] uncertain pixels with free space after
 //! them, see [`Pixel`]); it ends at a wall.
 
+use crate::grid::{Cell, OccupancyGrid};
 use crate::imaging::Labels;
 
 /// Limits of [`door_span`], in pixels.
@@ -461,6 +462,23 @@ fn span(pixel: &impl Fn(i64, i64) -> Pixel, th: &Throat, limits: &SpanLimits) ->
         s: extent,
         t: [t_lo, t_hi],
     }
+}
+
+/// Pixels that are surely walls: occupied cells, and cells next to one
+/// (8-neighbours: the uncertain halo of a scanned wall, a blurred drawn
+/// wall). A 3 × 3 dilation, by rows then by columns.
+pub(crate) fn wall_pixels(grid: &OccupancyGrid) -> Vec<bool> {
+    let w = grid.width as usize;
+    let occupied: Vec<bool> = grid.cells.iter().map(|c| *c == Cell::Occupied).collect();
+    let mut rows = occupied.clone();
+    for (row, out) in occupied.chunks(w.max(1)).zip(rows.chunks_mut(w.max(1))) {
+        for x in 0..row.len() {
+            out[x] = row[x.saturating_sub(1)..(x + 2).min(row.len())].contains(&true);
+        }
+    }
+    (0..rows.len())
+        .map(|i| rows[i] || (i >= w && rows[i - w]) || rows.get(i + w).is_some_and(|&r| r))
+        .collect()
 }
 
 #[cfg(test)]

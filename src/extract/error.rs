@@ -34,9 +34,23 @@ pub enum ExtractError {
         /// Its value.
         high_value: f64,
     },
+    /// A parameters file or value that cannot be read.
+    #[error("invalid parameters: {message}")]
+    ParamsText {
+        /// What is wrong, with the parameter's name.
+        message: String,
+    },
+    /// A parameter name that is none.
+    #[error("no such parameter `{key}` (known: {known})")]
+    UnknownParam {
+        /// The name given.
+        key: String,
+        /// Every parameter's name.
+        known: String,
+    },
     /// Nothing free is left after noise removal.
     #[error(
-        "no free space is left after removing noise narrower than {noise_m} m and components under {min_area_m2} m² (lower noise_radius_m or min_free_area_m2)"
+        "no free space is left after removing noise narrower than {noise_m} m and components under {min_area_m2} m² (lower building.noise_radius_m or internals.min_free_area_m2)"
     )]
     NoSpace {
         /// The noise radius used.
@@ -46,7 +60,7 @@ pub enum ExtractError {
     },
     /// The map has more spaces than a 16-bit label image can hold.
     #[error(
-        "the map produced {0} spaces; at most 65535 fit a label image (raise min_room_area_m2)"
+        "the map produced {0} spaces; at most 65535 fit a label image (raise building.min_room_area_m2)"
     )]
     TooManySpaces(usize),
     /// The extracted graph broke a model invariant (a bug).

@@ -7,7 +7,8 @@ use std::collections::HashSet;
 use super::doors::Border;
 use super::stubs::compared_width;
 
-/// What makes a border an open join rather than a possible door, in pixels.
+/// What makes a border a possible door or an open join, in pixels.
+#[derive(Debug, Clone, Copy)]
 pub(crate) struct JoinLimits {
     /// Narrowest border that can be a doorway (`door_width_min_m`).
     pub door_min_px: f64,

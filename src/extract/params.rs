@@ -1,4 +1,9 @@
-//! [`ExtractParams`]: every tunable of the pipeline, lengths in metres.
+//! [`ExtractParams`]: every tunable of the pipeline, lengths in metres, in
+//! three groups: [`BuildingPriors`] (what the building and its sensor are
+//! like: what a user can reason about), [`OutputShape`] (how the spaces are
+//! drawn) and [`MethodInternals`] (how the method works; change them only
+//! to study it). Reading them from TOML and setting one by name is in
+//! `params_file.rs`; their pixel form, in `pixel_config.rs`.
 
 use serde::{Deserialize, Serialize};
 
@@ -46,14 +51,21 @@ pub enum DoorRule {
 }
 
 /// All parameters of [`crate::extract::extract`]. Lengths are metres and
-/// areas square metres, converted to pixels with the map's resolution, so one
-/// set of defaults serves 0.05 and 0.1 m/px maps alike. Loads from TOML
-/// (missing keys take their defaults).
+/// areas square metres, converted to pixels once per map (so one set of
+/// defaults serves 0.05 and 0.1 m/px maps alike).
+///
+/// In TOML (see [`ExtractParams::from_toml`]) the groups are tables,
+/// `[building]`, `[output]` and `[internals]`; missing keys take their
+/// defaults, and a key may also be written without its table (the names
+/// are unique), as parameter files did before the groups.
 ///
 /// ```
-/// let p: nrgdb::extract::ExtractParams = toml::from_str("door_width_max_m = 1.2").unwrap();
-/// assert_eq!(p.door_width_max_m, 1.2);
+/// use nrgdb::extract::ExtractParams;
+/// let p = ExtractParams::from_toml("[building]\ndoor_width_max_m = 1.2").unwrap();
+/// assert_eq!(p.building.door_width_max_m, 1.2);
 /// assert_eq!(p.method, nrgdb::extract::Method::Watershed);
+/// let flat = ExtractParams::from_toml("door_width_max_m = 1.2").unwrap();
+/// assert_eq!(flat, p);
 /// ```
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
@@ -70,47 +82,34 @@ pub struct ExtractParams {
     /// depend on how the map lies in its image. 0.1 makes a 0.05 m/px map
     /// about 3× faster at the same mean accuracy on the dev maps.
     pub working_resolution_m: f64,
-    /// Free space narrower than twice this is noise (LiDAR rays leaking into
-    /// unknown space, speckle) and is removed by an opening. Default 0.2 m.
-    pub noise_radius_m: f64,
-    /// Obstacle islands (not joined to any wall) whose bounding box is at
-    /// most this long on both sides are furniture: rooms are segmented as if
-    /// they were free, and own the pixels under them. 0 turns this off.
-    /// Default 1.0 m: chair and table legs, boxes and pillars, but not the
-    /// 1.2 m wall pieces left between neighbouring doorways.
-    pub furniture_max_m: f64,
-    /// Unknown pockets inside the building (the insides of furniture, what
-    /// the sensor could not see) of at most this area join the spaces
-    /// around them; unknown joined to the image border is outside and stays
-    /// out. 0 turns this off. Default 4.0 m².
-    pub unknown_pocket_max_m2: f64,
-    /// Free components smaller than this are dropped. Default 1.0 m².
-    pub min_free_area_m2: f64,
-    /// Room cores are the places farther than this from any obstacle; a
-    /// passage narrower than twice this separates two spaces. Default 0.5 m.
-    pub core_radius_m: f64,
-    /// A room core that splits, at a higher distance level, into parts of at
-    /// least this area becomes one space per part (rooms joined by a doorway
-    /// wider than `2 core_radius_m`). Default 1.0 m².
-    pub split_min_core_m2: f64,
-    /// A boundary between two spaces whose passage is at most this wide is a
-    /// door; wider boundaries are open connections. Default 1.8 m (double
-    /// doors; IPA maps have 1.7 m openings between rooms and corridors).
-    pub door_width_max_m: f64,
+    /// What the building and the sensor are like.
+    pub building: BuildingPriors,
+    /// How the spaces are drawn.
+    pub output: OutputShape,
+    /// How the method works inside.
+    pub internals: MethodInternals,
+}
+
+/// What the building and its sensor are like: door widths, wall thickness,
+/// furniture size, what the sensor leaves behind. These are the parameters
+/// to change for a building unlike the defaults' (offices, labs and homes
+/// mapped by a 2D LiDAR).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct BuildingPriors {
     /// Borders narrower than this, or shorter (fewer pixels along the
     /// border, both sides counted), are corner contacts, not doorways: no
     /// door. Default 0.4 m (twice `noise_radius_m`: narrower passages were
     /// removed as noise anyway).
     pub door_width_min_m: f64,
-    /// A border is a door only where it is a constriction: at most this
-    /// fraction of the widest passage of the narrower space on either side
-    /// (so a corridor's own width, between two parts of it, is no door).
-    /// 1 = any border under `door_width_max_m`. Default 0.7.
-    pub door_constriction: f64,
-    /// Stretches of border between the same two spaces closer than this are
-    /// one doorway (a speck of noise does not make two doors); farther apart
-    /// they are separate doors. Default 0.5 m.
-    pub door_join_m: f64,
+    /// A boundary between two spaces whose passage is at most this wide is a
+    /// door; wider boundaries are open connections. Default 1.8 m (double
+    /// doors; IPA maps have 1.7 m openings between rooms and corridors).
+    pub door_width_max_m: f64,
+    /// Widest doorway gap in a wall (see `wall_jamb_m`): the walls on both
+    /// sides are evidence a border in open space lacks, so it may be wider
+    /// than `door_width_max_m` (IPA's cubicle fronts are 2 m). Default 2.1 m.
+    pub wall_gap_width_max_m: f64,
     /// A gap between `door_width_min_m` and `wall_gap_width_max_m` in a
     /// straight wall (along the map's dominant directions) with at least
     /// this much wall on one side and a wall end on the other (a doorway
@@ -119,22 +118,15 @@ pub struct ExtractParams {
     /// least one face), is a doorway, even where it is as wide as the
     /// corridor it opens onto. 0 turns this off. Default 0.3 m.
     pub wall_jamb_m: f64,
-    /// Widest doorway gap in a wall (see `wall_jamb_m`): the walls on both
-    /// sides are evidence a border in open space lacks, so it may be wider
-    /// than `door_width_max_m` (IPA's cubicle fronts are 2 m). Default 2.1 m.
-    pub wall_gap_width_max_m: f64,
     /// Walls thicker than this hold no doorway gaps (a longer narrow
     /// passage is a corridor). Default 1.2 m.
     pub wall_thickness_max_m: f64,
-    /// Least thickness of a door space across the doorway. A door spans
-    /// its doorway from one face of the wall to the other, so it is as
-    /// thick as the wall, and at least this where the wall is thinner, the
-    /// opening is a passage running on past 0.7 m (a corridor stub: the door
-    /// stays at its mouth) or the border crosses open space. Default 0.1 m:
-    /// a door is a transition, and a thick one takes floor from the rooms
-    /// it joins. The diff matches doors by their doorway line, not their
-    /// area, so thin doors are no harder to follow across revisions.
-    pub door_depth_m: f64,
+    /// Obstacle islands (not joined to any wall) whose bounding box is at
+    /// most this long on both sides are furniture: rooms are segmented as if
+    /// they were free, and own the pixels under them. 0 turns this off.
+    /// Default 1.0 m: chair and table legs, boxes and pillars, but not the
+    /// 1.2 m wall pieces left between neighbouring doorways.
+    pub furniture_max_m: f64,
     /// A passage narrower than `door_width_max_m` and at least this long
     /// (its area over its width) that opens into wider space, with one
     /// opening (a corridor stub) or two into different spaces (a strip
@@ -145,6 +137,58 @@ pub struct ExtractParams {
     /// Default 3.0 m (door recall on the IPA maps 92.3 % without, 95.2 %
     /// with; the same from 2 to 3 m).
     pub passage_min_length_m: f64,
+    /// Spaces smaller than this merge into their longest-bordering neighbour
+    /// (small rooms above it are kept). Default 1.0 m².
+    pub min_room_area_m2: f64,
+    /// Free space narrower than twice this is noise (LiDAR rays leaking into
+    /// unknown space, speckle) and is removed by an opening. Default 0.2 m.
+    pub noise_radius_m: f64,
+    /// Unknown pockets inside the building (the insides of furniture, what
+    /// the sensor could not see) of at most this area join the spaces
+    /// around them; unknown joined to the image border is outside and stays
+    /// out. 0 turns this off. Default 4.0 m².
+    pub unknown_pocket_max_m2: f64,
+}
+
+/// How the spaces are drawn.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct OutputShape {
+    /// Least thickness of a door space across the doorway. A door spans
+    /// its doorway from one face of the wall to the other, so it is as
+    /// thick as the wall, and at least this where the wall is thinner, the
+    /// opening is a passage running on past 0.7 m (a corridor stub: the door
+    /// stays at its mouth) or the border crosses open space. Default 0.1 m:
+    /// a door is a transition, and a thick one takes floor from the rooms
+    /// it joins. The diff matches doors by their doorway line, not their
+    /// area, so thin doors are no harder to follow across revisions.
+    pub door_depth_m: f64,
+    /// Douglas–Peucker tolerance for polygons. Default 0.05 m.
+    pub simplify_m: f64,
+}
+
+/// How the method works inside: thresholds of its rules, each judged on
+/// the development maps (see `benches/README.md`). Change them to study
+/// the method, not to describe a building.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct MethodInternals {
+    /// Room cores are the places farther than this from any obstacle; a
+    /// passage narrower than twice this separates two spaces. Default 0.5 m.
+    pub core_radius_m: f64,
+    /// A room core that splits, at a higher distance level, into parts of at
+    /// least this area becomes one space per part (rooms joined by a doorway
+    /// wider than `2 core_radius_m`). Default 1.0 m².
+    pub split_min_core_m2: f64,
+    /// A border is a door only where it is a constriction: at most this
+    /// fraction of the widest passage of the narrower space on either side
+    /// (so a corridor's own width, between two parts of it, is no door).
+    /// 1 = any border under `door_width_max_m`. Default 0.7.
+    pub door_constriction: f64,
+    /// Stretches of border between the same two spaces closer than this are
+    /// one doorway (a speck of noise does not make two doors); farther apart
+    /// they are separate doors. Default 0.5 m.
+    pub door_join_m: f64,
     /// Two regions of the watershed that meet across a border no doorway
     /// divides are one space: a border wider than `door_width_max_m` at
     /// least this fraction of the narrower region's widest inscribed
@@ -154,16 +198,13 @@ pub struct ExtractParams {
     /// Default 0.5: room recall on the IPA maps 96.90 % kept apart, 97.67 %
     /// joined.
     pub open_join_fraction: f64,
-    /// Spaces smaller than this merge into their longest-bordering neighbour
-    /// (small rooms above it are kept). Default 1.0 m².
-    pub min_room_area_m2: f64,
+    /// Free components smaller than this are dropped. Default 1.0 m².
+    pub min_free_area_m2: f64,
     /// A non-door space of degree ≥ 2 is a corridor only if its area over
     /// the square of its widest inscribed diameter (with the clutter standing
     /// in it filled: a furnished office is as wide as its walls) is at least
     /// this (0 = the paper's pure degree rule). Default 2.5.
     pub corridor_min_elongation: f64,
-    /// Douglas–Peucker tolerance for polygons. Default 0.05 m.
-    pub simplify_m: f64,
     /// CCL method: erosion radius (thickens walls). Default 0.1 m.
     pub ccl_erode_m: f64,
     /// CCL method: opening radius (cuts doorways). Default 0.5 m.
@@ -183,25 +224,49 @@ impl Default for ExtractParams {
             method: Method::Watershed,
             door_rule: DoorRule::Constriction,
             working_resolution_m: 0.0,
-            noise_radius_m: 0.2,
+            building: BuildingPriors::default(),
+            output: OutputShape::default(),
+            internals: MethodInternals::default(),
+        }
+    }
+}
+
+impl Default for BuildingPriors {
+    fn default() -> Self {
+        BuildingPriors {
+            door_width_min_m: 0.4,
+            door_width_max_m: 1.8,
+            wall_gap_width_max_m: 2.1,
+            wall_jamb_m: 0.3,
+            wall_thickness_max_m: 1.2,
             furniture_max_m: 1.0,
+            passage_min_length_m: 3.0,
+            min_room_area_m2: 1.0,
+            noise_radius_m: 0.2,
             unknown_pocket_max_m2: 4.0,
-            min_free_area_m2: 1.0,
+        }
+    }
+}
+
+impl Default for OutputShape {
+    fn default() -> Self {
+        OutputShape {
+            door_depth_m: 0.1,
+            simplify_m: 0.05,
+        }
+    }
+}
+
+impl Default for MethodInternals {
+    fn default() -> Self {
+        MethodInternals {
             core_radius_m: 0.5,
             split_min_core_m2: 1.0,
-            door_width_max_m: 1.8,
-            door_width_min_m: 0.4,
             door_constriction: 0.7,
             door_join_m: 0.5,
-            wall_jamb_m: 0.3,
-            wall_gap_width_max_m: 2.1,
-            wall_thickness_max_m: 1.2,
-            door_depth_m: 0.1,
-            passage_min_length_m: 3.0,
             open_join_fraction: 0.5,
-            min_room_area_m2: 1.0,
+            min_free_area_m2: 1.0,
             corridor_min_elongation: 2.5,
-            simplify_m: 0.05,
             ccl_erode_m: 0.1,
             ccl_open_m: 0.5,
             skeleton_erode_m: 0.25,
@@ -211,51 +276,67 @@ impl Default for ExtractParams {
 }
 
 /// Parameters that are fractions (0 to 1).
-const FRACTIONS: [&str; 2] = ["door_constriction", "open_join_fraction"];
+const FRACTIONS: [&str; 2] = [
+    "internals.door_constriction",
+    "internals.open_join_fraction",
+];
 
 impl ExtractParams {
+    /// Every number with its name as `--set` takes it (`group.key`).
+    fn numbers(&self) -> [(&'static str, f64); 24] {
+        let (b, o, i) = (&self.building, &self.output, &self.internals);
+        [
+            ("working_resolution_m", self.working_resolution_m),
+            ("building.door_width_min_m", b.door_width_min_m),
+            ("building.door_width_max_m", b.door_width_max_m),
+            ("building.wall_gap_width_max_m", b.wall_gap_width_max_m),
+            ("building.wall_jamb_m", b.wall_jamb_m),
+            ("building.wall_thickness_max_m", b.wall_thickness_max_m),
+            ("building.furniture_max_m", b.furniture_max_m),
+            ("building.passage_min_length_m", b.passage_min_length_m),
+            ("building.min_room_area_m2", b.min_room_area_m2),
+            ("building.noise_radius_m", b.noise_radius_m),
+            ("building.unknown_pocket_max_m2", b.unknown_pocket_max_m2),
+            ("output.door_depth_m", o.door_depth_m),
+            ("output.simplify_m", o.simplify_m),
+            ("internals.core_radius_m", i.core_radius_m),
+            ("internals.split_min_core_m2", i.split_min_core_m2),
+            ("internals.door_constriction", i.door_constriction),
+            ("internals.door_join_m", i.door_join_m),
+            ("internals.open_join_fraction", i.open_join_fraction),
+            ("internals.min_free_area_m2", i.min_free_area_m2),
+            (
+                "internals.corridor_min_elongation",
+                i.corridor_min_elongation,
+            ),
+            ("internals.ccl_erode_m", i.ccl_erode_m),
+            ("internals.ccl_open_m", i.ccl_open_m),
+            ("internals.skeleton_erode_m", i.skeleton_erode_m),
+            ("internals.skeleton_open_m", i.skeleton_open_m),
+        ]
+    }
+
     /// Checks every parameter: lengths, areas and factors finite and
-    /// non-negative, fractions ([`ExtractParams::door_constriction`],
-    /// [`ExtractParams::open_join_fraction`]) at most 1, and each least
+    /// non-negative, fractions ([`MethodInternals::door_constriction`],
+    /// [`MethodInternals::open_join_fraction`]) at most 1, and each least
     /// value at most its greatest (`door_width_min_m` ≤ `door_width_max_m`,
     /// `door_width_min_m` ≤ `wall_gap_width_max_m`, `door_depth_m` ≤
     /// `wall_thickness_max_m`). A minimum above its maximum would silently
     /// find nothing (no door is both at least 2.5 m and at most 1.8 m wide).
+    /// Errors name parameters as `--set` takes them (`building.door_width_min_m`).
     ///
     /// ```
-    /// use nrgdb::extract::{ExtractError, ExtractParams};
-    /// let p = ExtractParams { door_width_min_m: 2.5, ..ExtractParams::default() };
+    /// use nrgdb::extract::{BuildingPriors, ExtractError, ExtractParams};
+    /// let p = ExtractParams {
+    ///     building: BuildingPriors { door_width_min_m: 2.5, ..BuildingPriors::default() },
+    ///     ..ExtractParams::default()
+    /// };
     /// let e = p.validate().unwrap_err();
-    /// assert!(matches!(e, ExtractError::ParamsOutOfOrder { low: "door_width_min_m", .. }));
+    /// assert!(matches!(e, ExtractError::ParamsOutOfOrder { low: "building.door_width_min_m", .. }));
     /// assert!(ExtractParams::default().validate().is_ok());
     /// ```
     pub fn validate(&self) -> Result<(), ExtractError> {
-        let fields = [
-            ("working_resolution_m", self.working_resolution_m),
-            ("noise_radius_m", self.noise_radius_m),
-            ("furniture_max_m", self.furniture_max_m),
-            ("unknown_pocket_max_m2", self.unknown_pocket_max_m2),
-            ("min_free_area_m2", self.min_free_area_m2),
-            ("core_radius_m", self.core_radius_m),
-            ("split_min_core_m2", self.split_min_core_m2),
-            ("door_width_max_m", self.door_width_max_m),
-            ("door_width_min_m", self.door_width_min_m),
-            ("door_constriction", self.door_constriction),
-            ("door_join_m", self.door_join_m),
-            ("wall_jamb_m", self.wall_jamb_m),
-            ("wall_gap_width_max_m", self.wall_gap_width_max_m),
-            ("wall_thickness_max_m", self.wall_thickness_max_m),
-            ("door_depth_m", self.door_depth_m),
-            ("passage_min_length_m", self.passage_min_length_m),
-            ("open_join_fraction", self.open_join_fraction),
-            ("min_room_area_m2", self.min_room_area_m2),
-            ("corridor_min_elongation", self.corridor_min_elongation),
-            ("simplify_m", self.simplify_m),
-            ("ccl_erode_m", self.ccl_erode_m),
-            ("ccl_open_m", self.ccl_open_m),
-            ("skeleton_erode_m", self.skeleton_erode_m),
-            ("skeleton_open_m", self.skeleton_open_m),
-        ];
+        let fields = self.numbers();
         if let Some((name, value)) = fields
             .iter()
             .copied()
@@ -270,18 +351,19 @@ impl ExtractParams {
         {
             return Err(ExtractError::NotAFraction { name, value });
         }
+        let (b, o) = (&self.building, &self.output);
         let ordered = [
             (
-                ("door_width_min_m", self.door_width_min_m),
-                ("door_width_max_m", self.door_width_max_m),
+                ("building.door_width_min_m", b.door_width_min_m),
+                ("building.door_width_max_m", b.door_width_max_m),
             ),
             (
-                ("door_width_min_m", self.door_width_min_m),
-                ("wall_gap_width_max_m", self.wall_gap_width_max_m),
+                ("building.door_width_min_m", b.door_width_min_m),
+                ("building.wall_gap_width_max_m", b.wall_gap_width_max_m),
             ),
             (
-                ("door_depth_m", self.door_depth_m),
-                ("wall_thickness_max_m", self.wall_thickness_max_m),
+                ("output.door_depth_m", o.door_depth_m),
+                ("building.wall_thickness_max_m", b.wall_thickness_max_m),
             ),
         ];
         match ordered.into_iter().find(|((_, lo), (_, hi))| lo > hi) {
@@ -305,63 +387,76 @@ mod tests {
             .map_or_else(|e| e.to_string(), |()| "ok".into())
     }
 
+    fn building(b: BuildingPriors) -> ExtractParams {
+        ExtractParams {
+            building: b,
+            ..ExtractParams::default()
+        }
+    }
+
     #[test]
     fn contradictions_and_fractions_are_refused_with_both_names() {
-        let d = ExtractParams::default;
-        assert_eq!(check(d()), "ok");
-        let m = check(ExtractParams {
+        let d = BuildingPriors::default;
+        assert_eq!(check(ExtractParams::default()), "ok");
+        let m = check(building(BuildingPriors {
             door_width_min_m: 2.5,
             ..d()
-        });
+        }));
         assert!(
-            m.contains("`door_width_min_m` = 2.5") && m.contains("`door_width_max_m` = 1.8"),
+            m.contains("`building.door_width_min_m` = 2.5")
+                && m.contains("`building.door_width_max_m` = 1.8"),
             "{m}"
         );
         // Doors up to 2.5 m, wall gaps only up to 2.1 m: gaps at least
         // 2.2 m wide could never be found.
-        let m = check(ExtractParams {
+        let m = check(building(BuildingPriors {
             door_width_min_m: 2.2,
             door_width_max_m: 2.5,
             ..d()
-        });
-        assert!(m.contains("`wall_gap_width_max_m` = 2.1"), "{m}");
+        }));
+        assert!(m.contains("`building.wall_gap_width_max_m` = 2.1"), "{m}");
         let m = check(ExtractParams {
-            door_depth_m: 1.5,
-            ..d()
+            output: OutputShape {
+                door_depth_m: 1.5,
+                ..OutputShape::default()
+            },
+            ..ExtractParams::default()
         });
-        assert!(m.contains("`wall_thickness_max_m` = 1.2"), "{m}");
+        assert!(m.contains("`building.wall_thickness_max_m` = 1.2"), "{m}");
+        let internals = |i: MethodInternals| ExtractParams {
+            internals: i,
+            ..ExtractParams::default()
+        };
         for (name, p) in [
             (
                 "door_constriction",
-                ExtractParams {
+                internals(MethodInternals {
                     door_constriction: 1.5,
-                    ..d()
-                },
+                    ..MethodInternals::default()
+                }),
             ),
             (
                 "open_join_fraction",
-                ExtractParams {
+                internals(MethodInternals {
                     open_join_fraction: 2.0,
-                    ..d()
-                },
+                    ..MethodInternals::default()
+                }),
             ),
         ] {
             let m = check(p);
             assert!(m.contains(name) && m.contains("fraction"), "{m}");
         }
         // Equal bounds and a fraction of exactly 1 are fine.
-        assert_eq!(
-            check(ExtractParams {
-                door_width_min_m: 1.8,
-                door_constriction: 1.0,
-                ..d()
-            }),
-            "ok"
-        );
-        let m = check(ExtractParams {
-            noise_radius_m: f64::NAN,
+        let mut p = building(BuildingPriors {
+            door_width_min_m: 1.8,
             ..d()
         });
-        assert!(m.contains("noise_radius_m"), "{m}");
+        p.internals.door_constriction = 1.0;
+        assert_eq!(check(p), "ok");
+        let m = check(building(BuildingPriors {
+            noise_radius_m: f64::NAN,
+            ..d()
+        }));
+        assert!(m.contains("building.noise_radius_m"), "{m}");
     }
 }

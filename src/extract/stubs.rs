@@ -10,6 +10,7 @@ use super::interior::neighbours;
 use crate::imaging::{Labels, Mask, dilate, label_runs};
 
 /// What makes a narrow passage, in pixels.
+#[derive(Debug, Clone, Copy)]
 pub(crate) struct StubLimits {
     /// A passage is what a disk of this radius, inside free space, cannot
     /// reach (half the widest door).

@@ -163,6 +163,88 @@ fn any_parameter_can_be_set_from_the_command_line() {
 }
 
 #[test]
+fn printed_parameters_read_back_as_the_flags_that_made_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let grid = floor_plan(0.1);
+    let pgm = [
+        format!("P5\n{} {}\n255\n", grid.width, grid.height).into_bytes(),
+        grid.grey.clone(),
+    ]
+    .concat();
+    std::fs::write(dir.path().join("m.pgm"), pgm).unwrap();
+    let run = |args: &[&str]| {
+        let out = crate::support::nrgdb(dir.path(), args);
+        assert!(
+            out.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        out.stdout
+    };
+    let sets = [
+        "--set",
+        "building.min_room_area_m2=16",
+        "--set",
+        "internals.door_join_m=0.4",
+        "--set",
+        "furniture_max_m=0.5",
+    ];
+    let printed = run(&[&["extract", "--print-params"][..], &sets].concat());
+    let text = String::from_utf8(printed).unwrap();
+    assert!(
+        text.contains("[building]") && text.contains("[internals]"),
+        "{text}"
+    );
+    assert!(text.contains("door_join_m = 0.4") && text.contains("min_room_area_m2 = 16"));
+    std::fs::write(dir.path().join("grouped.toml"), &text).unwrap();
+    // A file of bare keys, as parameter files were written before the groups.
+    std::fs::write(
+        dir.path().join("flat.toml"),
+        "min_room_area_m2 = 16\ndoor_join_m = 0.4\nfurniture_max_m = 0.5\n",
+    )
+    .unwrap();
+    let extract = |extra: &[&str], json: &str| {
+        let base = ["extract", "m.pgm", "--resolution", "0.1", "--json", json];
+        run(&[&base[..], extra].concat());
+        std::fs::read_to_string(dir.path().join(json)).unwrap()
+    };
+    let by_flags = extract(&sets, "flags.json");
+    assert_eq!(
+        extract(&["--params", "grouped.toml"], "grouped.json"),
+        by_flags
+    );
+    assert_eq!(extract(&["--params", "flat.toml"], "flat.json"), by_flags);
+    // The 15 m² rooms are now below the smallest room.
+    assert_ne!(
+        extract(&[], "default.json"),
+        by_flags,
+        "the parameters took effect"
+    );
+    // A key in the wrong table is refused by name, and nothing is written.
+    std::fs::write(
+        dir.path().join("bad.toml"),
+        "[building]\ndoor_join_m = 0.4\n",
+    )
+    .unwrap();
+    let bad = crate::support::nrgdb(
+        dir.path(),
+        &[
+            "extract",
+            "m.pgm",
+            "--resolution",
+            "0.1",
+            "--params",
+            "bad.toml",
+            "--json",
+            "bad.json",
+        ],
+    );
+    assert_eq!(bad.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("door_join_m"));
+    assert!(!dir.path().join("bad.json").exists());
+}
+
+#[test]
 fn json_and_label_png_outputs() {
     let x = extract(&floor_plan(0.1), &ExtractParams::default()).unwrap();
     let v: serde_json::Value = serde_json::from_str(&x.to_json()).unwrap();

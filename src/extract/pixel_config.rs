@@ -1,0 +1,224 @@
+//! [`PixelConfig`]: the parameters of one extraction in the pixels of the
+//! grid it runs on, converted once, with the method's fixed constants
+//! (kept in metres here, so no stage holds a length in pixels that would
+//! mean something else at another resolution).
+
+use super::doorway::SpanLimits;
+use super::joins::JoinLimits;
+use super::params::{DoorRule, ExtractParams, Method};
+use super::stubs::StubLimits;
+use super::wall_gaps::GapLimits;
+
+/// A border is a door under `DoorRule::Skeleton` if it passes this close
+/// (m) to a doorway point: the watershed border and the skeletons'
+/// crossing need not share a pixel. 2 px on the 0.05 m/px maps the rule
+/// was measured on.
+const SKELETON_NEAR_M: f64 = 0.1;
+
+/// How far (m) from a door border's centre, across it, its doorway's
+/// narrowest chord is sought.
+const SPAN_SEARCH_M: f64 = 0.25;
+
+/// The thickest wall (m) a door spans from face to face: an opening of
+/// even width that runs on further is a passage (a corridor piece), and
+/// its door stays thin. The IPA maps' drawn walls are up to 0.65 m with
+/// their anti-aliased edges; built walls are thinner.
+const SPAN_MAX_DEPTH_M: f64 = 0.7;
+
+/// How much (m) an opening may widen at either end and still be inside its
+/// wall (anti-aliased and ragged jambs).
+const SPAN_SLACK_M: f64 = 0.05;
+
+/// How much longer than the widest doorway (`wall_gap_width_max_m` or
+/// `door_width_max_m`) a doorway's chord may be: a chord across a
+/// doorway is measured a little slanted, from one ragged jamb to the other.
+const SPAN_WIDTH_SLACK: f64 = 1.15;
+
+/// Unlabelled specks smaller than this (m²) inside one space join it.
+const SPECK_MAX_M2: f64 = 0.25;
+
+/// Unknown pockets no thicker than this (m) bordered mostly by obstacles
+/// are the insides of walls, not of furniture: they stay out of spaces.
+const WALL_INSIDE_MAX_M: f64 = 0.3;
+
+/// How regions are first found, in pixels.
+#[derive(Debug, Clone, Copy)]
+pub(crate) enum Segmentation {
+    /// Distance markers and a watershed.
+    Watershed {
+        /// `core_radius_m`.
+        core: f64,
+        /// `split_min_core_m2`, px².
+        split_min_core: usize,
+    },
+    /// The paper's Experiment I.
+    Ccl {
+        /// `ccl_erode_m`.
+        erode: f64,
+        /// `ccl_open_m`.
+        open: f64,
+    },
+}
+
+/// The paper's skeleton door rule (`door_rule = "skeleton"`), in pixels.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct SkeletonLimits {
+    /// `skeleton_erode_m`.
+    pub erode: f64,
+    /// `skeleton_open_m`.
+    pub open: f64,
+    /// How near a doorway point a door's border passes.
+    pub near: f64,
+}
+
+/// Every length of one extraction in pixels (areas in pixels²), for a grid
+/// of `resolution` m/px.
+#[derive(Debug, Clone)]
+pub(crate) struct PixelConfig {
+    /// `noise_radius_m`: the noise opening's radius.
+    pub noise_radius: f64,
+    /// `min_free_area_m2`: smaller free components are dropped.
+    pub min_free_area: usize,
+    /// `furniture_max_m`: the largest furniture island's extent.
+    pub furniture_max: f64,
+    /// `wall_gap_width_max_m`: how far a wall piece between two doorways
+    /// may stand from the walls in line with it.
+    pub wall_piece_gap: f64,
+    /// Doorway gaps in walls; none with the CCL method or `wall_jamb_m` 0.
+    pub gaps: Option<GapLimits>,
+    /// The skeleton door rule, when chosen (watershed only).
+    pub skeleton: Option<SkeletonLimits>,
+    /// How regions are found.
+    pub segmentation: Segmentation,
+    /// `min_room_area_m2`: smaller regions merge into a neighbour.
+    pub min_room_area: usize,
+    /// Narrow passages split off as spaces; none when
+    /// `passage_min_length_m` is 0.
+    pub passages: Option<StubLimits>,
+    /// `door_join_m`: border stretches this close are one border.
+    pub border_join: i64,
+    /// Door widths, the constriction and the open-join fraction.
+    pub doors: JoinLimits,
+    /// How far a door found mid-passage may move to the passage's mouth
+    /// (twice the widest door).
+    pub passage_window: usize,
+    /// A door's span across its doorway.
+    pub span: SpanLimits,
+    /// `unknown_pocket_max_m2`: unknown pockets this small join their space.
+    pub unknown_pocket_max: usize,
+    /// Unknown pockets this thin and walled are the insides of walls.
+    pub wall_inside_max: usize,
+    /// Unlabelled specks this small join their space.
+    pub speck_max: usize,
+    /// `corridor_min_elongation` (a ratio).
+    pub corridor_min_elongation: f64,
+    /// Regions meeting wider than this are openly connected
+    /// (`door_width_max_m`).
+    pub open_min: usize,
+    /// `simplify_m`, in metres: the polygons are simplified in the map's frame.
+    pub simplify_m: f64,
+}
+
+impl PixelConfig {
+    /// `params` for a grid of `resolution` m/px.
+    pub(crate) fn new(params: &ExtractParams, resolution: f64) -> PixelConfig {
+        let (b, o, i) = (&params.building, &params.output, &params.internals);
+        let px = |m: f64| m / resolution;
+        let area = |m2: f64| (m2 / (resolution * resolution)).ceil() as usize;
+        let whole = |m: f64| px(m).round() as usize;
+        let watershed = params.method == Method::Watershed;
+        PixelConfig {
+            noise_radius: px(b.noise_radius_m),
+            min_free_area: area(i.min_free_area_m2),
+            furniture_max: px(b.furniture_max_m),
+            wall_piece_gap: px(b.wall_gap_width_max_m),
+            gaps: (watershed && b.wall_jamb_m > 0.0).then(|| GapLimits {
+                width: (whole(b.door_width_min_m), whole(b.wall_gap_width_max_m)),
+                jamb: whole(b.wall_jamb_m).max(1),
+                depth: whole(b.wall_thickness_max_m).max(1),
+            }),
+            skeleton: (watershed && params.door_rule == DoorRule::Skeleton).then(|| {
+                SkeletonLimits {
+                    erode: px(i.skeleton_erode_m),
+                    open: px(i.skeleton_open_m),
+                    near: px(SKELETON_NEAR_M),
+                }
+            }),
+            segmentation: if watershed {
+                Segmentation::Watershed {
+                    core: px(i.core_radius_m),
+                    split_min_core: area(i.split_min_core_m2),
+                }
+            } else {
+                Segmentation::Ccl {
+                    erode: px(i.ccl_erode_m),
+                    open: px(i.ccl_open_m),
+                }
+            },
+            min_room_area: area(b.min_room_area_m2),
+            passages: (b.passage_min_length_m > 0.0).then(|| StubLimits {
+                radius_px: (px(b.door_width_max_m) / 2.0) as f32,
+                width_min_px: px(b.door_width_min_m) as f32,
+                length_min_px: px(b.passage_min_length_m) as f32,
+                constriction: i.door_constriction,
+            }),
+            border_join: px(i.door_join_m).round() as i64,
+            doors: JoinLimits {
+                door_min_px: px(b.door_width_min_m),
+                door_max_px: px(b.door_width_max_m),
+                constriction: i.door_constriction,
+                fraction: i.open_join_fraction,
+            },
+            passage_window: (2.0 * px(b.door_width_max_m)).ceil() as usize,
+            span: SpanLimits {
+                max_width: SPAN_WIDTH_SLACK * b.door_width_max_m.max(b.wall_gap_width_max_m)
+                    / resolution,
+                search: px(SPAN_SEARCH_M).max(2.0),
+                min_depth: px(o.door_depth_m).max(1.0),
+                max_depth: px(b.wall_thickness_max_m.min(SPAN_MAX_DEPTH_M)).max(1.0),
+                slack: px(SPAN_SLACK_M).max(1.5),
+            },
+            unknown_pocket_max: (b.unknown_pocket_max_m2 / (resolution * resolution)).floor()
+                as usize,
+            wall_inside_max: px(WALL_INSIDE_MAX_M).ceil() as usize,
+            speck_max: (SPECK_MAX_M2 / (resolution * resolution)).floor() as usize,
+            corridor_min_elongation: i.corridor_min_elongation,
+            open_min: px(b.door_width_max_m).ceil() as usize,
+            simplify_m: o.simplify_m,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_set_of_metres_gives_pixels_in_proportion_to_the_resolution() {
+        let p = ExtractParams::default();
+        let (fine, coarse) = (PixelConfig::new(&p, 0.05), PixelConfig::new(&p, 0.1));
+        assert_eq!(fine.doors.door_max_px, 36.0);
+        assert_eq!(coarse.doors.door_max_px, 18.0);
+        assert_eq!((fine.min_room_area, coarse.min_room_area), (400, 100));
+        assert_eq!(fine.passage_window, 72);
+        let gaps = fine.gaps.unwrap();
+        assert_eq!((gaps.width, gaps.jamb, gaps.depth), ((8, 42), 6, 24));
+        assert!((fine.span.max_width - 1.15 * 42.0).abs() < 1e-9);
+        assert_eq!(fine.skeleton.map(|s| s.near), None, "constriction rule");
+        let skeleton = ExtractParams {
+            door_rule: DoorRule::Skeleton,
+            ..ExtractParams::default()
+        };
+        let near = |res| PixelConfig::new(&skeleton, res).skeleton.unwrap().near;
+        assert!((near(0.05) - 2.0).abs() < 1e-9 && (near(0.1) - 1.0).abs() < 1e-9);
+        // The CCL method finds no wall gaps; 0 turns the passages off.
+        let mut ccl = ExtractParams {
+            method: Method::Ccl,
+            ..ExtractParams::default()
+        };
+        ccl.building.passage_min_length_m = 0.0;
+        let c = PixelConfig::new(&ccl, 0.05);
+        assert!(c.gaps.is_none() && c.passages.is_none());
+        assert!(matches!(c.segmentation, Segmentation::Ccl { open, .. } if open == 10.0));
+    }
+}
