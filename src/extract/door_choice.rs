@@ -75,8 +75,7 @@ fn select_doors(
     }
     let gaps = cues.gaps;
     let (door_min_px, door_px) = (limits.door_min_px, limits.door_max_px);
-    let constriction =
-        |b: &Border| limits.constriction * compared_width(b.pair, widest, is_passage);
+    let constriction = |b: &Border| limits.constriction * compared_width(b, widest, is_passage);
     let gap_at: HashMap<u32, usize> = gaps
         .iter()
         .enumerate()

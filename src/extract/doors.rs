@@ -15,6 +15,10 @@ pub(crate) struct Border {
     pub width_px: f64,
     /// Pixels on either side of the border.
     pub pixels: Vec<u32>,
+    /// The widest inscribed diameter (px) of `pair.0` and of `pair.1`
+    /// near the border (see `regions::measure_near`): how wide the spaces
+    /// are where they meet. Infinite until measured.
+    pub near_px: (f64, f64),
 }
 
 /// A 4-neighbour pair across a border: (pixel on one side, pixel on the
@@ -64,6 +68,7 @@ pub(crate) fn borders(labels: &Labels, dist: &[f32], join_px: i64) -> Vec<Border
                     .iter()
                     .flat_map(|&k| [list[k].0, list[k].1])
                     .collect(),
+                near_px: (f64::INFINITY, f64::INFINITY),
             });
         }
     }

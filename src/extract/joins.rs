@@ -5,7 +5,7 @@
 use std::collections::HashSet;
 
 use super::doors::Border;
-use super::stubs::compared_width;
+use super::stubs::{compared_width, compared_width_anywhere};
 
 /// What makes a border a possible door or an open join, in pixels.
 #[derive(Debug, Clone, Copy)]
@@ -15,7 +15,8 @@ pub(crate) struct JoinLimits {
     /// Widest border that can be a doorway (`door_width_max_m`).
     pub door_max_px: f64,
     /// `door_constriction`: a door-wide border wider than this fraction of
-    /// the narrower region's widest diameter is no doorway.
+    /// the narrower region's widest diameter near it (`Border::near_px`)
+    /// is no doorway.
     pub constriction: f64,
     /// `open_join_fraction`: a border wider than any door at least this
     /// fraction of the narrower region's widest diameter joins; 0 = never
@@ -26,7 +27,8 @@ pub(crate) struct JoinLimits {
 /// The region pairs of `all` to merge: pairs with a border that crosses no
 /// doorway-gap pixel (`gap_px`) and is either wider than any door and at
 /// least `fraction` of the narrower region's widest inscribed diameter
-/// (`widest`, px), or door-wide but no constriction of the narrower region.
+/// (`widest`, px), or door-wide but no constriction of the narrower region
+/// where they meet (see `stubs::compared_width`).
 pub(crate) fn open_joins(
     all: &[Border],
     widest: &[f64],
@@ -40,12 +42,12 @@ pub(crate) fn open_joins(
     let mut pairs: Vec<(u32, u32)> = all
         .iter()
         .filter(|b| {
-            let narrow = compared_width(b.pair, widest, is_passage);
             let w = b.width_px;
-            let wide_open = w > limits.door_max_px && w >= limits.fraction * narrow;
+            let wide_open = w > limits.door_max_px
+                && w >= limits.fraction * compared_width_anywhere(b.pair, widest, is_passage);
             let no_constriction = w >= limits.door_min_px
                 && w <= limits.door_max_px
-                && w > limits.constriction * narrow;
+                && w > limits.constriction * compared_width(b, widest, is_passage);
             (wide_open || no_constriction) && !b.pixels.iter().any(|p| gap_px.contains(p))
         })
         .map(|b| b.pair)
@@ -63,6 +65,7 @@ mod tests {
             pair,
             width_px,
             pixels,
+            near_px: (f64::INFINITY, f64::INFINITY),
         }
     }
 

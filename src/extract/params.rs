@@ -181,9 +181,12 @@ pub struct MethodInternals {
     /// wider than `2 core_radius_m`). Default 1.0 m².
     pub split_min_core_m2: f64,
     /// A border is a door only where it is a constriction: at most this
-    /// fraction of the widest passage of the narrower space on either side
-    /// (so a corridor's own width, between two parts of it, is no door).
-    /// 1 = any border under `door_width_max_m`. Default 0.7.
+    /// fraction of the widest passage of the narrower space on either side,
+    /// near the border (within 2.5 widest doors: a corridor that opens
+    /// into a hall further on is as wide as it is where the border is), so
+    /// a corridor's own width, between two parts of it, is no door, and
+    /// such a border joins the two. 1 = any border under
+    /// `door_width_max_m`. Default 0.7.
     pub door_constriction: f64,
     /// Stretches of border between the same two spaces closer than this are
     /// one doorway (a speck of noise does not make two doors); farther apart

@@ -34,6 +34,15 @@ const SPAN_SLACK_M: f64 = 0.05;
 /// doorway is measured a little slanted, from one ragged jamb to the other.
 const SPAN_WIDTH_SLACK: f64 = 1.15;
 
+/// A border is judged by how wide its two regions are near it: within
+/// this many widest doors (`door_width_max_m`) of it (see
+/// `regions::measure_near`). On the 19 development buildings 2.5 and 3
+/// give the same result (door precision up on NLB, intel_carmen and umic,
+/// nothing lower anywhere); 4 is as good as not looking near; 2 and 1.5
+/// cut more corridors' false doors on the ROSE² maps but lose lab_ipa a
+/// door whose room is widest farther off.
+const NEAR_REACH_DOORS: f64 = 2.5;
+
 /// Unlabelled specks smaller than this (m²) inside one space join it.
 const SPECK_MAX_M2: f64 = 0.25;
 
@@ -99,6 +108,8 @@ pub(crate) struct PixelConfig {
     pub border_join: i64,
     /// Door widths, the constriction and the open-join fraction.
     pub doors: JoinLimits,
+    /// How far from a border its regions' widths are measured.
+    pub near_reach: f64,
     /// How far a door found mid-passage may move to the passage's mouth
     /// (twice the widest door).
     pub passage_window: usize,
@@ -169,6 +180,7 @@ impl PixelConfig {
                 constriction: i.door_constriction,
                 fraction: i.open_join_fraction,
             },
+            near_reach: NEAR_REACH_DOORS * px(b.door_width_max_m),
             passage_window: (2.0 * px(b.door_width_max_m)).ceil() as usize,
             span: SpanLimits {
                 max_width: SPAN_WIDTH_SLACK * b.door_width_max_m.max(b.wall_gap_width_max_m)

@@ -6,6 +6,7 @@
 
 use std::collections::VecDeque;
 
+use super::doors::Border;
 use super::interior::neighbours;
 use crate::imaging::{Labels, Mask, dilate, label_runs};
 
@@ -169,16 +170,37 @@ pub(crate) fn passage_labels(labels: &Labels, in_passage: &[bool]) -> Vec<bool> 
         .collect()
 }
 
-/// The widest inscribed diameter (`widest`, px) a border between `pair` is
-/// measured against: the narrower region's, but where one side is a
-/// passage (`is_passage`), the other side's: a passage's mouth is judged by
-/// the space it opens into.
-pub(crate) fn compared_width(pair: (u32, u32), widest: &[f64], is_passage: &[bool]) -> f64 {
-    let (a, c) = (pair.0 as usize, pair.1 as usize);
-    match (is_passage[a], is_passage[c]) {
-        (true, false) => widest[c],
-        (false, true) => widest[a],
-        _ => widest[a].min(widest[c]),
+/// The width (px) a border is measured against: the narrower region's
+/// widest inscribed diameter near the border (`Border::near_px`, where
+/// measured; else anywhere in the region, `widest`), but where one side is
+/// a passage (`is_passage`), the other side's: a passage's mouth is judged
+/// by the space it opens into.
+pub(crate) fn compared_width(b: &Border, widest: &[f64], is_passage: &[bool]) -> f64 {
+    let (a, c) = (b.pair.0 as usize, b.pair.1 as usize);
+    let near = (widest[a].min(b.near_px.0), widest[c].min(b.near_px.1));
+    pick_side(b.pair, near, is_passage)
+}
+
+/// [`compared_width`] with each region's widest diameter anywhere in it.
+pub(crate) fn compared_width_anywhere(
+    pair: (u32, u32),
+    widest: &[f64],
+    is_passage: &[bool],
+) -> f64 {
+    pick_side(
+        pair,
+        (widest[pair.0 as usize], widest[pair.1 as usize]),
+        is_passage,
+    )
+}
+
+/// Of the widths of `pair`'s two regions, the one a border between them is
+/// measured against: the narrower, or the non-passage side's.
+fn pick_side(pair: (u32, u32), widths: (f64, f64), is_passage: &[bool]) -> f64 {
+    match (is_passage[pair.0 as usize], is_passage[pair.1 as usize]) {
+        (true, false) => widths.1,
+        (false, true) => widths.0,
+        _ => widths.0.min(widths.1),
     }
 }
 
@@ -309,14 +331,33 @@ mod tests {
     #[test]
     fn a_passage_mouth_is_measured_against_the_space_it_opens_into() {
         let widest = [0.0, 10.0, 40.0, 30.0];
-        assert_eq!(compared_width((1, 2), &widest, &[false; 4]), 10.0);
+        let border = |pair, near_px| Border {
+            pair,
+            width_px: 5.0,
+            pixels: Vec::new(),
+            near_px,
+        };
+        let far = (f64::INFINITY, f64::INFINITY);
         assert_eq!(
-            compared_width((1, 2), &widest, &[false, true, false, false]),
+            compared_width(&border((1, 2), far), &widest, &[false; 4]),
+            10.0
+        );
+        assert_eq!(
+            compared_width(&border((1, 2), far), &widest, &[false, true, false, false]),
             40.0
         );
         assert_eq!(
-            compared_width((2, 3), &widest, &[false, false, true, true]),
+            compared_width(&border((2, 3), far), &widest, &[false, false, true, true]),
             30.0
+        );
+        // Near the border the hall is only 25 px wide: that counts.
+        assert_eq!(
+            compared_width(
+                &border((1, 2), (12.0, 25.0)),
+                &widest,
+                &[false, true, false, false]
+            ),
+            25.0
         );
     }
 }
