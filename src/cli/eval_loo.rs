@@ -7,13 +7,13 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use miette::IntoDiagnostic;
+use miette::{IntoDiagnostic, WrapErr};
 use nrgdb::eval::{building_of, evaluate, leave_one_out, load_ground_truth, score, tuned_on_all};
 use nrgdb::extract::extract;
 use serde::Serialize;
 
 use super::eval::{gt_name, sibling_gt};
-use super::extract::{MapArgs, apply_sets};
+use super::extract::MapArgs;
 use super::progress;
 
 /// Most values one run compares (each is one extraction per map).
@@ -99,7 +99,13 @@ pub fn run(
         let truth = load_ground_truth(gt, &grid).into_diagnostic()?;
         let mut scores = Vec::with_capacity(values.len());
         for value in &values {
-            let params = apply_sets(base.clone(), &[format!("{key}={value}")])?;
+            // Not checked here: a value out of order with the others makes
+            // extraction fail, and that value scores 0 with a note.
+            let mut params = base.clone();
+            params
+                .set(&key, value)
+                .into_diagnostic()
+                .wrap_err_with(|| format!("--loo {key}={value}"))?;
             scores.push(match extract(&grid, &params) {
                 Ok(x) => score(&evaluate(&truth, &x, grid.resolution)),
                 Err(e) => {

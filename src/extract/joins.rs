@@ -5,7 +5,7 @@
 use std::collections::HashSet;
 
 use super::doors::Border;
-use super::stubs::{compared_width, compared_width_anywhere};
+use super::stubs::compared_width;
 
 /// What makes a border a possible door or an open join, in pixels.
 #[derive(Debug, Clone, Copy)]
@@ -19,16 +19,17 @@ pub(crate) struct JoinLimits {
     /// is no doorway.
     pub constriction: f64,
     /// `open_join_fraction`: a border wider than any door at least this
-    /// fraction of the narrower region's widest diameter joins; 0 = never
-    /// join.
+    /// fraction of the narrower region's widest diameter near it joins;
+    /// 0 = never join.
     pub fraction: f64,
 }
 
 /// The region pairs of `all` to merge: pairs with a border that crosses no
 /// doorway-gap pixel (`gap_px`) and is either wider than any door and at
-/// least `fraction` of the narrower region's widest inscribed diameter
-/// (`widest`, px), or door-wide but no constriction of the narrower region
-/// where they meet (see `stubs::compared_width`).
+/// least `fraction` of the narrower region's widest inscribed diameter,
+/// or door-wide but no constriction of the narrower region; both widths
+/// taken where the regions meet (`widest`, px, within `Border::near_px`;
+/// see `stubs::compared_width`).
 pub(crate) fn open_joins(
     all: &[Border],
     widest: &[f64],
@@ -44,7 +45,7 @@ pub(crate) fn open_joins(
         .filter(|b| {
             let w = b.width_px;
             let wide_open = w > limits.door_max_px
-                && w >= limits.fraction * compared_width_anywhere(b.pair, widest, is_passage);
+                && w >= limits.fraction * compared_width(b, widest, is_passage);
             let no_constriction = w >= limits.door_min_px
                 && w <= limits.door_max_px
                 && w > limits.constriction * compared_width(b, widest, is_passage);

@@ -195,7 +195,8 @@ pub struct MethodInternals {
     /// Two regions of the watershed that meet across a border no doorway
     /// divides are one space: a border wider than `door_width_max_m` at
     /// least this fraction of the narrower region's widest inscribed
-    /// diameter, or a narrower border that is no constriction (see
+    /// diameter near the border (as for `door_constriction`), or a
+    /// narrower border that is no constriction (see
     /// `door_constriction`), and no doorway gap. Such borders are where the
     /// floods of a corridor loop or an open hall met. 0 turns this off.
     /// Default 0.5: room recall on the IPA maps 96.90 % kept apart, 97.67 %

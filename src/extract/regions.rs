@@ -91,13 +91,7 @@ impl Regions {
     /// Every border between two regions, with its regions' widths near it.
     fn measured_borders(&self, px: &PixelConfig) -> Vec<Border> {
         let mut all = borders(&self.labels, &self.dist, px.border_join);
-        measure_near(
-            &mut all,
-            &self.labels,
-            &self.dist,
-            px.near_reach,
-            px.doors.door_max_px,
-        );
+        measure_near(&mut all, &self.labels, &self.dist, px.near_reach);
         all
     }
 
@@ -110,26 +104,20 @@ impl Regions {
     }
 }
 
-/// Sets the `near_px` of each border at most `widest_door` wide: the widest inscribed diameter (twice the
+/// Sets each border's `near_px`: the widest inscribed diameter (twice the
 /// largest `dist`) of each of its two regions within a disk around the
-/// border, `reach` px wider than the border's own extent from its centre.
+/// border, `reach` px wider than the border's own extent from its centre
+/// (that extent counted up to `reach`).
 /// A region's width far from the border (a corridor that opens into a
 /// hall further on, a room's far end) says nothing of whether the border
 /// narrows it; a disk, not a box, so a turned map measures alike.
-pub(crate) fn measure_near(
-    all: &mut [Border],
-    labels: &Labels,
-    dist: &[f32],
-    reach: f64,
-    widest_door: f64,
-) {
+pub(crate) fn measure_near(all: &mut [Border], labels: &Labels, dist: &[f32], reach: f64) {
     let (w, h) = (labels.width as usize, labels.height as usize);
     if w == 0 || h == 0 {
         return;
     }
     let at = |p: u32| ((p as usize % w) as f64, (p as usize / w) as f64);
-    // Only a door-wide border is judged by its constriction.
-    for b in all.iter_mut().filter(|b| b.width_px <= widest_door) {
+    for b in all.iter_mut() {
         if b.pixels.is_empty() {
             continue;
         }
@@ -148,7 +136,9 @@ pub(crate) fn measure_near(
                 (x - cx).hypot(y - cy)
             })
             .fold(0.0f64, f64::max);
-        let r = extent + reach;
+        // A long border is looked at around its middle: the scan stays
+        // within 2 × reach of it, however long the border.
+        let r = extent.min(reach) + reach;
         let (x0, y0) = (
             (cx - r).floor().max(0.0) as usize,
             (cy - r).floor().max(0.0) as usize,
@@ -236,11 +226,11 @@ mod tests {
         };
         let mut all = borders(&labels, &dist, 2);
         assert_eq!(all.len(), 1);
-        measure_near(&mut all, &labels, &dist, 5.0, 20.0);
+        measure_near(&mut all, &labels, &dist, 5.0);
         // The border's extent from its centre is 4 px (the 9 rows), so the
         // disk reaches 9 px into each region: region 2 up to column 28.
         assert_eq!(all[0].near_px, (6.0, 2.0));
-        measure_near(&mut all, &labels, &dist, 40.0, 20.0);
+        measure_near(&mut all, &labels, &dist, 40.0);
         assert_eq!(all[0].near_px, (6.0, 12.0), "far enough to see the hall");
         let widest = widest_passages(&labels, &dist);
         assert_eq!((widest[1], widest[2]), (6.0, 12.0));

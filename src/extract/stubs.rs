@@ -177,27 +177,8 @@ pub(crate) fn passage_labels(labels: &Labels, in_passage: &[bool]) -> Vec<bool> 
 /// by the space it opens into.
 pub(crate) fn compared_width(b: &Border, widest: &[f64], is_passage: &[bool]) -> f64 {
     let (a, c) = (b.pair.0 as usize, b.pair.1 as usize);
-    let near = (widest[a].min(b.near_px.0), widest[c].min(b.near_px.1));
-    pick_side(b.pair, near, is_passage)
-}
-
-/// [`compared_width`] with each region's widest diameter anywhere in it.
-pub(crate) fn compared_width_anywhere(
-    pair: (u32, u32),
-    widest: &[f64],
-    is_passage: &[bool],
-) -> f64 {
-    pick_side(
-        pair,
-        (widest[pair.0 as usize], widest[pair.1 as usize]),
-        is_passage,
-    )
-}
-
-/// Of the widths of `pair`'s two regions, the one a border between them is
-/// measured against: the narrower, or the non-passage side's.
-fn pick_side(pair: (u32, u32), widths: (f64, f64), is_passage: &[bool]) -> f64 {
-    match (is_passage[pair.0 as usize], is_passage[pair.1 as usize]) {
+    let widths = (widest[a].min(b.near_px.0), widest[c].min(b.near_px.1));
+    match (is_passage[a], is_passage[c]) {
         (true, false) => widths.1,
         (false, true) => widths.0,
         _ => widths.0.min(widths.1),

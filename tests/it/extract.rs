@@ -128,8 +128,8 @@ fn a_coarser_working_resolution_finds_the_same_plan() {
     assert_eq!((x.labels.width, x.labels.height), (240, 160));
 }
 
-#[test]
-fn any_parameter_can_be_set_from_the_command_line() {
+/// A folder holding the 0.1 m/px floor plan as `m.pgm`.
+fn floor_plan_pgm() -> tempfile::TempDir {
     let dir = tempfile::tempdir().unwrap();
     let grid = floor_plan(0.1);
     let pgm = [
@@ -138,6 +138,12 @@ fn any_parameter_can_be_set_from_the_command_line() {
     ]
     .concat();
     std::fs::write(dir.path().join("m.pgm"), pgm).unwrap();
+    dir
+}
+
+#[test]
+fn any_parameter_can_be_set_from_the_command_line() {
+    let dir = floor_plan_pgm();
     let run = |extra: &[&str]| {
         let mut args = vec!["extract", "m.pgm", "--resolution", "0.1"];
         args.extend_from_slice(extra);
@@ -160,18 +166,30 @@ fn any_parameter_can_be_set_from_the_command_line() {
     assert_eq!(wrong.status.code(), Some(2));
     let negative = run(&["--set", "core_radius_m=-1"]);
     assert_eq!(negative.status.code(), Some(2));
+    // A file and flags are checked together: the file's least door width
+    // alone is above the greatest, the flags put them in order.
+    std::fs::write(dir.path().join("wide.toml"), "door_width_min_m = 2.0\n").unwrap();
+    let alone = run(&["--params", "wide.toml"]);
+    assert_eq!(alone.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&alone.stderr).contains("building.door_width_max_m"));
+    let ordered = run(&[
+        "--params",
+        "wide.toml",
+        "--set",
+        "door_width_max_m=2.5",
+        "--set",
+        "wall_gap_width_max_m=2.6",
+    ]);
+    assert!(
+        ordered.status.success(),
+        "{}",
+        String::from_utf8_lossy(&ordered.stderr)
+    );
 }
 
 #[test]
 fn printed_parameters_read_back_as_the_flags_that_made_them() {
-    let dir = tempfile::tempdir().unwrap();
-    let grid = floor_plan(0.1);
-    let pgm = [
-        format!("P5\n{} {}\n255\n", grid.width, grid.height).into_bytes(),
-        grid.grey.clone(),
-    ]
-    .concat();
-    std::fs::write(dir.path().join("m.pgm"), pgm).unwrap();
+    let dir = floor_plan_pgm();
     let run = |args: &[&str]| {
         let out = crate::support::nrgdb(dir.path(), args);
         assert!(
