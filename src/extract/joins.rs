@@ -43,12 +43,12 @@ pub(crate) fn open_joins(
     let mut pairs: Vec<(u32, u32)> = all
         .iter()
         .filter(|b| {
+            let narrow = compared_width(b, widest, is_passage);
             let w = b.width_px;
-            let wide_open = w > limits.door_max_px
-                && w >= limits.fraction * compared_width(b, widest, is_passage);
+            let wide_open = w > limits.door_max_px && w >= limits.fraction * narrow;
             let no_constriction = w >= limits.door_min_px
                 && w <= limits.door_max_px
-                && w > limits.constriction * compared_width(b, widest, is_passage);
+                && w > limits.constriction * narrow;
             (wide_open || no_constriction) && !b.pixels.iter().any(|p| gap_px.contains(p))
         })
         .map(|b| b.pair)

@@ -18,7 +18,7 @@ use super::graph::topology;
 use super::interior::{claim_enclosed_unknown, fill_specks};
 use super::merge::merge_small;
 use super::pixel_config::{PixelConfig, Segmentation};
-use super::regions::{Regions, region_shapes};
+use super::regions::Regions;
 use super::resample::{coarsen, pixel_centroids, refine};
 use super::segment::segment_basins;
 use super::skeleton_doors::skeleton_doorways;
@@ -132,19 +132,18 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     let doors: Vec<&Border> = chosen.iter().map(|&k| &regions.borders[k]).collect();
     let door_pairs: Vec<(u32, u32)> = doors.iter().map(|b| b.pair).collect();
     let n_regions = regions.labels.count;
-    let (labels, door_lines) = span_doors(grid, &regions, &doors, &px);
+    let (mut labels, door_lines) = span_doors(grid, &regions, &doors, &px);
     clock.lap("doors");
     // One simple polygon per space: before the graph, so that it and the
     // polygons see the same labels.
-    let mut labels = labels;
     tidy_labels(&mut labels);
     clock.lap("tidy");
     // A corridor by its outline: the clutter standing in a space is filled
     // before its width is taken (see `filled`).
-    let shape: Vec<(usize, f64)> = region_shapes(&labels, &regions.dist)
+    let shape: Vec<(usize, f64)> = labels
+        .areas()
         .into_iter()
         .zip(filled_diameters(&labels, n_regions))
-        .map(|((area, _), diameter)| (area, diameter))
         .collect();
     let topo = topology(
         &labels,

@@ -111,7 +111,7 @@ impl Regions {
 /// A region's width far from the border (a corridor that opens into a
 /// hall further on, a room's far end) says nothing of whether the border
 /// narrows it; a disk, not a box, so a turned map measures alike.
-pub(crate) fn measure_near(all: &mut [Border], labels: &Labels, dist: &[f32], reach: f64) {
+fn measure_near(all: &mut [Border], labels: &Labels, dist: &[f32], reach: f64) {
     let (w, h) = (labels.width as usize, labels.height as usize);
     if w == 0 || h == 0 {
         return;
@@ -170,29 +170,18 @@ pub(crate) fn measure_near(all: &mut [Border], labels: &Labels, dist: &[f32], re
 
 /// The widest inscribed diameter (px) of every label.
 fn widest_passages(labels: &Labels, dist: &[f32]) -> Vec<f64> {
-    region_shapes(labels, dist)
-        .into_iter()
-        .map(|s| s.1)
-        .collect()
-}
-
-/// (area in px, widest inscribed diameter in px) of every label.
-pub(crate) fn region_shapes(labels: &Labels, dist: &[f32]) -> Vec<(usize, f64)> {
-    let mut s = vec![(0usize, 0.0f32); labels.count as usize + 1];
+    let mut widest = vec![0.0f32; labels.count as usize + 1];
     // A run of one label updates it once (no store-to-load chain per pixel).
     let mut i = 0;
     while i < labels.data.len() {
         let l = labels.data[i];
         let run = labels.data[i..].iter().position(|&m| m != l);
         let end = run.map_or(labels.data.len(), |r| i + r);
-        let e = &mut s[l as usize];
-        e.0 += end - i;
-        e.1 = e.1.max(max_distance(&dist[i..end]));
+        let e = &mut widest[l as usize];
+        *e = e.max(max_distance(&dist[i..end]));
         i = end;
     }
-    s.into_iter()
-        .map(|(a, d)| (a, 2.0 * f64::from(d)))
-        .collect()
+    widest.into_iter().map(|d| 2.0 * f64::from(d)).collect()
 }
 
 #[cfg(test)]
