@@ -4,6 +4,7 @@
 use std::collections::{BTreeMap, HashSet, VecDeque};
 
 use super::doorway::{DoorSpan, SpanLimits, border_line, door_span};
+use super::wandering_doors::cut_along;
 use crate::imaging::Labels;
 
 /// One border between two regions.
@@ -130,7 +131,9 @@ fn stretches(list: &[Crossing], w: usize, join_px: i64) -> Vec<Vec<usize>> {
 /// from one face of the wall to the other (its [`DoorSpan`]): the pixels
 /// of its two regions there; the regions then settle on either side of it
 /// ([`settle_sides`]). Where there is no opening narrower than
-/// `limits.max_width` through the border's centre (open space), the door
+/// `limits.max_width` through the border's centre, the doorway is sought
+/// along the whole border ([`cut_along`]); where none there parts the two
+/// regions either (open space), the door
 /// is the band within `limits.min_depth / 2` of the border and its line
 /// the diameter of the widest circle on the border ([`border_line`];
 /// `dist` is each pixel's distance to the nearest obstacle).
@@ -155,10 +158,19 @@ pub(crate) fn cut_doors(
             }
             None => {
                 banded.push((k, door));
-                lines.push(border_line(labels, door.pair, &door.pixels, dist));
+                lines.push(None);
             }
         }
     }
+    // Borders that cross no opening at their middle: the doorway may lie
+    // elsewhere along them; else a band across the border.
+    banded.retain(|&(k, door)| {
+        let label = labels.count + 1 + k as u32;
+        let line = cut_along(labels, walls, &mut out, door, label, limits);
+        let kept = line.is_none();
+        lines[k] = line.or_else(|| border_line(labels, door.pair, &door.pixels, dist));
+        kept
+    });
     cut_bands(labels, &mut out, &banded, limits.min_depth);
     // Only once every door has its pixels: the regions settle around them.
     for (label, door, span) in &spanned {

@@ -128,8 +128,21 @@ pub(crate) fn door_span(
     pixels: &[u32],
     limits: &SpanLimits,
 ) -> Option<DoorSpan> {
+    let pixel = classifier(labels, walls);
+    let (centre, normal) = border_frame(labels, pair, pixels)?;
+    let throat = throat(&pixel, centre, normal, limits)?;
+    Some(span(&pixel, &throat, limits))
+}
+
+/// What each pixel is to a chord: free where `labels` is non-zero, a wall
+/// where `walls` says so (every pixel outside `labels` with `None`) and
+/// beyond the image, noise otherwise (see [`door_span`]).
+pub(super) fn classifier<'a>(
+    labels: &'a Labels,
+    walls: Option<&'a [bool]>,
+) -> impl Fn(i64, i64) -> Pixel + 'a {
     let (w, h) = (i64::from(labels.width), i64::from(labels.height));
-    let pixel = |x: i64, y: i64| {
+    move |x: i64, y: i64| {
         if x < 0 || y < 0 || x >= w || y >= h {
             return Pixel::Wall;
         }
@@ -141,10 +154,7 @@ pub(crate) fn door_span(
         } else {
             Pixel::Noise
         }
-    };
-    let (centre, normal) = border_frame(labels, pair, pixels)?;
-    let throat = throat(&pixel, centre, normal, limits)?;
-    Some(span(&pixel, &throat, limits))
+    }
 }
 
 /// The doorway line of a border that crosses no bounded opening: the
@@ -178,7 +188,11 @@ pub(crate) fn border_line(
 /// The centre of a border (mean of its pixels' centres) and its normal
 /// (the mean direction of its 4-neighbour crossings from `pair.0` to
 /// `pair.1`; a staircase along a diagonal averages to the diagonal).
-fn border_frame(labels: &Labels, pair: (u32, u32), pixels: &[u32]) -> Option<([f64; 2], [f64; 2])> {
+pub(super) fn border_frame(
+    labels: &Labels,
+    pair: (u32, u32),
+    pixels: &[u32],
+) -> Option<([f64; 2], [f64; 2])> {
     let w = labels.width as usize;
     let h = labels.height as usize;
     let (mut c, mut n) = ([0.0f64; 2], [0.0f64; 2]);
@@ -290,11 +304,30 @@ fn chord(
 
 /// The narrowest chord found near the border.
 #[derive(Debug, Clone, Copy)]
-struct Throat {
+pub(super) struct Throat {
     centre: [f64; 2],
     u: [f64; 2],
     n: [f64; 2],
     s: (f64, f64),
+}
+
+impl Throat {
+    /// The chord's length, pixels.
+    pub(super) fn length(&self) -> f64 {
+        self.s.1 - self.s.0
+    }
+
+    /// The chord's middle and direction.
+    pub(super) fn middle(&self) -> ([f64; 2], [f64; 2]) {
+        let m = (self.s.0 + self.s.1) / 2.0;
+        (
+            [
+                self.centre[0] + m * self.u[0],
+                self.centre[1] + m * self.u[1],
+            ],
+            self.u,
+        )
+    }
 }
 
 fn turned(v: [f64; 2], deg: f64) -> [f64; 2] {
@@ -308,7 +341,7 @@ fn turned(v: [f64; 2], deg: f64) -> [f64; 2] {
 /// 60° of the border's line; among chords within half a pixel of the
 /// shortest, the one nearest the centre (a thick wall has many equal
 /// ones).
-fn throat(
+pub(super) fn throat(
     pixel: &impl Fn(i64, i64) -> Pixel,
     centre: [f64; 2],
     normal: [f64; 2],
@@ -395,7 +428,11 @@ fn throat(
 /// opening is a passage and the span has no depth. Then widened to
 /// `min_depth`. The doorway line is the median-length chord inside the
 /// wall, moved to the middle of the span.
-fn span(pixel: &impl Fn(i64, i64) -> Pixel, th: &Throat, limits: &SpanLimits) -> DoorSpan {
+pub(super) fn span(
+    pixel: &impl Fn(i64, i64) -> Pixel,
+    th: &Throat,
+    limits: &SpanLimits,
+) -> DoorSpan {
     const STEP: f64 = 0.5;
     let (s_lo, s_hi) = th.s;
     let mut extent = [s_lo, s_hi];

@@ -57,6 +57,7 @@ mod skeleton_doors;
 mod stubs;
 mod tidy;
 mod wall_gaps;
+mod wandering_doors;
 
 pub use error::ExtractError;
 pub use params::{BuildingPriors, DoorRule, ExtractParams, Method, MethodInternals, OutputShape};
