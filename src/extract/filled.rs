@@ -11,8 +11,10 @@ use crate::imaging::{Labels, Mask, distance_to_background, max_distance};
 /// its holes filled (index 0 and labels above `regions`: 0). A hole is
 /// what the region encloses that holds no other space: a desk cluster, a
 /// shelf, a pillar. A hole holding another space (rooms inside a ring
-/// corridor, a courtyard) stays outside.
-pub(crate) fn filled_diameters(labels: &Labels, regions: u32) -> Vec<f64> {
+/// corridor, a courtyard) stays outside, and so does a hole wider than
+/// `max_hole` px (its widest inscribed diameter): a block of rooms the
+/// sensor never entered, which a corridor runs round.
+pub(crate) fn filled_diameters(labels: &Labels, regions: u32, max_hole: f64) -> Vec<f64> {
     let (w, h) = (labels.width as usize, labels.height as usize);
     let boxes = labels.bounding_boxes();
     let mut out = vec![0.0; labels.count as usize + 1];
@@ -69,6 +71,13 @@ pub(crate) fn filled_diameters(labels: &Labels, regions: u32) -> Vec<f64> {
                 stack.push((x, y + 1));
             }
         }
+        wide_holes_outside(
+            &mut outside,
+            bw,
+            bh,
+            |x, y| label_at(x, y) == Some(l),
+            max_hole,
+        );
         let mask = Mask::from_fn(bw as u32, bh as u32, |x, y| {
             image::Luma([if outside[y as usize * bw + x as usize] {
                 0
@@ -80,6 +89,53 @@ pub(crate) fn filled_diameters(labels: &Labels, regions: u32) -> Vec<f64> {
         out[l as usize] = 2.0 * f64::from(max_distance(&d));
     }
     out
+}
+
+/// Marks outside every hole (a 4-connected piece of the box that is
+/// neither outside nor the region: `mine(x, y)`) wider than `max_hole` px.
+fn wide_holes_outside(
+    outside: &mut [bool],
+    bw: usize,
+    bh: usize,
+    mine: impl Fn(usize, usize) -> bool,
+    max_hole: f64,
+) {
+    let mut hole: Vec<bool> = (0..bw * bh)
+        .map(|i| !outside[i] && !mine(i % bw, i / bw))
+        .collect();
+    let mask = Mask::from_fn(bw as u32, bh as u32, |x, y| {
+        image::Luma([if hole[y as usize * bw + x as usize] {
+            255
+        } else {
+            0
+        }])
+    });
+    let d = distance_to_background(&mask);
+    let radius = (max_hole / 2.0) as f32;
+    let mut stack: Vec<(usize, usize)> = (0..bw * bh)
+        .filter(|&i| d[i] > radius)
+        .map(|i| (i % bw, i / bw))
+        .collect();
+    while let Some((x, y)) = stack.pop() {
+        let i = y * bw + x;
+        if !hole[i] {
+            continue;
+        }
+        hole[i] = false;
+        outside[i] = true;
+        if x > 0 {
+            stack.push((x - 1, y));
+        }
+        if x + 1 < bw {
+            stack.push((x + 1, y));
+        }
+        if y > 0 {
+            stack.push((x, y - 1));
+        }
+        if y + 1 < bh {
+            stack.push((x, y + 1));
+        }
+    }
 }
 
 #[cfg(test)]
@@ -106,7 +162,7 @@ mod tests {
         // The desk's pixels count as the room's, the walls do not: the
         // widest circle is the room's (radius 5 to the walls' pixels;
         // without the desk filled, 3).
-        let d = filled_diameters(&l, 2);
+        let d = filled_diameters(&l, 2, 100.0);
         assert_eq!(d[1], 10.0, "{d:?}");
     }
 
@@ -125,8 +181,28 @@ mod tests {
             "#aaaaaaa#",
             "#########",
         ]);
-        let d = filled_diameters(&l, 2);
+        let d = filled_diameters(&l, 2, 100.0);
         assert_eq!(d[1], 2.0, "{d:?}");
         assert_eq!(d[2], 4.0, "{d:?}");
+    }
+
+    #[test]
+    fn a_ring_corridor_round_a_block_never_entered_keeps_it_outside() {
+        // Corridor `a` runs round a 5 × 5 block no space is in (rooms the
+        // sensor never saw): clutter no wider than 3 px is filled, a wider
+        // block stays outside and the corridor one pixel wide.
+        let l = ascii_labels(&[
+            "#########",
+            "#aaaaaaa#",
+            "#a#####a#",
+            "#a#####a#",
+            "#a#####a#",
+            "#a#####a#",
+            "#a#####a#",
+            "#aaaaaaa#",
+            "#########",
+        ]);
+        assert_eq!(filled_diameters(&l, 1, 3.0)[1], 2.0);
+        assert_eq!(filled_diameters(&l, 1, 100.0)[1], 8.0);
     }
 }

@@ -143,7 +143,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     let shape: Vec<(usize, f64)> = labels
         .areas()
         .into_iter()
-        .zip(filled_diameters(&labels, n_regions))
+        .zip(filled_diameters(&labels, n_regions, px.clutter_max_width))
         .collect();
     let topo = topology(
         &labels,
