@@ -39,7 +39,7 @@ pub(crate) fn choose_doors(regions: &mut Regions, cues: &DoorCues, px: &PixelCon
         &regions.dist,
         &first_doors,
         &regions.widest,
-        px.passage_window,
+        &px.passage,
     );
     if !moved {
         return first;

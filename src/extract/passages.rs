@@ -9,10 +9,22 @@ use std::collections::VecDeque;
 use super::doors::Border;
 use crate::imaging::{Labels, Mask, erode};
 
+/// Where a passage around a door border is sought, in pixels.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct PassageLimits {
+    /// How far from the border the passage may run.
+    pub window: usize,
+    /// The disk that cannot enter the passage: its radius is half the
+    /// border's width times `disk_slack`, plus `disk_margin`.
+    pub disk_slack: f64,
+    /// See `disk_slack`.
+    pub disk_margin: f64,
+}
+
 /// For each border in `doors`, finds the passage it lies in: the pixels of
-/// its two regions, within `window_px` of the border, that a disk a little
-/// wider than the border cannot reach (the free space opened by that
-/// disk), 4-connected to the border. If the passage is bounded (it stays
+/// its two regions, within `limits.window` of the border, that a disk a
+/// little wider than the border cannot reach (the free space opened by
+/// that disk), 4-connected to the border. If the passage is bounded (it stays
 /// inside the window) and opens into the wider region (`widest`, the
 /// widest inscribed diameter of each region), its pixels in the wider
 /// region go to the narrower one. Returns whether any label changed.
@@ -21,7 +33,7 @@ pub(crate) fn give_passages_to_narrow_side(
     dist: &[f32],
     doors: &[&Border],
     widest: &[f64],
-    window_px: usize,
+    limits: &PassageLimits,
 ) -> bool {
     let mut changed = false;
     for door in doors {
@@ -31,7 +43,7 @@ pub(crate) fn give_passages_to_narrow_side(
         } else {
             (b, a)
         };
-        if let Some(passage) = passage(labels, dist, door, window_px) {
+        if let Some(passage) = passage(labels, dist, door, limits) {
             for p in passage {
                 if labels.data[p] == wide {
                     labels.data[p] = narrow;
@@ -46,11 +58,17 @@ pub(crate) fn give_passages_to_narrow_side(
 /// The passage pixels (image indices) around `door`'s border, or None if
 /// the passage is unbounded within the window or does not open into both
 /// regions.
-fn passage(labels: &Labels, dist: &[f32], door: &Border, window_px: usize) -> Option<Vec<usize>> {
+fn passage(
+    labels: &Labels,
+    dist: &[f32],
+    door: &Border,
+    limits: &PassageLimits,
+) -> Option<Vec<usize>> {
     let (w, h) = (labels.width as usize, labels.height as usize);
     let (a, b) = door.pair;
+    let window_px = limits.window;
     // Disk radius: a little over half the passage width.
-    let r = (door.width_px / 2.0 * 1.15 + 1.0) as f32;
+    let r = (door.width_px / 2.0 * limits.disk_slack + limits.disk_margin) as f32;
     if !long_passage(labels, dist, door, r, window_px / 3) {
         return None;
     }
@@ -192,6 +210,12 @@ mod tests {
         (labels, dist)
     }
 
+    const LIMITS: PassageLimits = PassageLimits {
+        window: 12,
+        disk_slack: 1.15,
+        disk_margin: 1.0,
+    };
+
     #[test]
     fn a_door_mid_passage_moves_to_the_mouth_of_the_wider_room() {
         // A 4-px-wide passage (columns 8-11, rows 8-15) from a 7-px
@@ -207,7 +231,7 @@ mod tests {
             &dist,
             &[&all[0]],
             &widest,
-            12
+            &LIMITS
         ));
         // The passage belongs to the corridor now; the border lies at the
         // room's edge.
@@ -230,7 +254,7 @@ mod tests {
             &dist,
             &[&all[0]],
             &widest,
-            12
+            &LIMITS
         ));
         assert_eq!(labels.data, before.data);
     }

@@ -6,6 +6,7 @@
 use super::doorway::SpanLimits;
 use super::joins::JoinLimits;
 use super::params::{DoorRule, ExtractParams, Method};
+use super::passages::PassageLimits;
 use super::stubs::StubLimits;
 use super::wall_gaps::GapLimits;
 
@@ -42,6 +43,19 @@ const SPAN_WIDTH_SLACK: f64 = 1.15;
 /// cut more corridors' false doors on the ROSE² maps but lose lab_ipa a
 /// door whose room is widest farther off.
 const NEAR_REACH_DOORS: f64 = 2.5;
+
+/// The disk that finds the passage a door border lies in (see `passages`)
+/// is this much wider than the border, times...
+const PASSAGE_DISK_SLACK: f64 = 1.15;
+
+/// ...plus this many pixels on its radius. In pixels on purpose: it keeps
+/// the rasterised disk out of a passage exactly its width, whatever the
+/// resolution; it is no length in the building. As 0.05 m (a pixel where it
+/// was measured) it lowered rooms R/P a little on the three shared maps not
+/// at 0.05 m/px (rose2_freiburg_building101 at 0.078: 78.99 -> 78.97,
+/// building79 at 0.038: 95.19 -> 95.17 P, umic at 0.044: 93.51 -> 93.43 P)
+/// and raised nothing.
+const PASSAGE_DISK_MARGIN_PX: f64 = 1.0;
 
 /// Unlabelled specks smaller than this (m²) inside one space join it.
 const SPECK_MAX_M2: f64 = 0.25;
@@ -121,8 +135,8 @@ pub(crate) struct PixelConfig {
     /// How far from a border its regions' widths are measured.
     pub near_reach: f64,
     /// How far a door found mid-passage may move to the passage's mouth
-    /// (twice the widest door).
-    pub passage_window: usize,
+    /// (twice the widest door), and the disk that finds the passage.
+    pub passage: PassageLimits,
     /// A door's span across its doorway.
     pub span: SpanLimits,
     /// `unknown_pocket_max_m2`: unknown pockets this small join their space.
@@ -193,7 +207,11 @@ impl PixelConfig {
                 fraction: i.open_join_fraction,
             },
             near_reach: NEAR_REACH_DOORS * px(b.door_width_max_m),
-            passage_window: (2.0 * px(b.door_width_max_m)).ceil() as usize,
+            passage: PassageLimits {
+                window: (2.0 * px(b.door_width_max_m)).ceil() as usize,
+                disk_slack: PASSAGE_DISK_SLACK,
+                disk_margin: PASSAGE_DISK_MARGIN_PX,
+            },
             span: SpanLimits {
                 max_width: SPAN_WIDTH_SLACK * b.door_width_max_m.max(b.wall_gap_width_max_m)
                     / resolution,
@@ -225,7 +243,7 @@ mod tests {
         assert_eq!(fine.doors.door_max_px, 36.0);
         assert_eq!(coarse.doors.door_max_px, 18.0);
         assert_eq!((fine.min_room_area, coarse.min_room_area), (400, 100));
-        assert_eq!(fine.passage_window, 72);
+        assert_eq!(fine.passage.window, 72);
         let gaps = fine.gaps.unwrap();
         assert_eq!((gaps.width, gaps.jamb, gaps.depth), ((8, 42), 6, 24));
         assert!((fine.span.max_width - 1.15 * 42.0).abs() < 1e-9);
