@@ -52,25 +52,11 @@ pub(crate) fn filled_diameters(labels: &Labels, regions: u32, max_hole: f64) -> 
                 }
             }
         }
-        while let Some((x, y)) = stack.pop() {
-            let i = y * bw + x;
-            if outside[i] || label_at(x, y) == Some(l) {
-                continue;
-            }
-            outside[i] = true;
-            if x > 0 {
-                stack.push((x - 1, y));
-            }
-            if x + 1 < bw {
-                stack.push((x + 1, y));
-            }
-            if y > 0 {
-                stack.push((x, y - 1));
-            }
-            if y + 1 < bh {
-                stack.push((x, y + 1));
-            }
-        }
+        flood(&mut stack, bw, bh, |i| {
+            let enter = !outside[i] && label_at(i % bw, i / bw) != Some(l);
+            outside[i] |= enter;
+            enter
+        });
         wide_holes_outside(
             &mut outside,
             bw,
@@ -116,13 +102,27 @@ fn wide_holes_outside(
         .filter(|&i| d[i] > radius)
         .map(|i| (i % bw, i / bw))
         .collect();
+    flood(&mut stack, bw, bh, |i| {
+        let enter = hole[i];
+        hole[i] = false;
+        outside[i] |= enter;
+        enter
+    });
+}
+
+/// A 4-connected flood over a `bw` × `bh` box from the pixels on `stack`:
+/// `enter(i)` marks pixel `i` and says whether the flood goes on from it
+/// (it must say no once a pixel is marked).
+fn flood(
+    stack: &mut Vec<(usize, usize)>,
+    bw: usize,
+    bh: usize,
+    mut enter: impl FnMut(usize) -> bool,
+) {
     while let Some((x, y)) = stack.pop() {
-        let i = y * bw + x;
-        if !hole[i] {
+        if !enter(y * bw + x) {
             continue;
         }
-        hole[i] = false;
-        outside[i] = true;
         if x > 0 {
             stack.push((x - 1, y));
         }
