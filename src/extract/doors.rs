@@ -4,7 +4,7 @@
 use std::collections::{BTreeMap, HashSet, VecDeque};
 
 use super::doorway::{DoorSpan, SpanLimits, border_line, door_span};
-use super::wandering_doors::cut_along;
+use super::wandering_doors::{DoorToCut, Scratch, cut_along};
 use crate::imaging::Labels;
 
 /// One border between two regions.
@@ -164,9 +164,26 @@ pub(crate) fn cut_doors(
     }
     // Borders that cross no opening at their middle: the doorway may lie
     // elsewhere along them; else a band across the border.
+    let mut scratch = Scratch::new(out.data.len());
+    let pixels_of = region_pixels(
+        labels,
+        banded.iter().flat_map(|(_, d)| [d.pair.0, d.pair.1]),
+    );
+    let none: Vec<u32> = Vec::new();
     banded.retain(|&(k, door)| {
         let label = labels.count + 1 + k as u32;
-        let line = cut_along(labels, walls, &mut out, door, label, limits);
+        let of = |l: u32| pixels_of.get(&l).unwrap_or(&none).as_slice();
+        let siblings: Vec<u32> = (0..doors.len())
+            .filter(|&j| j != k && doors[j].pair == door.pair)
+            .map(|j| labels.count + 1 + j as u32)
+            .collect();
+        let cut = DoorToCut {
+            door,
+            label,
+            pixels: [of(door.pair.0), of(door.pair.1)],
+            siblings: &siblings,
+        };
+        let line = cut_along(labels, walls, &mut out, &cut, limits, &mut scratch);
         let kept = line.is_none();
         lines[k] = line.or_else(|| border_line(labels, door.pair, &door.pixels, dist));
         kept
@@ -178,6 +195,20 @@ pub(crate) fn cut_doors(
     }
     out.count = labels.count + doors.len() as u32;
     (out, lines)
+}
+
+/// The pixels of each label in `wanted` (one pass over the image).
+fn region_pixels(labels: &Labels, wanted: impl Iterator<Item = u32>) -> BTreeMap<u32, Vec<u32>> {
+    let mut out: BTreeMap<u32, Vec<u32>> = wanted.map(|l| (l, Vec::new())).collect();
+    if out.is_empty() {
+        return out;
+    }
+    for (i, &l) in labels.data.iter().enumerate() {
+        if let Some(list) = out.get_mut(&l) {
+            list.push(i as u32);
+        }
+    }
+    out
 }
 
 /// Labels `label` the pixels of `door`'s two regions that `span` covers

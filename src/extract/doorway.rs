@@ -317,16 +317,13 @@ impl Throat {
         self.s.1 - self.s.0
     }
 
-    /// The chord's middle and direction.
-    pub(super) fn middle(&self) -> ([f64; 2], [f64; 2]) {
+    /// The chord's middle.
+    pub(super) fn middle(&self) -> [f64; 2] {
         let m = (self.s.0 + self.s.1) / 2.0;
-        (
-            [
-                self.centre[0] + m * self.u[0],
-                self.centre[1] + m * self.u[1],
-            ],
-            self.u,
-        )
+        [
+            self.centre[0] + m * self.u[0],
+            self.centre[1] + m * self.u[1],
+        ]
     }
 }
 

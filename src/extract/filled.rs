@@ -89,6 +89,9 @@ fn wide_holes_outside(
     let mut hole: Vec<bool> = (0..bw * bh)
         .map(|i| !outside[i] && !mine(i % bw, i / bw))
         .collect();
+    if !hole.contains(&true) {
+        return;
+    }
     let mask = Mask::from_fn(bw as u32, bh as u32, |x, y| {
         image::Luma([if hole[y as usize * bw + x as usize] {
             255
@@ -97,7 +100,8 @@ fn wide_holes_outside(
         }])
     });
     let d = distance_to_background(&mask);
-    let radius = (max_hole / 2.0) as f32;
+    // A hole w px wide has pixels (w + 1) / 2 from its edge.
+    let radius = ((max_hole + 1.0) / 2.0) as f32;
     let mut stack: Vec<(usize, usize)> = (0..bw * bh)
         .filter(|&i| d[i] > radius)
         .map(|i| (i % bw, i / bw))
@@ -203,6 +207,8 @@ mod tests {
             "#########",
         ]);
         assert_eq!(filled_diameters(&l, 1, 3.0)[1], 2.0);
+        assert_eq!(filled_diameters(&l, 1, 4.0)[1], 2.0);
+        assert_eq!(filled_diameters(&l, 1, 5.0)[1], 8.0);
         assert_eq!(filled_diameters(&l, 1, 100.0)[1], 8.0);
     }
 }
