@@ -341,35 +341,19 @@ mod tests {
         // strip x < 8 below it; region 2 the rest below. Their border runs
         // down along x = 8 and along the gap's foot: its middle lies in open
         // space below the wall, far from the gap.
-        let (w, h) = (30usize, 21usize);
-        let mut data = vec![0u32; w * h];
-        for y in 0..h {
-            for x in 0..w {
-                data[y * w + x] = match y {
-                    10 if !(12..17).contains(&x) => 0,
-                    0..=10 => 1,
-                    _ if x < 8 => 1,
-                    _ => 2,
-                };
-            }
-        }
-        let labels = Labels {
-            width: w as u32,
-            height: h as u32,
-            data,
-            count: 2,
-        };
-        let dist = vec![1.0f32; w * h];
+        let w = 30usize;
+        let labels = map(
+            |x, y| match (x, y) {
+                (_, 0..=10) => 1,
+                (0..8, _) => 1,
+                _ => 2,
+            },
+            2,
+        );
+        let dist = vec![1.0f32; labels.data.len()];
         let found = borders(&labels, &dist, 5);
         assert_eq!(found.len(), 1, "one border");
-        let limits = SpanLimits {
-            max_width: 7.0,
-            search: 2.0,
-            min_depth: 1.0,
-            max_depth: 3.0,
-            slack: 1.0,
-        };
-        let (cut, lines) = cut_doors(&labels, None, &[&found[0]], &dist, &limits);
+        let (cut, lines) = cut_doors(&labels, None, &[&found[0]], &dist, &LIMITS);
         let door = 3;
         // The door lies in the gap, across it.
         for (i, &l) in cut.data.iter().enumerate() {
