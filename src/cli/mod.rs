@@ -61,7 +61,7 @@ pub struct Cli {
 pub enum Command {
     /// Run the whole pipeline on a simulated building (the place to start).
     Demo(demo::Args),
-    /// Check an IndoorGML file: references, duality, geometry, schema.
+    /// Check a model file (IndoorGML, model JSON, GeoJSON, IndoorJSON2): references, duality, geometry, schema.
     Check(check::Args),
     /// Convert between IndoorGML (.gml/.xml), model JSON (.json) and GeoJSON (.geojson).
     Convert(convert::Args),

@@ -205,3 +205,52 @@ fn issue_19_a_repaired_remapping_gets_its_navigation_layer() {
         );
     }
 }
+
+#[test]
+fn issue_19_check_reads_model_json_and_geojson_as_import_would() {
+    let dir = tempfile::tempdir().unwrap();
+    let bad = write(dir.path(), "bad.json", &overlapping());
+    let check = nrgdb(dir.path(), &["check", &bad]);
+    assert_eq!(check.status.code(), Some(1), "{}", text(&check.stderr));
+    assert!(
+        text(&check.stdout).contains("cells-overlap"),
+        "{}",
+        text(&check.stdout)
+    );
+
+    let good = write(dir.path(), "good.json", &building(3));
+    let check = nrgdb(dir.path(), &["check", &good]);
+    assert!(check.status.success(), "{}", text(&check.stdout));
+    assert!(
+        text(&check.stdout).contains("good.json: clean"),
+        "{}",
+        text(&check.stdout)
+    );
+    let convert = nrgdb(dir.path(), &["convert", &good, "good.geojson"]);
+    assert!(convert.status.success(), "{}", text(&convert.stderr));
+    let check = nrgdb(dir.path(), &["check", "good.geojson"]);
+    assert!(check.status.success(), "{}", text(&check.stdout));
+
+    // Not a model: said plainly, exit 2 (could not be checked).
+    std::fs::write(
+        dir.path().join("map.yaml"),
+        "image: map.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n",
+    )
+    .unwrap();
+    let check = nrgdb(dir.path(), &["check", "map.yaml"]);
+    assert_eq!(check.status.code(), Some(2));
+    let said = text(&check.stderr);
+    assert!(
+        said.contains("map.yaml") && said.contains("not a model file"),
+        "{said}"
+    );
+    // Broken JSON: one finding naming what is wrong, exit 1.
+    std::fs::write(dir.path().join("cut.json"), "{\"spaces\": [").unwrap();
+    let check = nrgdb(dir.path(), &["check", "cut.json"]);
+    assert_eq!(check.status.code(), Some(1));
+    assert!(
+        text(&check.stdout).contains("unreadable"),
+        "{}",
+        text(&check.stdout)
+    );
+}
