@@ -2,14 +2,15 @@
 //! corrected poses.
 
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr};
 use nrgdb::sim::{map_carmen_log, write_map};
 
 /// Build an occupancy map (log-odds, known poses) from a CARMEN laser log
-/// (FLASER or ROBOTLASER1 lines; plain or .gz) and write map.yaml + map.pgm.
+/// (FLASER or ROBOTLASER1 lines; plain or .gz) and write map.yaml + map.pgm
+/// (or NAME.yaml + NAME.pgm for `--out NAME.yaml`).
 #[derive(Debug, clap::Args)]
 pub struct Args {
     /// The CARMEN log, e.g. intel-corrected.log.gz.
@@ -17,7 +18,8 @@ pub struct Args {
     /// Map resolution in metres per cell.
     #[arg(long, default_value_t = 0.05)]
     pub resolution: f64,
-    /// Output directory (created if missing).
+    /// Output directory (created if missing; map.yaml + map.pgm in it), or
+    /// the map YAML to write (`aces.yaml`: aces.yaml + aces.pgm beside it).
     #[arg(long, default_value = "map")]
     pub out: PathBuf,
     /// Longer readings are cut here and only clear free space (metres).
@@ -25,12 +27,31 @@ pub struct Args {
     pub max_range: f64,
 }
 
+/// The folder and file stem `--out` names: a `.yaml`/`.yml` path is the
+/// map YAML itself, anything else a folder for `map.yaml` + `map.pgm`.
+fn destination(out: &Path) -> (PathBuf, String) {
+    let is_yaml = out
+        .extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("yaml") || e.eq_ignore_ascii_case("yml"));
+    match (is_yaml, out.file_stem().and_then(|s| s.to_str())) {
+        (true, Some(stem)) if !stem.is_empty() => (
+            out.parent()
+                .filter(|p| !p.as_os_str().is_empty())
+                .map_or_else(|| PathBuf::from("."), Path::to_path_buf),
+            stem.to_string(),
+        ),
+        _ => (out.to_path_buf(), "map".to_string()),
+    }
+}
+
 /// Runs the subcommand.
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     let built = map_carmen_log(&args.log, args.resolution, args.max_range)
         .into_diagnostic()
         .wrap_err_with(|| format!("cannot map {}", args.log.display()))?;
-    let [yaml, pgm] = write_map(&args.out, "map", &built.map)
+    let (dir, stem) = destination(&args.out);
+    let [yaml, pgm] = write_map(&dir, &stem, &built.map)
         .into_diagnostic()
         .wrap_err_with(|| format!("cannot write the map to {}", args.out.display()))?;
     let m = &built.map;

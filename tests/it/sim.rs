@@ -223,6 +223,27 @@ fn sim_map_log_maps_a_generated_log() {
     let dir = tempfile::tempdir().unwrap();
     let path: PathBuf = dir.path().join("room.log");
     std::fs::write(&path, log).unwrap();
+    // `--out NAME.yaml` writes that map YAML and its image beside it; a
+    // folder gets map.yaml + map.pgm.
+    let out = nrgdb(
+        &["map-log", "room.log", "--out", "maps/room.yaml"],
+        dir.path(),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let yaml = std::fs::read_to_string(dir.path().join("maps/room.yaml")).unwrap();
+    assert!(yaml.contains("image: room.pgm"), "{yaml}");
+    assert!(dir.path().join("maps/room.pgm").is_file());
+    let out = nrgdb(&["map-log", "room.log", "--out", "o"], dir.path());
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(dir.path().join("o/map.yaml").is_file() && dir.path().join("o/map.pgm").is_file());
     let built = nrgdb::sim::map_carmen_log(&path, 0.05, 20.0).unwrap();
     assert_eq!(built.scans, 12);
     let m = &built.map;
