@@ -63,7 +63,7 @@ pub enum Command {
     Demo(demo::Args),
     /// Check a model file (IndoorGML, model JSON, GeoJSON, IndoorJSON2): references, duality, geometry, schema.
     Check(check::Args),
-    /// Convert between IndoorGML (.gml/.xml), model JSON (.json) and GeoJSON (.geojson).
+    /// Convert between IndoorGML (.gml/.xml), model JSON (.json), GeoJSON (.geojson) and IndoorJSON2 (.indoor.json).
     Convert(convert::Args),
     /// Simulate a building, a LiDAR robot mapping it, and its ground truth.
     Simulate(simulate::Args),
