@@ -45,8 +45,11 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     let mut notes = Vec::new();
     let bytes = format::read_bytes(&args.file, args.max_bytes).into_diagnostic()?;
     let name = args.file.to_string_lossy();
-    match format::detect(&Declared::name(&name), &bytes) {
+    let kind = format::detect(&Declared::name(&name), &bytes);
+    match kind {
         Ok(FileKind::Model(ModelFormat::IndoorGml)) | Err(_) => {
+            // Read again as a document (with line numbers): not twice in memory.
+            drop(bytes);
             check_indoorgml(&args, &mut findings, &mut notes)?
         }
         Ok(FileKind::Model(model)) => {
