@@ -53,6 +53,11 @@ pub struct Args {
     /// The statements, separated by ';' (e.g. 'ROUTE FROM "Kitchen" TO room 13').
     #[arg(required_unless_present = "file", conflicts_with = "file")]
     pub query: Option<String>,
+    /// `nrgdb query MODEL QUERY`: a model file before the statements is
+    /// read as `--model MODEL` (what a user coming from `extract --out`
+    /// types first).
+    #[arg(hide = true)]
+    pub then: Option<String>,
     /// Read the statements from a file (e.g. queries/*.nrgq; lines starting
     /// with '#' are ignored).
     #[arg(short = 'f', long = "file", value_name = "FILE.nrgq")]
@@ -164,7 +169,25 @@ pub fn strip_hash_lines(text: &str) -> String {
 }
 
 /// Runs `nrgdb query`.
-pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
+pub fn run(mut args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
+    if let Some(statements) = args.then.take() {
+        let first = args.query.take().unwrap_or_default();
+        let source = &args.source;
+        if source.model.is_some() || source.db.is_some() || source.demo.is_some() {
+            return Err(miette!(
+                "give the statements as one argument (separated by ';'): the model or database \
+is already named by --model, --db or --demo, so `{first}` is not taken as one"
+            ));
+        }
+        if !std::path::Path::new(&first).is_file() {
+            return Err(miette!(
+                "`{first}` is not a model file; give the statements as one argument, separated \
+by ';' (e.g. nrgdb query --model lab.json 'FIND rooms; ROUTE FROM 3 TO 7')"
+            ));
+        }
+        args.source.model = Some(first.into());
+        args.query = Some(statements);
+    }
     let (name, text) = match (&args.query, &args.file) {
         (Some(q), _) => ("query".to_string(), q.clone()),
         (None, Some(path)) => {

@@ -39,6 +39,29 @@ fn query_a_model_file() {
 }
 
 #[test]
+fn a_model_file_before_the_statements_is_read_as_model() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("m.json");
+    std::fs::write(&path, nrgdb::query::demo::building(3).to_json()).unwrap();
+    let p = path.to_str().unwrap();
+    let (code, out, err) = nrgdb(&["query", p, "ROUTE FROM \"Kitchen\" TO \"Library\""]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with("route 1: 6.30 m"), "{out}");
+    // Not a file: said, and the statements are not run against anything.
+    let missing = dir.path().join("missing.json");
+    let (code, out, err) = nrgdb(&["query", missing.to_str().unwrap(), "FIND rooms"]);
+    assert_eq!(code, 2, "{out}");
+    assert!(
+        err.contains("missing.json") && err.contains("not a model file"),
+        "{err}"
+    );
+    // A model already named: two statement arguments are refused.
+    let (code, _, err) = nrgdb(&["query", "--model", p, "FIND rooms", "FIND doors"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("one argument"), "{err}");
+}
+
+#[test]
 fn errors_exit_2_with_a_caret() {
     let (code, _, err) = nrgdb(&["query", "--demo", "2", "FIND rooms WHERE aera > 1"]);
     assert_eq!(code, 2);
