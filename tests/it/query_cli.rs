@@ -14,12 +14,19 @@ fn nrgdb(args: &[&str]) -> (i32, String, String) {
     )
 }
 
-#[test]
-fn query_a_model_file() {
+/// The demo building written as model JSON in a new temporary folder.
+fn model_file() -> (tempfile::TempDir, String) {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("m.json");
     std::fs::write(&path, nrgdb::query::demo::building(3).to_json()).unwrap();
-    let p = path.to_str().unwrap();
+    let p = path.to_str().unwrap().to_string();
+    (dir, p)
+}
+
+#[test]
+fn query_a_model_file() {
+    let (_dir, p) = model_file();
+    let p = p.as_str();
     let (code, out, err) = nrgdb(&[
         "query",
         "--model",
@@ -40,10 +47,8 @@ fn query_a_model_file() {
 
 #[test]
 fn a_model_file_before_the_statements_is_read_as_model() {
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("m.json");
-    std::fs::write(&path, nrgdb::query::demo::building(3).to_json()).unwrap();
-    let p = path.to_str().unwrap();
+    let (dir, p) = model_file();
+    let p = p.as_str();
     let (code, out, err) = nrgdb(&["query", p, "ROUTE FROM \"Kitchen\" TO \"Library\""]);
     assert_eq!(code, 0, "{err}");
     assert!(out.starts_with("route 1: 6.30 m"), "{out}");
