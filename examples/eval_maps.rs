@@ -9,6 +9,8 @@
 //! MAPS_DIR defaults to `$NRGDB_SHARED/maps` (NRGDB_SHARED defaults to `../shared`).
 //! `--doors` also prints every door matched to a GT doorway line: its id, the middle of its
 //! doorway (metres), the width reported and the GT line's length, worst first.
+//! It then lists every GT doorway line no door was found at: the middle of its
+//! pixels (metres), its length and the GT rooms it joins.
 //! `--pictures OUT_DIR` also writes each map's evaluation picture (`<name>_eval.png`, see
 //! `nrgdb::eval::evaluation_picture`): found and missed doorway lines, right and wrong doors.
 
@@ -16,12 +18,12 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use nrgdb::eval::{
-    Evaluation, GroundTruth, door_radius_px, door_widths, evaluate, evaluation_picture,
-    load_ground_truth,
+    Evaluation, GroundTruth, door_centroids, door_matches, door_radius_px, door_widths, evaluate,
+    evaluation_picture, gt_line_length_px, load_ground_truth,
 };
 use nrgdb::extract::Extraction;
 use nrgdb::extract::{ExtractParams, Method, extract};
-use nrgdb::grid::{LoadOptions, load_map};
+use nrgdb::grid::{LoadOptions, OccupancyGrid, load_map};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
@@ -106,6 +108,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         );
         if doors {
             print_doors(&gt, &x, grid.resolution);
+            print_missed_lines(&gt, &x, &grid);
         }
         if let Some(out) = &pictures {
             std::fs::create_dir_all(out)?;
@@ -168,6 +171,33 @@ fn print_doors(gt: &GroundTruth, x: &Extraction, resolution: f64) {
             r.line,
             r.truth_m,
             r.reported_m - r.truth_m
+        );
+    }
+}
+
+/// Each GT doorway line no detected door lies near.
+fn print_missed_lines(gt: &GroundTruth, x: &Extraction, grid: &OccupancyGrid) {
+    let m = door_matches(gt, &door_centroids(x), door_radius_px(grid.resolution));
+    let w = grid.width.max(1);
+    for (i, (line, _)) in gt
+        .doors
+        .iter()
+        .zip(&m.lines)
+        .enumerate()
+        .filter(|(_, (_, f))| !**f)
+    {
+        let n = line.pixels.len().max(1) as f64;
+        let (sx, sy) = line.pixels.iter().fold((0.0, 0.0), |(sx, sy), &p| {
+            (sx + f64::from(p % w), sy + f64::from(p / w))
+        });
+        let c = grid.pixel_to_metres(sx / n + 0.5, sy / n + 0.5);
+        println!(
+            "    missed GT line {:>3} at ({:.2}, {:.2}), {:.3} m, rooms {:?}",
+            i,
+            c[0],
+            c[1],
+            gt_line_length_px(line, w) * grid.resolution,
+            line.rooms
         );
     }
 }
