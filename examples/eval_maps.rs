@@ -7,7 +7,7 @@
 //! cargo run --release --example eval_maps [-- MAPS_DIR [--method ccl] [--params p.toml] [--pictures OUT_DIR]]
 //! ```
 //! MAPS_DIR defaults to `$NRGDB_SHARED/maps` (NRGDB_SHARED defaults to `../shared`).
-//! `--doors` also prints every door matched to a GT doorway line: its id, the middle of its
+//! `--doors` also prints, from `nrgdb::eval::door_report`, every door matched to a GT doorway line: its id, the middle of its
 //! doorway (metres), the width reported and the GT line's length, worst first.
 //! It then lists every GT doorway line no door was found at: the middle of its
 //! pixels (metres), its length and the GT rooms it joins.
@@ -18,12 +18,10 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use nrgdb::eval::{
-    Evaluation, GroundTruth, door_centroids, door_matches, door_radius_px, door_widths, evaluate,
-    evaluation_picture, gt_line_length_px, load_ground_truth,
+    DoorReport, Evaluation, door_report, evaluate, evaluation_picture, load_ground_truth,
 };
-use nrgdb::extract::Extraction;
 use nrgdb::extract::{ExtractParams, Method, extract};
-use nrgdb::grid::{LoadOptions, OccupancyGrid, load_map};
+use nrgdb::grid::{LoadOptions, load_map};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
@@ -107,8 +105,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             ms
         );
         if doors {
-            print_doors(&gt, &x, grid.resolution);
-            print_missed_lines(&gt, &x, &grid);
+            print_doors(&door_report(&gt, &x, &grid));
         }
         if let Some(out) = &pictures {
             std::fs::create_dir_all(out)?;
@@ -153,51 +150,32 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     Ok(())
 }
 
-/// Each door matched to a GT doorway line, worst width error first.
-fn print_doors(gt: &GroundTruth, x: &Extraction, resolution: f64) {
-    let mut rows = door_widths(gt, x, resolution, door_radius_px(resolution));
-    rows.sort_by(|a, b| b.error_m().total_cmp(&a.error_m()));
-    for r in rows {
-        let middle = x
-            .nrg
-            .space(nrgdb::model::SpaceId(r.door))
-            .and_then(nrgdb::model::doorway)
-            .map(|d| d.middle());
-        println!(
-            "    door {:>4} at {:<22} reported {:.3} m, GT line {} {:.3} m, error {:+.3} m",
-            r.door,
-            middle.map_or("-".to_string(), |m| format!("({:.2}, {:.2})", m[0], m[1])),
-            r.reported_m,
-            r.line,
-            r.truth_m,
-            r.reported_m - r.truth_m
-        );
-    }
-}
-
-/// Each GT doorway line no detected door lies near.
-fn print_missed_lines(gt: &GroundTruth, x: &Extraction, grid: &OccupancyGrid) {
-    let m = door_matches(gt, &door_centroids(x), door_radius_px(grid.resolution));
-    let w = grid.width.max(1);
-    for (i, (line, _)) in gt
+/// Each door matched to a GT doorway line, worst width error first, then
+/// each GT doorway line no door was found at.
+fn print_doors(r: &DoorReport) {
+    let mut right: Vec<_> = r
         .doors
         .iter()
-        .zip(&m.lines)
-        .enumerate()
-        .filter(|(_, (_, f))| !**f)
-    {
-        let n = line.pixels.len().max(1) as f64;
-        let (sx, sy) = line.pixels.iter().fold((0.0, 0.0), |(sx, sy), &p| {
-            (sx + f64::from(p % w), sy + f64::from(p / w))
-        });
-        let c = grid.pixel_to_metres(sx / n + 0.5, sy / n + 0.5);
+        .filter_map(|d| Some((d, d.matched?)))
+        .collect();
+    let error = |d: &nrgdb::eval::DoorItem, truth: f64| d.width_m.unwrap_or(0.0) - truth;
+    right.sort_by(|a, b| error(b.0, b.1.1).total_cmp(&error(a.0, a.1.1)));
+    for (d, (line, truth)) in right {
+        let reported = d.width_m.unwrap_or(0.0);
+        println!(
+            "    door {:>4} at {:<22} reported {:.3} m, GT line {} {:.3} m, error {:+.3} m",
+            d.door,
+            format!("({:.2}, {:.2})", d.middle[0], d.middle[1]),
+            reported,
+            line,
+            truth,
+            reported - truth
+        );
+    }
+    for l in r.missed() {
         println!(
             "    missed GT line {:>3} at ({:.2}, {:.2}), {:.3} m, rooms {:?}",
-            i,
-            c[0],
-            c[1],
-            gt_line_length_px(line, w) * grid.resolution,
-            line.rooms
+            l.line, l.middle[0], l.middle[1], l.length_m, l.rooms
         );
     }
 }

@@ -6,7 +6,9 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr};
-use nrgdb::eval::{Evaluation, evaluate, evaluation_picture, load_ground_truth};
+use nrgdb::eval::{
+    DoorReport, Evaluation, door_report, evaluate, evaluation_picture, load_ground_truth,
+};
 use nrgdb::extract::extract;
 
 use super::extract::MapArgs;
@@ -34,6 +36,12 @@ pub struct Args {
     /// it matched a line, red when it matched none.
     #[arg(long, value_name = "FILE.png")]
     pub picture: Option<PathBuf>,
+    /// Also list the doors item by item (one map only): each GT doorway line no door
+    /// was found at, each detected door that matches no line, and each matched door's
+    /// width against its line's length, worst first; places in metres in the map frame.
+    /// With --json: under "door_report".
+    #[arg(long)]
+    pub doors: bool,
     /// Judge a parameter's values leave-one-building-out over the maps
     /// (`--loo door_width_max_m=1.2,1.5,1.8`): each building (a map and its
     /// `_furnitures` copy) gets the value that scores best on the other
@@ -53,10 +61,10 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     }
     let inputs = args.map.inputs()?;
     if let Some(spec) = &args.loo {
-        if args.gt.is_some() || args.picture.is_some() {
+        if args.gt.is_some() || args.picture.is_some() || args.doors {
             miette::bail!(
                 "--loo scores every map against the <stem>_gt.png beside it and draws nothing: \
-                 leave out --gt and --picture"
+                 leave out --gt, --picture and --doors"
             );
         }
         return super::eval_loo::run(&args.map, spec, args.json, &inputs, out);
@@ -73,8 +81,9 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
                     )
                 })?,
             };
-            let e = evaluate_one(&args.map, map, &gt, args.picture.as_deref())?;
-            print_one(&e, args.json, out).into_diagnostic()?;
+            let (e, report) = evaluate_one(&args.map, map, &gt, args.picture.as_deref())?;
+            let report = args.doors.then_some(&report);
+            print_one(&e, report, args.json, out).into_diagnostic()?;
             Ok(ExitCode::SUCCESS)
         }
         _ => run_many(&args, &inputs, out),
@@ -99,7 +108,7 @@ fn evaluate_one(
     map: &Path,
     gt: &Path,
     picture: Option<&Path>,
-) -> miette::Result<Evaluation> {
+) -> miette::Result<(Evaluation, DoorReport)> {
     let (grid, params) = args.load(map)?;
     let gt = load_ground_truth(gt, &grid).into_diagnostic()?;
     let x = extract(&grid, &params)
@@ -114,7 +123,10 @@ fn evaluate_one(
             .into_diagnostic()
             .wrap_err_with(|| format!("cannot write {}", path.display()))?;
     }
-    Ok(evaluate(&gt, &x, grid.resolution))
+    Ok((
+        evaluate(&gt, &x, grid.resolution),
+        door_report(&gt, &x, &grid),
+    ))
 }
 
 fn run_many(args: &Args, inputs: &[PathBuf], out: &mut dyn Write) -> miette::Result<ExitCode> {
@@ -123,8 +135,8 @@ fn run_many(args: &Args, inputs: &[PathBuf], out: &mut dyn Write) -> miette::Res
             "--gt names one ground truth: with several maps each uses <stem>_gt.png beside it"
         );
     }
-    if args.picture.is_some() {
-        miette::bail!("--picture draws one map: give a single map");
+    if args.picture.is_some() || args.doors {
+        miette::bail!("--picture and --doors are for one map: give a single map");
     }
     let bar = progress::bar(inputs.len() as u64, "eval");
     let mut rows: Vec<(String, Evaluation)> = Vec::new();
@@ -138,7 +150,7 @@ fn run_many(args: &Args, inputs: &[PathBuf], out: &mut dyn Write) -> miette::Res
         match sibling_gt(map) {
             None => notes.push(format!("{stem}: skipped, no {} beside it", gt_name(map))),
             Some(gt) => match evaluate_one(&args.map, map, &gt, None) {
-                Ok(e) => rows.push((stem, e)),
+                Ok((e, _)) => rows.push((stem, e)),
                 Err(e) => {
                     failed += 1;
                     bar.suspend(|| eprintln!("{stem}: {e:?}"));
@@ -245,11 +257,76 @@ fn print_table(rows: &[(String, Evaluation)], out: &mut dyn Write) -> std::io::R
     Ok(())
 }
 
-fn print_one(e: &Evaluation, json: bool, out: &mut dyn Write) -> std::io::Result<()> {
+fn print_one(
+    e: &Evaluation,
+    report: Option<&DoorReport>,
+    json: bool,
+    out: &mut dyn Write,
+) -> std::io::Result<()> {
     if json {
-        let text = serde_json::to_string_pretty(e).map_err(std::io::Error::other)?;
+        let mut value = serde_json::to_value(e).map_err(std::io::Error::other)?;
+        if let (Some(r), Some(object)) = (report, value.as_object_mut()) {
+            let r = serde_json::to_value(r).map_err(std::io::Error::other)?;
+            object.insert("door_report".into(), r);
+        }
+        let text = serde_json::to_string_pretty(&value).map_err(std::io::Error::other)?;
         return writeln!(out, "{text}");
     }
+    print_summary(e, out)?;
+    match report {
+        Some(r) => print_report(r, out),
+        None => Ok(()),
+    }
+}
+
+/// The door report as text: missed lines, wrong doors, then matched doors
+/// by width error, worst first.
+fn print_report(r: &DoorReport, out: &mut dyn Write) -> std::io::Result<()> {
+    let at = |p: [f64; 2]| format!("({:.2}, {:.2})", p[0], p[1]);
+    for l in r.missed() {
+        let rooms: Vec<String> = l.rooms.iter().map(u32::to_string).collect();
+        writeln!(
+            out,
+            "missed  GT doorway line {:>3} at {:<18} {:.2} m long, between GT rooms {}",
+            l.line,
+            at(l.middle),
+            l.length_m,
+            rooms.join(", ")
+        )?;
+    }
+    let width = |w: Option<f64>| w.map_or_else(|| "-".to_string(), |w| format!("{w:.2} m"));
+    for d in r.wrong() {
+        writeln!(
+            out,
+            "wrong   door {:>4} at {:<18} width {}, no GT doorway line within 0.5 m",
+            d.door,
+            at(d.middle),
+            width(d.width_m)
+        )?;
+    }
+    let mut right: Vec<_> = r
+        .doors
+        .iter()
+        .filter_map(|d| d.matched.map(|m| (d, m)))
+        .collect();
+    let error =
+        |d: &nrgdb::eval::DoorItem, truth: f64| d.width_m.map_or(0.0, |w| (w - truth).abs());
+    right.sort_by(|a, b| error(b.0, b.1.1).total_cmp(&error(a.0, a.1.1)));
+    for (d, (line, truth)) in right {
+        writeln!(
+            out,
+            "right   door {:>4} at {:<18} width {}, GT doorway line {} {:.2} m",
+            d.door,
+            at(d.middle),
+            width(d.width_m),
+            line,
+            truth
+        )?;
+    }
+    Ok(())
+}
+
+fn print_summary(e: &Evaluation, out: &mut dyn Write) -> std::io::Result<()> {
     let r = &e.rooms;
     writeln!(
         out,

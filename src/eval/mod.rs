@@ -3,7 +3,7 @@
 //! Owns the metrics: room-segmentation recall/precision exactly as IPA's
 //! `evaluation_segmentation.cpp` (BENCHMARK.md §1.1), door recall/precision
 //! against the GT's doorway lines, door widths against those lines'
-//! lengths, connection recall/precision, room and corridor labels against a
+//! lengths (and both item by item: `door_report`), connection recall/precision, room and corridor labels against a
 //! simulated plan, and a
 //! picture of where extraction and ground truth disagree, the
 //! leave-one-building-out judgement of a parameter's value; the free-space
@@ -11,6 +11,7 @@
 //! Uses grid, imaging, extract, sim and model; must not use store, server,
 //! the terminal, or (for the geodesic) route.
 
+mod door_report;
 mod door_widths;
 mod error;
 mod geodesic;
@@ -22,6 +23,7 @@ mod picture;
 mod route_fidelity;
 mod simulated;
 
+pub use door_report::{DoorItem, DoorReport, LineItem, door_report};
 pub use door_widths::{DoorWidth, WidthScores, door_widths, gt_line_length_px, width_scores};
 pub use error::EvalError;
 pub use geodesic::{
