@@ -98,7 +98,11 @@ pub fn door_report(gt: &GroundTruth, x: &Extraction, grid: &OccupancyGrid) -> Do
             let line = doorway(s);
             Some(DoorItem {
                 door: s.id.0,
-                middle: line.map_or_else(|| grid.pixel_to_metres(c[0], c[1]), |d| d.middle()),
+                // Centroids are means of pixel indices: pixel centres are +0.5.
+                middle: line.map_or_else(
+                    || grid.pixel_to_metres(c[0] + 0.5, c[1] + 0.5),
+                    |d| d.middle(),
+                ),
                 width_m: line.map(|d| d.width_m),
                 matched: matched
                     .iter()
