@@ -7,8 +7,9 @@
 //! cargo run --release --example eval_maps [-- MAPS_DIR [--method ccl] [--params p.toml] [--pictures OUT_DIR]]
 //! ```
 //! MAPS_DIR defaults to `$NRGDB_SHARED/maps` (NRGDB_SHARED defaults to `../shared`).
-//! `--doors` also prints, from `nrgdb::eval::door_report`, every door matched to a GT doorway line: its id, the middle of its
-//! doorway (metres), the width reported and the GT line's length, worst first.
+//! `--doors` also prints, from `nrgdb::eval::door_report`, every door matched
+//! to a GT doorway line: its id, the middle of its doorway (metres), the width
+//! reported and the GT line's length, worst first.
 //! It then lists every GT doorway line no door was found at: the middle of its
 //! pixels (metres), its length and the GT rooms it joins.
 //! `--pictures OUT_DIR` also writes each map's evaluation picture (`<name>_eval.png`, see
@@ -153,14 +154,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 /// Each door matched to a GT doorway line, worst width error first, then
 /// each GT doorway line no door was found at.
 fn print_doors(r: &DoorReport) {
-    let mut right: Vec<_> = r
-        .doors
-        .iter()
-        .filter_map(|d| Some((d, d.matched?)))
-        .collect();
-    let error = |d: &nrgdb::eval::DoorItem, truth: f64| d.width_m.unwrap_or(0.0) - truth;
-    right.sort_by(|a, b| error(b.0, b.1.1).total_cmp(&error(a.0, a.1.1)));
-    for (d, (line, truth)) in right {
+    for (d, line, truth) in r.right_worst_first() {
         let reported = d.width_m.unwrap_or(0.0);
         println!(
             "    door {:>4} at {:<22} reported {:.3} m, GT line {} {:.3} m, error {:+.3} m",

@@ -81,9 +81,9 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
                     )
                 })?,
             };
-            let (e, report) = evaluate_one(&args.map, map, &gt, args.picture.as_deref())?;
-            let report = args.doors.then_some(&report);
-            print_one(&e, report, args.json, out).into_diagnostic()?;
+            let (e, report) =
+                evaluate_one(&args.map, map, &gt, args.picture.as_deref(), args.doors)?;
+            print_one(&e, report.as_ref(), args.json, out).into_diagnostic()?;
             Ok(ExitCode::SUCCESS)
         }
         _ => run_many(&args, &inputs, out),
@@ -108,7 +108,8 @@ fn evaluate_one(
     map: &Path,
     gt: &Path,
     picture: Option<&Path>,
-) -> miette::Result<(Evaluation, DoorReport)> {
+    doors: bool,
+) -> miette::Result<(Evaluation, Option<DoorReport>)> {
     let (grid, params) = args.load(map)?;
     let gt = load_ground_truth(gt, &grid).into_diagnostic()?;
     let x = extract(&grid, &params)
@@ -125,7 +126,7 @@ fn evaluate_one(
     }
     Ok((
         evaluate(&gt, &x, grid.resolution),
-        door_report(&gt, &x, &grid),
+        doors.then(|| door_report(&gt, &x, &grid)),
     ))
 }
 
@@ -149,7 +150,7 @@ fn run_many(args: &Args, inputs: &[PathBuf], out: &mut dyn Write) -> miette::Res
         bar.set_message(stem.clone());
         match sibling_gt(map) {
             None => notes.push(format!("{stem}: skipped, no {} beside it", gt_name(map))),
-            Some(gt) => match evaluate_one(&args.map, map, &gt, None) {
+            Some(gt) => match evaluate_one(&args.map, map, &gt, None, false) {
                 Ok((e, _)) => rows.push((stem, e)),
                 Err(e) => {
                     failed += 1;
@@ -304,15 +305,7 @@ fn print_report(r: &DoorReport, out: &mut dyn Write) -> std::io::Result<()> {
             width(d.width_m)
         )?;
     }
-    let mut right: Vec<_> = r
-        .doors
-        .iter()
-        .filter_map(|d| d.matched.map(|m| (d, m)))
-        .collect();
-    let error =
-        |d: &nrgdb::eval::DoorItem, truth: f64| d.width_m.map_or(0.0, |w| (w - truth).abs());
-    right.sort_by(|a, b| error(b.0, b.1.1).total_cmp(&error(a.0, a.1.1)));
-    for (d, (line, truth)) in right {
+    for (d, line, truth) in r.right_worst_first() {
         writeln!(
             out,
             "right   door {:>4} at {:<18} width {}, GT doorway line {} {:.2} m",

@@ -61,6 +61,20 @@ impl DoorReport {
     pub fn wrong(&self) -> impl Iterator<Item = &DoorItem> {
         self.doors.iter().filter(|d| d.matched.is_none())
     }
+
+    /// The doors that match a line, each with that line's index and length
+    /// (metres), largest absolute width error first (a door without a width
+    /// counts as no error).
+    pub fn right_worst_first(&self) -> Vec<(&DoorItem, usize, f64)> {
+        let mut right: Vec<_> = self
+            .doors
+            .iter()
+            .filter_map(|d| d.matched.map(|(line, truth)| (d, line, truth)))
+            .collect();
+        let error = |d: &DoorItem, truth: f64| d.width_m.map_or(0.0, |w| (w - truth).abs());
+        right.sort_by(|a, b| error(b.0, b.2).total_cmp(&error(a.0, a.2)));
+        right
+    }
 }
 
 /// The [`DoorReport`] of `x` against `gt` on `grid` (the map both were
@@ -112,4 +126,35 @@ pub fn door_report(gt: &GroundTruth, x: &Extraction, grid: &OccupancyGrid) -> Do
         })
         .collect();
     DoorReport { lines, doors }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn door(door: u32, width_m: Option<f64>, matched: Option<(usize, f64)>) -> DoorItem {
+        DoorItem {
+            door,
+            middle: [0.0, 0.0],
+            width_m,
+            matched,
+        }
+    }
+
+    #[test]
+    fn right_doors_come_by_absolute_width_error_and_wrong_ones_stay_out() {
+        let r = DoorReport {
+            lines: Vec::new(),
+            doors: vec![
+                door(1, Some(0.9), Some((0, 1.0))), // 0.1 under
+                door(2, Some(1.3), Some((1, 1.0))), // 0.3 over
+                door(3, Some(0.5), None),           // wrong
+                door(4, Some(0.6), Some((2, 0.8))), // 0.2 under
+                door(5, None, Some((3, 0.9))),      // no width: no error
+            ],
+        };
+        let order: Vec<u32> = r.right_worst_first().iter().map(|(d, ..)| d.door).collect();
+        assert_eq!(order, [2, 4, 1, 5]);
+        assert_eq!(r.wrong().map(|d| d.door).collect::<Vec<_>>(), [3]);
+    }
 }

@@ -3,8 +3,8 @@
 //! Owns the metrics: room-segmentation recall/precision exactly as IPA's
 //! `evaluation_segmentation.cpp` (BENCHMARK.md §1.1), door recall/precision
 //! against the GT's doorway lines, door widths against those lines'
-//! lengths (and both item by item: `door_report`), connection recall/precision, room and corridor labels against a
-//! simulated plan, and a
+//! lengths (and both item by item: `door_report`), connection
+//! recall/precision, room and corridor labels against a simulated plan, and a
 //! picture of where extraction and ground truth disagree, the
 //! leave-one-building-out judgement of a parameter's value; the free-space
 //! geodesic and the route-fidelity harness that measure routes against it.
