@@ -1,7 +1,7 @@
 //! Free-space cleaning: the free mask without LiDAR rays leaking into unknown
 //! space, speckle and tiny islands.
 
-use super::furniture::free_without_furniture;
+use super::furniture::{IslandLimits, free_without_furniture};
 use crate::grid::OccupancyGrid;
 use crate::imaging::{Mask, dilate, label_runs, open};
 
@@ -22,10 +22,9 @@ pub(crate) fn clean_free(
     grid: &OccupancyGrid,
     noise_px: f64,
     min_area_px: usize,
-    furniture_px: f64,
-    wall_piece_gap_px: f64,
+    islands: &IslandLimits,
 ) -> FreeSpace {
-    let free = free_without_furniture(grid, furniture_px, wall_piece_gap_px);
+    let free = free_without_furniture(grid, islands);
     let r = noise_px;
     let mut clean = if r >= 0.5 {
         open(&free, r)
@@ -71,7 +70,13 @@ mod tests {
              ##########????",
             0.1,
         );
-        let f = clean_free(&g, 1.0, 5, 0.0, 0.0);
+        let none = IslandLimits {
+            furniture: 0.0,
+            clutter: 0.0,
+            wall_piece_gap: 0.0,
+            resolution: 0.1,
+        };
+        let f = clean_free(&g, 1.0, 5, &none);
         let w = g.width as usize;
         assert_eq!(f.clean.as_raw()[2 * w + 10], 0, "ray removed");
         assert_eq!(f.clean.as_raw()[4 * w + 11], 0, "island removed");

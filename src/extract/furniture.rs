@@ -4,47 +4,80 @@
 //! free space while the rooms are segmented, so a room is found as if it
 //! were empty and the pixels under its furniture belong to it.
 
+use super::clutter::{WallLines, is_wall_piece};
 use crate::grid::{Cell, OccupancyGrid};
-use crate::imaging::{Mask, label_runs};
+use crate::imaging::{Mask, RunLabels, dominant_orientation, label_runs};
+
+/// Sizes of the islands treated as free, in pixels.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct IslandLimits {
+    /// `furniture_max_m`: islands at most this long on both sides are
+    /// furniture.
+    pub furniture: f64,
+    /// `clutter_max_m`: larger islands up to this are clutter unless they
+    /// look like walls (see [`super::clutter`]).
+    pub clutter: f64,
+    /// How far a wall piece between two doorways may stand from the walls
+    /// in line with it (`wall_gap_width_max_m`).
+    pub wall_piece_gap: f64,
+    /// Metres per pixel (the wall-line lengths are in metres).
+    pub resolution: f64,
+}
 
 /// The free mask (255 free) of `grid` in which every 8-connected component
 /// of non-free pixels that does not touch the image border and whose
-/// bounding box is at most `max_extent_px` on both sides is free too.
+/// bounding box is at most `limits.furniture` on both sides is free too,
+/// and so is every such island up to `limits.clutter` that is no wall piece
+/// by [`is_wall_piece`] (a cluster of chairs and tables).
 /// Walls are connected to the building's outline or long, so they stay.
 /// So do pieces of wall between two doorways: islands at least 1.5 times
 /// as long as thick that lie in line with a wall of about their thickness on
-/// both ends, each within `gap_px` (a pillar between the two leaves of a
-/// double door, the wall between two doors side by side).
-pub(crate) fn free_without_furniture(
-    grid: &OccupancyGrid,
-    max_extent_px: f64,
-    gap_px: f64,
-) -> Mask {
+/// both ends, each within `limits.wall_piece_gap` (a pillar between the two
+/// leaves of a double door, the wall between two doors side by side).
+pub(crate) fn free_without_furniture(grid: &OccupancyGrid, limits: &IslandLimits) -> Mask {
     let (w, h) = (grid.width, grid.height);
     let free: Vec<u8> = grid
         .cells
         .iter()
         .map(|c| if *c == Cell::Free { 255 } else { 0 })
         .collect();
-    if max_extent_px < 1.0 {
+    let largest = limits.furniture.max(limits.clutter);
+    if largest < 1.0 {
         return Mask::from_raw(w, h, free).unwrap_or_else(|| Mask::new(w, h));
     }
     let blocked_data = free.iter().map(|&f| 255 - f).collect();
     let blocked = Mask::from_raw(w, h, blocked_data).unwrap_or_else(|| Mask::new(w, h));
     let blobs = label_runs(&blocked, true);
     let bbox = blobs.bounding_boxes();
-    let island: Vec<bool> = bbox
+    let extent: Vec<Option<f64>> = bbox
         .iter()
         .map(|b| {
             let touches_border = b[0] == 0 || b[1] == 0 || b[2] + 1 >= w || b[3] + 1 >= h;
-            let extent = f64::from(
-                (b[2] + 1)
-                    .saturating_sub(b[0])
-                    .max((b[3] + 1).saturating_sub(b[1])),
-            );
-            b[0] != u32::MAX && !touches_border && extent <= max_extent_px
+            (b[0] != u32::MAX && !touches_border).then(|| {
+                f64::from(
+                    (b[2] + 1)
+                        .saturating_sub(b[0])
+                        .max((b[3] + 1).saturating_sub(b[1])),
+                )
+            })
         })
         .collect();
+    let mut island: Vec<bool> = extent
+        .iter()
+        .map(|e| e.is_some_and(|e| e <= limits.furniture))
+        .collect();
+    let candidate: Vec<bool> = extent
+        .iter()
+        .map(|e| e.is_some_and(|e| e > limits.furniture && e <= limits.clutter))
+        .collect();
+    if candidate.iter().any(|&c| c) {
+        for (l, clutter) in clutter_islands(grid, &free, &blobs, &extent, limits)
+            .into_iter()
+            .enumerate()
+        {
+            island[l] |= clutter;
+        }
+    }
     let mut data = free;
     for r in blobs.runs.iter().filter(|r| island[r.label as usize]) {
         let i = r.y as usize * w as usize;
@@ -55,13 +88,65 @@ pub(crate) fn free_without_furniture(
     let wall_piece: Vec<bool> = bbox
         .iter()
         .enumerate()
-        .map(|(l, b)| island[l] && in_wall_line(&walls, *b, gap_px))
+        .map(|(l, b)| island[l] && in_wall_line(&walls, *b, limits.wall_piece_gap))
         .collect();
     for r in blobs.runs.iter().filter(|r| wall_piece[r.label as usize]) {
         let i = r.y as usize * w as usize;
         data[i + r.x0 as usize..i + r.x1 as usize].fill(0);
     }
     Mask::from_raw(w, h, data).unwrap_or_else(|| Mask::new(w, h))
+}
+
+/// Which islands (by label) larger than furniture and at most
+/// `limits.clutter` across are clutter: no wall piece by the wall lines of
+/// the components that are no island of either size (the building).
+fn clutter_islands(
+    grid: &OccupancyGrid,
+    free: &[u8],
+    blobs: &RunLabels,
+    extent: &[Option<f64>],
+    limits: &IslandLimits,
+) -> Vec<bool> {
+    let w = grid.width as usize;
+    let building: Vec<bool> = extent
+        .iter()
+        .map(|e| e.is_none_or(|e| e > limits.clutter))
+        .collect();
+    let candidate: Vec<bool> = extent
+        .iter()
+        .map(|e| e.is_some_and(|e| e > limits.furniture && e <= limits.clutter))
+        .collect();
+    let is_free = |x: usize, y: usize| free.get(y * w + x).is_some_and(|&f| f != 0);
+    let mut face = Vec::new();
+    let mut outlines: Vec<Vec<[u32; 2]>> = vec![Vec::new(); building.len()];
+    for r in &blobs.runs {
+        let l = r.label as usize;
+        if !building[l] && !candidate[l] {
+            continue;
+        }
+        let y = r.y as usize;
+        for x in r.x0 as usize..r.x1 as usize {
+            let outline = (x > 0 && is_free(x - 1, y))
+                || is_free(x + 1, y)
+                || (y > 0 && is_free(x, y - 1))
+                || is_free(x, y + 1);
+            if outline {
+                let p = [x as u32, y as u32];
+                if building[l] {
+                    face.push(p);
+                } else {
+                    outlines[l].push(p);
+                }
+            }
+        }
+    }
+    let free_mask =
+        Mask::from_raw(grid.width, grid.height, free.to_vec()).unwrap_or_else(|| Mask::new(1, 1));
+    let lines = WallLines::new(&face, dominant_orientation(&free_mask), limits.resolution);
+    let areas = blobs.areas();
+    (0..building.len())
+        .map(|l| candidate[l] && !is_wall_piece(areas[l], &outlines[l], &lines))
+        .collect()
 }
 
 /// Whether the island with bounding box `b` (`[x0, y0, x1, y1]`, inclusive)
@@ -119,6 +204,16 @@ mod tests {
     use super::*;
     use crate::imaging::mask_ascii;
 
+    /// Furniture up to `furniture` px, no clutter rule.
+    fn limits(furniture: f64, wall_piece_gap: f64) -> IslandLimits {
+        IslandLimits {
+            furniture,
+            clutter: 0.0,
+            wall_piece_gap,
+            resolution: 0.1,
+        }
+    }
+
     #[test]
     fn small_islands_become_free_walls_stay() {
         // A room with a 2-px table, a 6-px long free-standing wall and a
@@ -134,7 +229,7 @@ mod tests {
              ############",
             0.1,
         );
-        let m = free_without_furniture(&g, 3.0, 0.0);
+        let m = free_without_furniture(&g, &limits(3.0, 0.0));
         let expected = "............
                         .##########.
                         .##########.
@@ -166,7 +261,7 @@ mod tests {
              ################",
             0.1,
         );
-        let m = free_without_furniture(&g, 4.0, 3.0);
+        let m = free_without_furniture(&g, &limits(4.0, 3.0));
         let row = |y: u32| -> String {
             (0..16)
                 .map(|x| if m.get_pixel(x, y)[0] == 0 { '#' } else { '.' })
@@ -174,5 +269,70 @@ mod tests {
         };
         assert_eq!(row(4), "####...####...##", "the pillar stays");
         assert_eq!(row(6), "#..............#", "the desk goes");
+    }
+
+    #[test]
+    fn clutter_goes_bars_and_blocks_stay() {
+        // A 6 m × 3.6 m room at 0.1 m/px holding a ragged 1.5 m cluster
+        // (chairs round a table), a solid 1.2 m × 0.6 m block and a 2 m
+        // free-standing bar 0.2 m thick; furniture up to 1 m, clutter up to
+        // 2.5 m.
+        let (w, h) = (60usize, 36usize);
+        let mut cells = vec![vec!['.'; w]; h];
+        for (y, row) in cells.iter_mut().enumerate() {
+            for (x, c) in row.iter_mut().enumerate() {
+                if x == 0 || y == 0 || x == w - 1 || y == h - 1 {
+                    *c = '#';
+                }
+            }
+        }
+        let cluster = [
+            (5, 5),
+            (19, 5),
+            (12, 5),
+            (5, 19),
+            (19, 19),
+            (12, 19),
+            (5, 12),
+            (19, 12),
+        ];
+        for &(x0, y0) in &cluster {
+            for (dx, dy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                cells[y0 + dy][x0 + dx] = '#';
+            }
+        }
+        let mut fill = |xs: std::ops::Range<usize>, ys: std::ops::Range<usize>| {
+            for y in ys {
+                for x in xs.clone() {
+                    cells[y][x] = '#';
+                }
+            }
+        };
+        // The table in the middle, joined to the chairs by thin legs.
+        fill(12..13, 6..20);
+        fill(6..20, 12..13);
+        fill(30..42, 5..11);
+        fill(30..50, 25..27);
+        let text: Vec<String> = cells.iter().map(|r| r.iter().collect()).collect();
+        let g = OccupancyGrid::from_ascii(&text.join("\n"), 0.1);
+        let freed = |clutter: f64| {
+            let limits = IslandLimits {
+                clutter,
+                ..limits(10.0, 21.0)
+            };
+            let m = free_without_furniture(&g, &limits);
+            let free_at = |x: u32, y: u32| m.get_pixel(x, y)[0] != 0;
+            (free_at(12, 12), free_at(35, 7), free_at(40, 25))
+        };
+        assert_eq!(
+            freed(0.0),
+            (false, false, false),
+            "without the clutter rule all stay"
+        );
+        assert_eq!(
+            freed(25.0),
+            (true, false, false),
+            "the cluster goes, the block and the bar stay"
+        );
     }
 }

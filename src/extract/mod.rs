@@ -31,6 +31,7 @@ mod boundaries;
 mod build;
 mod ccl;
 mod clean;
+mod clutter;
 mod conflicts;
 mod door_choice;
 mod doors;

@@ -182,13 +182,7 @@ fn clean(
     params: &ExtractParams,
     px: &PixelConfig,
 ) -> Result<FreeSpace, ExtractError> {
-    let free = clean_free(
-        grid,
-        px.noise_radius,
-        px.min_free_area,
-        px.furniture_max,
-        px.wall_piece_gap,
-    );
+    let free = clean_free(grid, px.noise_radius, px.min_free_area, &px.islands);
     if free.clean.iter().all(|&p| p == 0) {
         return Err(ExtractError::NoSpace {
             noise_m: params.building.noise_radius_m,

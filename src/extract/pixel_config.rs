@@ -4,6 +4,7 @@
 //! mean something else at another resolution).
 
 use super::doorway::SpanLimits;
+use super::furniture::IslandLimits;
 use super::joins::JoinLimits;
 use super::params::{DoorRule, ExtractParams, Method};
 use super::passages::PassageLimits;
@@ -112,11 +113,8 @@ pub(crate) struct PixelConfig {
     pub noise_radius: f64,
     /// `min_free_area_m2`: smaller free components are dropped.
     pub min_free_area: usize,
-    /// `furniture_max_m`: the largest furniture island's extent.
-    pub furniture_max: f64,
-    /// `wall_gap_width_max_m`: how far a wall piece between two doorways
-    /// may stand from the walls in line with it.
-    pub wall_piece_gap: f64,
+    /// `furniture_max_m` and `clutter_max_m`: the islands treated as free.
+    pub islands: IslandLimits,
     /// Doorway gaps in walls; none with the CCL method or `wall_jamb_m` 0.
     pub gaps: Option<GapLimits>,
     /// The skeleton door rule, when chosen (watershed only).
@@ -167,8 +165,12 @@ impl PixelConfig {
         PixelConfig {
             noise_radius: px(b.noise_radius_m),
             min_free_area: area(i.min_free_area_m2),
-            furniture_max: px(b.furniture_max_m),
-            wall_piece_gap: px(b.wall_gap_width_max_m),
+            islands: IslandLimits {
+                furniture: px(b.furniture_max_m),
+                clutter: px(b.clutter_max_m),
+                wall_piece_gap: px(b.wall_gap_width_max_m),
+                resolution,
+            },
             gaps: (watershed && b.wall_jamb_m > 0.0).then(|| GapLimits {
                 width: (whole(b.door_width_min_m), whole(b.wall_gap_width_max_m)),
                 jamb: whole(b.wall_jamb_m).max(1),

@@ -1,0 +1,242 @@
+//! Clutter or wall: whether an obstacle island standing free in the map
+//! (larger than furniture, up to `clutter_max_m` across) is a piece of the
+//! building or a cluster of chairs, tables and shelves that cuts a room.
+//!
+//! The idea is ROSE²'s decluttering (Luperto et al., RA-L 2022): a
+//! building's walls are straight and run along its few dominant directions;
+//! clutter is neither. An island is a **wall piece** when it is
+//! - a straight bar: its minimum rotated rectangle is at least
+//!   [`BAR_MIN_ELONGATION`] times as long as it is thick;
+//! - a solid block (a pillar, a built-in cabinet): it fills at least
+//!   [`BLOCK_MIN_FILL`] of that rectangle;
+//! - or on the building's wall lines: at least [`ON_LINE_MIN_FRACTION`] of
+//!   its outline lies within [`LINE_TOLERANCE_M`] of a line, along one of
+//!   the map's two dominant directions, on which the walls joined to the
+//!   building run straight for [`WALL_LINE_MIN_M`] (a wall face).
+//!
+//! Anything else is clutter: rooms are segmented as if it were free.
+
+use std::collections::HashSet;
+
+use geo::{ConvexHull, MinimumRotatedRect, MultiPoint, Point};
+
+/// A bar at least this many times as long as thick is a wall piece.
+pub(crate) const BAR_MIN_ELONGATION: f64 = 5.0;
+/// An island filling at least this share of its minimum rotated rectangle
+/// is a solid block.
+pub(crate) const BLOCK_MIN_FILL: f64 = 0.75;
+/// Share of an island's outline on wall lines that makes it a wall piece.
+pub(crate) const ON_LINE_MIN_FRACTION: f64 = 0.4;
+/// Shortest straight run of wall face that makes a wall line (m).
+pub(crate) const WALL_LINE_MIN_M: f64 = 2.5;
+/// How far from a wall line an outline pixel may lie and be on it (m).
+pub(crate) const LINE_TOLERANCE_M: f64 = 0.1;
+/// Longest break in a straight run of wall face (m): a ragged scan.
+const RUN_GAP_M: f64 = 0.1;
+
+/// The wall lines of a map, in pixels: for each of the two dominant
+/// directions, the offsets (in whole pixels across the direction) of the
+/// lines on which a wall face runs straight long enough.
+#[derive(Debug, Clone)]
+pub(crate) struct WallLines {
+    /// Unit vectors across each direction (the axis offsets are taken on).
+    across: [(f64, f64); 2],
+    /// The wall lines' offsets along each `across`.
+    lines: [HashSet<i64>; 2],
+    /// Tolerance in whole pixels.
+    tolerance: i64,
+}
+
+impl WallLines {
+    /// The wall lines through `face` (outline pixels `[x, y]` of the walls
+    /// joined to the building) along `deg` (degrees, image coordinates) and
+    /// a quarter turn from it, for a grid of `resolution` m/px.
+    pub(crate) fn new(face: &[[u32; 2]], deg: f64, resolution: f64) -> WallLines {
+        let (s, c) = deg.to_radians().sin_cos();
+        let across = [(c, s), (-s, c)];
+        let min_run = WALL_LINE_MIN_M / resolution;
+        let gap = (RUN_GAP_M / resolution).round().max(1.0) as i64;
+        let lines = across.map(|a| {
+            let along = (-a.1, a.0);
+            // Each face pixel counts for its own line and the two beside it,
+            // so a face a pixel off straight still makes one run.
+            let mut at: Vec<(i64, i64)> = face
+                .iter()
+                .flat_map(|&p| {
+                    let off = project(p, a);
+                    let t = project(p, along);
+                    (-1..=1).map(move |k| (off + k, t))
+                })
+                .collect();
+            at.sort_unstable();
+            at.dedup();
+            let mut lines = HashSet::new();
+            for line in at.chunk_by(|a, b| a.0 == b.0) {
+                let mut start = line[0].1;
+                for w in line.windows(2) {
+                    if w[1].1 - w[0].1 > gap + 1 {
+                        start = w[1].1;
+                    }
+                    if (w[1].1 - start + 1) as f64 >= min_run {
+                        lines.insert(line[0].0);
+                        break;
+                    }
+                }
+            }
+            lines
+        });
+        WallLines {
+            across,
+            lines,
+            tolerance: (LINE_TOLERANCE_M / resolution).round() as i64,
+        }
+    }
+
+    /// Whether pixel `p` lies on a wall line.
+    fn on_line(&self, p: [u32; 2]) -> bool {
+        self.across.iter().zip(&self.lines).any(|(&a, lines)| {
+            let off = project(p, a);
+            (-self.tolerance..=self.tolerance).any(|k| lines.contains(&(off + k)))
+        })
+    }
+}
+
+/// Pixel `p`'s coordinate along `axis`, rounded.
+fn project(p: [u32; 2], axis: (f64, f64)) -> i64 {
+    (f64::from(p[0]) * axis.0 + f64::from(p[1]) * axis.1).round() as i64
+}
+
+/// Whether the island with `area` pixels and outline pixels `outline`
+/// (`[x, y]`, those with a free 4-neighbour) is a wall piece (see the
+/// module doc).
+pub(crate) fn is_wall_piece(area: usize, outline: &[[u32; 2]], lines: &WallLines) -> bool {
+    if outline.is_empty() {
+        return false;
+    }
+    let bar_or_block = rectangle_sides(outline).is_some_and(|(long, thick)| {
+        long >= BAR_MIN_ELONGATION * thick || area as f64 >= BLOCK_MIN_FILL * long * thick
+    });
+    if bar_or_block {
+        return true;
+    }
+    let on = outline.iter().filter(|&&p| lines.on_line(p)).count();
+    on as f64 >= ON_LINE_MIN_FRACTION * outline.len() as f64
+}
+
+/// The long and the short side (pixels) of the minimum rotated rectangle
+/// round the pixel squares of `outline`.
+fn rectangle_sides(outline: &[[u32; 2]]) -> Option<(f64, f64)> {
+    let corners: MultiPoint<f64> = outline
+        .iter()
+        .flat_map(|&[x, y]| {
+            let (x, y) = (f64::from(x), f64::from(y));
+            [(x, y), (x + 1.0, y), (x, y + 1.0), (x + 1.0, y + 1.0)]
+        })
+        .map(|(x, y)| Point::new(x, y))
+        .collect();
+    let rect = corners.convex_hull().minimum_rotated_rect()?;
+    let c: Vec<_> = rect.exterior().coords().copied().collect();
+    if c.len() < 4 {
+        return None;
+    }
+    let side = |a: usize, b: usize| ((c[a].x - c[b].x).powi(2) + (c[a].y - c[b].y).powi(2)).sqrt();
+    let (a, b) = (side(0, 1), side(1, 2));
+    Some((a.max(b), a.min(b).max(1.0)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Outline pixels of the `#`s of `rows` (a `#` with a non-`#`
+    /// 4-neighbour or on the edge) and their count.
+    fn island(rows: &[&str]) -> (usize, Vec<[u32; 2]>) {
+        let on = |x: i64, y: i64| {
+            y >= 0
+                && x >= 0
+                && rows
+                    .get(y as usize)
+                    .and_then(|r| r.as_bytes().get(x as usize))
+                    == Some(&b'#')
+        };
+        let mut area = 0;
+        let mut outline = Vec::new();
+        for (y, r) in rows.iter().enumerate() {
+            for x in 0..r.len() {
+                let (xi, yi) = (x as i64, y as i64);
+                if on(xi, yi) {
+                    area += 1;
+                    if !(on(xi - 1, yi) && on(xi + 1, yi) && on(xi, yi - 1) && on(xi, yi + 1)) {
+                        outline.push([x as u32, y as u32]);
+                    }
+                }
+            }
+        }
+        (area, outline)
+    }
+
+    fn no_lines() -> WallLines {
+        WallLines::new(&[], 0.0, 0.1)
+    }
+
+    #[test]
+    fn bars_and_blocks_are_wall_pieces() {
+        let (a, o) = island(&["############", "############"]);
+        assert!(
+            is_wall_piece(a, &o, &no_lines()),
+            "a bar 6 times as long as thick"
+        );
+        let (a, o) = island(&["#####", "#####", "#####", "#####"]);
+        assert!(is_wall_piece(a, &o, &no_lines()), "a solid block");
+    }
+
+    #[test]
+    fn a_ragged_cluster_is_clutter() {
+        // Chairs round a table: a sparse blob, neither bar nor block.
+        let rows = [
+            "#...#...#.",
+            "##.###.##.",
+            ".#..#..#..",
+            ".########.",
+            "..#.#.#...",
+            ".##...##..",
+            "#.......##",
+        ];
+        let (a, o) = island(&rows);
+        assert!(!is_wall_piece(a, &o, &no_lines()));
+    }
+
+    #[test]
+    fn a_cluster_along_a_wall_line_is_a_wall_piece() {
+        // A wall face along row 20 from x = 0 to 39 (4 m at 0.1 m/px) and a
+        // ragged island whose outline lies on that row and the one below.
+        let face: Vec<[u32; 2]> = (0..40).map(|x| [x, 20]).collect();
+        let lines = WallLines::new(&face, 0.0, 0.1);
+        let outline: Vec<[u32; 2]> = (50..58).flat_map(|x| [[x, 20], [x, 21]]).collect();
+        assert!(
+            is_wall_piece(10, &outline, &lines),
+            "ragged, but on the wall line"
+        );
+        let off: Vec<[u32; 2]> = outline.iter().map(|&[x, y]| [x, y + 5]).collect();
+        assert!(
+            !is_wall_piece(10, &off, &lines),
+            "half a metre off the line"
+        );
+    }
+
+    #[test]
+    fn a_short_face_makes_no_wall_line() {
+        let face: Vec<[u32; 2]> = (0..20).map(|x| [x, 20]).collect();
+        let lines = WallLines::new(&face, 0.0, 0.1);
+        assert!(!lines.on_line([30, 20]), "2 m of wall is not a wall line");
+        let broken: Vec<[u32; 2]> = (0..40).filter(|x| x % 10 > 1).map(|x| [x, 20]).collect();
+        let lines = WallLines::new(&broken, 0.0, 0.1);
+        assert!(
+            !lines.on_line([30, 20]),
+            "breaks wider than 0.1 m end a run"
+        );
+        let ragged: Vec<[u32; 2]> = (0..40).filter(|x| x % 10 > 0).map(|x| [x, 20]).collect();
+        let lines = WallLines::new(&ragged, 0.0, 0.1);
+        assert!(lines.on_line([30, 20]), "0.1 m breaks do not");
+    }
+}
