@@ -71,11 +71,9 @@ pub(crate) fn free_without_furniture(grid: &OccupancyGrid, limits: &IslandLimits
         .map(|e| e.is_some_and(|e| e > limits.furniture && e <= limits.clutter))
         .collect();
     if candidate.iter().any(|&c| c) {
-        for (l, clutter) in clutter_islands(grid, &free, &blobs, &extent, limits)
-            .into_iter()
-            .enumerate()
-        {
-            island[l] |= clutter;
+        let clutter = clutter_islands(grid, &free, &blobs, &extent, &candidate, limits);
+        for (island, clutter) in island.iter_mut().zip(clutter) {
+            *island |= clutter;
         }
     }
     let mut data = free;
@@ -97,24 +95,22 @@ pub(crate) fn free_without_furniture(grid: &OccupancyGrid, limits: &IslandLimits
     Mask::from_raw(w, h, data).unwrap_or_else(|| Mask::new(w, h))
 }
 
-/// Which islands (by label) larger than furniture and at most
-/// `limits.clutter` across are clutter: no wall piece by the wall lines of
-/// the components that are no island of either size (the building).
+/// Which of the `candidate` islands (by label; larger than furniture and
+/// at most `limits.clutter` across) are clutter: no wall piece by the wall
+/// lines of the components that are no island of either size (the
+/// building).
 fn clutter_islands(
     grid: &OccupancyGrid,
     free: &[u8],
     blobs: &RunLabels,
     extent: &[Option<f64>],
+    candidate: &[bool],
     limits: &IslandLimits,
 ) -> Vec<bool> {
     let w = grid.width as usize;
     let building: Vec<bool> = extent
         .iter()
         .map(|e| e.is_none_or(|e| e > limits.clutter))
-        .collect();
-    let candidate: Vec<bool> = extent
-        .iter()
-        .map(|e| e.is_some_and(|e| e > limits.furniture && e <= limits.clutter))
         .collect();
     let is_free = |x: usize, y: usize| free.get(y * w + x).is_some_and(|&f| f != 0);
     let mut face = Vec::new();
