@@ -23,6 +23,7 @@ mod edits_props;
 mod eval_doors;
 mod eval_loo;
 mod extract;
+mod extract_clutter;
 mod extract_doors;
 mod extract_tiling;
 mod extract_valid_props;
