@@ -55,6 +55,7 @@ pub(crate) fn clean_free(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::extract::clutter::LineLimits;
 
     #[test]
     fn rays_and_islands_go_rooms_stay() {
@@ -74,7 +75,11 @@ mod tests {
             furniture: 0.0,
             clutter: 0.0,
             wall_piece_gap: 0.0,
-            resolution: 0.1,
+            lines: LineLimits {
+                min_run: 25.0,
+                gap: 1,
+                tolerance: 1,
+            },
         };
         let f = clean_free(&g, 1.0, 5, &none);
         let w = g.width as usize;

@@ -10,9 +10,10 @@
 //! - a solid block (a pillar, a built-in cabinet): it fills at least
 //!   [`BLOCK_MIN_FILL`] of that rectangle;
 //! - or on the building's wall lines: at least [`ON_LINE_MIN_FRACTION`] of
-//!   its outline lies within [`LINE_TOLERANCE_M`] of a line, along one of
-//!   the map's two dominant directions, on which the walls joined to the
-//!   building run straight for [`WALL_LINE_MIN_M`] (a wall face).
+//!   its outline lies within [`LineLimits::tolerance`] of a line, along one
+//!   of the map's two dominant directions, on which the walls joined to the
+//!   building run straight for [`LineLimits::min_run`] (a wall face; the
+//!   lengths are set in metres in `pixel_config.rs`).
 //!
 //! Anything else is clutter: rooms are segmented as if it were free.
 
@@ -27,12 +28,18 @@ pub(crate) const BAR_MIN_ELONGATION: f64 = 5.0;
 pub(crate) const BLOCK_MIN_FILL: f64 = 0.75;
 /// Share of an island's outline on wall lines that makes it a wall piece.
 pub(crate) const ON_LINE_MIN_FRACTION: f64 = 0.4;
-/// Shortest straight run of wall face that makes a wall line (m).
-pub(crate) const WALL_LINE_MIN_M: f64 = 2.5;
-/// How far from a wall line an outline pixel may lie and be on it (m).
-pub(crate) const LINE_TOLERANCE_M: f64 = 0.1;
-/// Longest break in a straight run of wall face (m): a ragged scan.
-const RUN_GAP_M: f64 = 0.1;
+
+/// What makes a wall line, in pixels.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct LineLimits {
+    /// Shortest straight run of wall face that makes a wall line.
+    pub min_run: f64,
+    /// Longest break bridged in such a run (a ragged scan), whole pixels.
+    pub gap: i64,
+    /// How far from a wall line an outline pixel may lie and be on it,
+    /// whole pixels.
+    pub tolerance: i64,
+}
 
 /// The wall lines of a map, in pixels: for each of the two dominant
 /// directions, the offsets (in whole pixels across the direction) of the
@@ -50,12 +57,11 @@ pub(crate) struct WallLines {
 impl WallLines {
     /// The wall lines through `face` (outline pixels `[x, y]` of the walls
     /// joined to the building) along `deg` (degrees, image coordinates) and
-    /// a quarter turn from it, for a grid of `resolution` m/px.
-    pub(crate) fn new(face: &[[u32; 2]], deg: f64, resolution: f64) -> WallLines {
+    /// a quarter turn from it.
+    pub(crate) fn new(face: &[[u32; 2]], deg: f64, limits: &LineLimits) -> WallLines {
         let (s, c) = deg.to_radians().sin_cos();
         let across = [(c, s), (-s, c)];
-        let min_run = WALL_LINE_MIN_M / resolution;
-        let gap = (RUN_GAP_M / resolution).round().max(1.0) as i64;
+        let (min_run, gap) = (limits.min_run, limits.gap);
         let lines = across.map(|a| {
             let along = (-a.1, a.0);
             // Each face pixel counts for its own line and the two beside it,
@@ -88,7 +94,7 @@ impl WallLines {
         WallLines {
             across,
             lines,
-            tolerance: (LINE_TOLERANCE_M / resolution).round() as i64,
+            tolerance: limits.tolerance,
         }
     }
 
@@ -175,8 +181,16 @@ mod tests {
         (area, outline)
     }
 
+    /// The limits `pixel_config` sets at 0.1 m/px: 2.5 m runs, 0.1 m
+    /// breaks and tolerance.
+    const AT_10_CM: LineLimits = LineLimits {
+        min_run: 25.0,
+        gap: 1,
+        tolerance: 1,
+    };
+
     fn no_lines() -> WallLines {
-        WallLines::new(&[], 0.0, 0.1)
+        WallLines::new(&[], 0.0, &AT_10_CM)
     }
 
     #[test]
@@ -211,7 +225,7 @@ mod tests {
         // A wall face along row 20 from x = 0 to 39 (4 m at 0.1 m/px) and a
         // ragged island whose outline lies on that row and the one below.
         let face: Vec<[u32; 2]> = (0..40).map(|x| [x, 20]).collect();
-        let lines = WallLines::new(&face, 0.0, 0.1);
+        let lines = WallLines::new(&face, 0.0, &AT_10_CM);
         let outline: Vec<[u32; 2]> = (50..58).flat_map(|x| [[x, 20], [x, 21]]).collect();
         assert!(
             is_wall_piece(10, &outline, &lines),
@@ -227,16 +241,16 @@ mod tests {
     #[test]
     fn a_short_face_makes_no_wall_line() {
         let face: Vec<[u32; 2]> = (0..20).map(|x| [x, 20]).collect();
-        let lines = WallLines::new(&face, 0.0, 0.1);
+        let lines = WallLines::new(&face, 0.0, &AT_10_CM);
         assert!(!lines.on_line([30, 20]), "2 m of wall is not a wall line");
         let broken: Vec<[u32; 2]> = (0..40).filter(|x| x % 10 > 1).map(|x| [x, 20]).collect();
-        let lines = WallLines::new(&broken, 0.0, 0.1);
+        let lines = WallLines::new(&broken, 0.0, &AT_10_CM);
         assert!(
             !lines.on_line([30, 20]),
             "breaks wider than 0.1 m end a run"
         );
         let ragged: Vec<[u32; 2]> = (0..40).filter(|x| x % 10 > 0).map(|x| [x, 20]).collect();
-        let lines = WallLines::new(&ragged, 0.0, 0.1);
+        let lines = WallLines::new(&ragged, 0.0, &AT_10_CM);
         assert!(lines.on_line([30, 20]), "0.1 m breaks do not");
     }
 }

@@ -4,11 +4,11 @@
 //! free space while the rooms are segmented, so a room is found as if it
 //! were empty and the pixels under its furniture belong to it.
 
-use super::clutter::{WallLines, is_wall_piece};
+use super::clutter::{LineLimits, WallLines, is_wall_piece};
 use crate::grid::{Cell, OccupancyGrid};
 use crate::imaging::{Mask, RunLabels, dominant_orientation, label_runs};
 
-/// Sizes of the islands treated as free, in pixels.
+/// Which islands are treated as free, in pixels.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct IslandLimits {
     /// `furniture_max_m`: islands at most this long on both sides are
@@ -20,8 +20,8 @@ pub(crate) struct IslandLimits {
     /// How far a wall piece between two doorways may stand from the walls
     /// in line with it (`wall_gap_width_max_m`).
     pub wall_piece_gap: f64,
-    /// Metres per pixel (the wall-line lengths are in metres).
-    pub resolution: f64,
+    /// What makes a wall line for the clutter rule.
+    pub lines: LineLimits,
 }
 
 /// The free mask (255 free) of `grid` in which every 8-connected component
@@ -138,7 +138,7 @@ fn clutter_islands(
     }
     let free_mask =
         Mask::from_raw(grid.width, grid.height, free.to_vec()).unwrap_or_else(|| Mask::new(1, 1));
-    let lines = WallLines::new(&face, dominant_orientation(&free_mask), limits.resolution);
+    let lines = WallLines::new(&face, dominant_orientation(&free_mask), &limits.lines);
     let areas = blobs.areas();
     (0..building.len())
         .map(|l| candidate[l] && !is_wall_piece(areas[l], &outlines[l], &lines))
@@ -206,7 +206,11 @@ mod tests {
             furniture,
             clutter: 0.0,
             wall_piece_gap,
-            resolution: 0.1,
+            lines: LineLimits {
+                min_run: 25.0,
+                gap: 1,
+                tolerance: 1,
+            },
         }
     }
 

@@ -3,6 +3,7 @@
 //! (kept in metres here, so no stage holds a length in pixels that would
 //! mean something else at another resolution).
 
+use super::clutter::LineLimits;
 use super::doorway::SpanLimits;
 use super::furniture::IslandLimits;
 use super::joins::JoinLimits;
@@ -16,6 +17,14 @@ use super::wall_gaps::GapLimits;
 /// crossing need not share a pixel. 2 px on the 0.05 m/px maps the rule
 /// was measured on.
 const SKELETON_NEAR_M: f64 = 0.1;
+
+/// The clutter rule's wall lines (`clutter.rs`): the shortest straight run
+/// of wall face that makes one, the longest break bridged in it (a ragged
+/// scan, at least a pixel) and how far from it an island's outline may
+/// lie and be on it.
+const WALL_LINE_MIN_M: f64 = 2.5;
+const WALL_LINE_GAP_M: f64 = 0.1;
+const WALL_LINE_TOLERANCE_M: f64 = 0.1;
 
 /// How far (m) from a door border's centre, across it, its doorway's
 /// narrowest chord is sought.
@@ -169,7 +178,11 @@ impl PixelConfig {
                 furniture: px(b.furniture_max_m),
                 clutter: px(b.clutter_max_m),
                 wall_piece_gap: px(b.wall_gap_width_max_m),
-                resolution,
+                lines: LineLimits {
+                    min_run: px(WALL_LINE_MIN_M),
+                    gap: px(WALL_LINE_GAP_M).round().max(1.0) as i64,
+                    tolerance: px(WALL_LINE_TOLERANCE_M).round() as i64,
+                },
             },
             gaps: (watershed && b.wall_jamb_m > 0.0).then(|| GapLimits {
                 width: (whole(b.door_width_min_m), whole(b.wall_gap_width_max_m)),
