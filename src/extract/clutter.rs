@@ -19,6 +19,8 @@
 
 use std::collections::HashSet;
 
+use super::wall_runs::{self, WallRuns};
+
 use geo::{ConvexHull, MinimumRotatedRect, MultiPoint, Point};
 
 /// A bar at least this many times as long as thick is a wall piece.
@@ -59,41 +61,10 @@ impl WallLines {
     /// joined to the building) along `deg` (degrees, image coordinates) and
     /// a quarter turn from it.
     pub(crate) fn new(face: &[[u32; 2]], deg: f64, limits: &LineLimits) -> WallLines {
-        let (s, c) = deg.to_radians().sin_cos();
-        let across = [(c, s), (-s, c)];
-        let (min_run, gap) = (limits.min_run, limits.gap);
-        let lines = across.map(|a| {
-            let along = (-a.1, a.0);
-            // Each face pixel counts for its own line and the two beside it,
-            // so a face a pixel off straight still makes one run.
-            let mut at: Vec<(i64, i64)> = face
-                .iter()
-                .flat_map(|&p| {
-                    let off = project(p, a);
-                    let t = project(p, along);
-                    (-1..=1).map(move |k| (off + k, t))
-                })
-                .collect();
-            at.sort_unstable();
-            at.dedup();
-            let mut lines = HashSet::new();
-            for line in at.chunk_by(|a, b| a.0 == b.0) {
-                let mut start = line[0].1;
-                for w in line.windows(2) {
-                    if w[1].1 - w[0].1 > gap + 1 {
-                        start = w[1].1;
-                    }
-                    if (w[1].1 - start + 1) as f64 >= min_run {
-                        lines.insert(line[0].0);
-                        break;
-                    }
-                }
-            }
-            lines
-        });
+        let runs = WallRuns::new(face, deg, limits.min_run, limits.gap);
         WallLines {
-            across,
-            lines,
+            across: [runs.across(0), runs.across(1)],
+            lines: [0, 1].map(|k| runs.lines(k).collect()),
             tolerance: limits.tolerance,
         }
     }
@@ -109,7 +80,7 @@ impl WallLines {
 
 /// Pixel `p`'s coordinate along `axis`, rounded.
 fn project(p: [u32; 2], axis: (f64, f64)) -> i64 {
-    (f64::from(p[0]) * axis.0 + f64::from(p[1]) * axis.1).round() as i64
+    wall_runs::project([f64::from(p[0]), f64::from(p[1])], axis).round() as i64
 }
 
 /// Whether the island with `area` pixels and outline pixels `outline`

@@ -6,6 +6,7 @@ use std::collections::HashSet;
 
 use super::doors::Border;
 use super::stubs::compared_width;
+use super::wall_support::WallSupport;
 
 /// What makes a border a possible door or an open join, in pixels.
 #[derive(Debug, Clone, Copy)]
@@ -27,15 +28,17 @@ pub(crate) struct JoinLimits {
 /// The region pairs of `all` to merge: pairs with a border that crosses no
 /// doorway-gap pixel (`gap_px`) and is either wider than any door and at
 /// least `fraction` of the narrower region's widest inscribed diameter,
-/// or door-wide but no constriction of the narrower region; both widths
-/// taken where the regions meet (`widest`, px, within `Border::near_px`;
-/// see `stubs::compared_width`).
+/// or door-wide but no constriction of the narrower region, or door-wide
+/// without the building's walls round it (`support`, see `wall_support`);
+/// both widths taken where the regions meet (`widest`, px, within
+/// `Border::near_px`; see `stubs::compared_width`).
 pub(crate) fn open_joins(
     all: &[Border],
     widest: &[f64],
     is_passage: &[bool],
     gap_px: &HashSet<u32>,
     limits: &JoinLimits,
+    support: Option<&WallSupport>,
 ) -> Vec<(u32, u32)> {
     if limits.fraction <= 0.0 {
         return Vec::new();
@@ -46,10 +49,11 @@ pub(crate) fn open_joins(
             let narrow = compared_width(b, widest, is_passage);
             let w = b.width_px;
             let wide_open = w > limits.door_max_px && w >= limits.fraction * narrow;
-            let no_constriction = w >= limits.door_min_px
-                && w <= limits.door_max_px
-                && w > limits.constriction * narrow;
-            (wide_open || no_constriction) && !b.pixels.iter().any(|p| gap_px.contains(p))
+            let door_wide = w >= limits.door_min_px && w <= limits.door_max_px;
+            let no_constriction = door_wide && w > limits.constriction * narrow;
+            let no_wall = door_wide && support.is_some_and(|s| s.lacks(&b.pixels));
+            (wide_open || no_constriction || no_wall)
+                && !b.pixels.iter().any(|p| gap_px.contains(p))
         })
         .map(|b| b.pair)
         .collect();
@@ -91,7 +95,7 @@ mod tests {
             // Wider than any door, more than half the hall: joins.
             border((3, 4), 60.0, vec![7, 8]),
         ];
-        let joins = open_joins(&all, &widest, &[false; 5], &HashSet::new(), &LIMITS);
+        let joins = open_joins(&all, &widest, &[false; 5], &HashSet::new(), &LIMITS, None);
         assert_eq!(joins, vec![(1, 2), (3, 4)]);
     }
 
@@ -100,11 +104,11 @@ mod tests {
         let widest = [0.0, 40.0, 40.0];
         let all = [border((1, 2), 32.0, vec![1, 2])];
         let gap: HashSet<u32> = [2].into_iter().collect();
-        assert!(open_joins(&all, &widest, &[false; 3], &gap, &LIMITS).is_empty());
+        assert!(open_joins(&all, &widest, &[false; 3], &gap, &LIMITS, None).is_empty());
         let off = JoinLimits {
             fraction: 0.0,
             ..LIMITS
         };
-        assert!(open_joins(&all, &widest, &[false; 3], &HashSet::new(), &off).is_empty());
+        assert!(open_joins(&all, &widest, &[false; 3], &HashSet::new(), &off, None).is_empty());
     }
 }

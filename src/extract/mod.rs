@@ -58,6 +58,8 @@ mod skeleton_doors;
 mod stubs;
 mod tidy;
 mod wall_gaps;
+mod wall_runs;
+mod wall_support;
 mod wandering_doors;
 
 pub use error::ExtractError;

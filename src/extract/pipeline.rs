@@ -24,9 +24,10 @@ use super::segment::segment_basins;
 use super::skeleton_doors::skeleton_doorways;
 use super::tidy::tidy_labels;
 use super::wall_gaps::{close_gaps, reopen_gaps, wall_gaps};
+use super::wall_support::WallSupport;
 use super::{ExtractError, ExtractParams};
 use crate::grid::OccupancyGrid;
-use crate::imaging::{Labels, distance_to_background};
+use crate::imaging::{Labels, distance_to_background, dominant_orientation};
 use crate::model::{Nrg, SpaceId};
 
 /// The result of [`extract`].
@@ -99,8 +100,10 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         timings: Vec::new(),
     };
     let mut free = clean(grid, params, &px)?;
+    // The building's two directions, from the free space without noise.
+    let deg = dominant_orientation(&free.clean);
     let gaps = match &px.gaps {
-        Some(limits) => wall_gaps(&free.clean, *limits),
+        Some(limits) => wall_gaps(&free.clean, deg, *limits),
         None => Vec::new(),
     };
     clock.lap("clean");
@@ -122,7 +125,8 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     clock.lap("merge");
     regions.split_passages(&px);
     clock.lap("passages");
-    regions.join_open(&gaps, &px);
+    let support = WallSupport::new(grid, deg, px.support);
+    regions.join_open(&gaps, &support, &px);
     clock.lap("joins");
     let cues = DoorCues {
         gaps: &gaps,

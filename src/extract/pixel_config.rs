@@ -11,6 +11,7 @@ use super::params::{DoorRule, ExtractParams, Method};
 use super::passages::PassageLimits;
 use super::stubs::StubLimits;
 use super::wall_gaps::GapLimits;
+use super::wall_support::SupportLimits;
 
 /// A border is a door under `DoorRule::Skeleton` if it passes this close
 /// (m) to a doorway point: the watershed border and the skeletons'
@@ -25,6 +26,22 @@ const SKELETON_NEAR_M: f64 = 0.1;
 const WALL_LINE_MIN_M: f64 = 2.5;
 const WALL_LINE_GAP_M: f64 = 0.1;
 const WALL_LINE_TOLERANCE_M: f64 = 0.1;
+
+/// The wall support rule (`wall_support.rs`), in metres: a run of wall
+/// face this long supports a doorway by itself; in-line runs this long at
+/// both ends support it as a pair; runs may lie this far across the
+/// doorway's line from an end and end this far along it; a long run this
+/// near a doorway's middle shows that the walls there follow the dominant
+/// directions. Measured on the 19 development buildings (benches/README.md,
+/// "Wall support"): no IPA map changes; door precision rises on three of
+/// the six ROSE² maps and falls on none. A pair run of 0.8 m loses most of
+/// that gain; 1.2 m loses office_e_furnitures a door (its 0.95 m wall
+/// stubs between diagonal walls).
+const SUPPORT_RUN_M: f64 = 1.5;
+const SUPPORT_PAIR_RUN_M: f64 = 1.0;
+const SUPPORT_TOLERANCE_M: f64 = 0.5;
+const SUPPORT_REACH_M: f64 = 0.6;
+const SUPPORT_NEAR_M: f64 = 2.0;
 
 /// How far (m) from a door border's centre, across it, its doorway's
 /// narrowest chord is sought.
@@ -139,6 +156,8 @@ pub(crate) struct PixelConfig {
     pub border_join: i64,
     /// Door widths, the constriction and the open-join fraction.
     pub doors: JoinLimits,
+    /// Which door-wide constrictions the building's walls support.
+    pub support: SupportLimits,
     /// How far from a border its regions' widths are measured.
     pub near_reach: f64,
     /// How far a door found mid-passage may move to the passage's mouth
@@ -220,6 +239,14 @@ impl PixelConfig {
                 door_max_px: px(b.door_width_max_m),
                 constriction: i.door_constriction,
                 fraction: i.open_join_fraction,
+            },
+            support: SupportLimits {
+                long_run: px(SUPPORT_RUN_M),
+                pair_run: px(SUPPORT_PAIR_RUN_M),
+                gap: px(WALL_LINE_GAP_M).round().max(1.0) as i64,
+                tolerance: px(SUPPORT_TOLERANCE_M).round() as i64,
+                reach: px(SUPPORT_REACH_M),
+                near: px(SUPPORT_NEAR_M),
             },
             near_reach: NEAR_REACH_DOORS * px(b.door_width_max_m),
             passage: PassageLimits {

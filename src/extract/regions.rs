@@ -11,6 +11,7 @@ use super::merge::{merge_pairs, merge_small};
 use super::pixel_config::PixelConfig;
 use super::stubs::{passage_labels, split_off_passages};
 use super::wall_gaps::WallGap;
+use super::wall_support::WallSupport;
 use crate::imaging::{Labels, max_distance};
 
 /// The regions of one map between segmentation and doors.
@@ -70,7 +71,7 @@ impl Regions {
 
     /// Stage `joins`: regions that meet where no doorway divides them are
     /// one (see `joins`); afterwards every border is known.
-    pub(crate) fn join_open(&mut self, gaps: &[WallGap], px: &PixelConfig) {
+    pub(crate) fn join_open(&mut self, gaps: &[WallGap], support: &WallSupport, px: &PixelConfig) {
         self.borders = self.measured_borders(px);
         let gap_px: HashSet<u32> = gaps.iter().flat_map(|g| g.line.iter().copied()).collect();
         let joins = open_joins(
@@ -79,6 +80,7 @@ impl Regions {
             &self.is_passage,
             &gap_px,
             &px.doors,
+            Some(support),
         );
         if !joins.is_empty() {
             merge_pairs(&mut self.labels, &joins);

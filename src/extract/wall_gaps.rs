@@ -5,7 +5,7 @@
 //! distance transform shows no constriction.
 
 use super::interior::neighbours;
-use crate::imaging::{Labels, Mask, dominant_orientation, line_pixels, turn_mask};
+use crate::imaging::{Labels, Mask, line_pixels, turn_mask};
 
 /// One doorway gap: the line across it (pixels, row-major indices) at the
 /// middle of the wall's thickness, and its width in pixels.
@@ -30,11 +30,11 @@ pub(crate) struct GapLimits {
 
 /// Finds doorway gaps in the walls of `free` (non-zero = free; everything
 /// else is wall for this purpose) that run along the map's two dominant
-/// directions: the map is turned so they lie along rows and columns, gaps
+/// directions (`deg` and a quarter turn from it, degrees, see
+/// `imaging::dominant_orientation`): the map is turned so they lie along rows and columns, gaps
 /// are found there and their lines drawn back into the map (4-connected,
 /// reaching a pixel and a half into the jambs, free pixels only).
-pub(crate) fn wall_gaps(free: &Mask, limits: GapLimits) -> Vec<WallGap> {
-    let deg = dominant_orientation(free);
+pub(crate) fn wall_gaps(free: &Mask, deg: f64, limits: GapLimits) -> Vec<WallGap> {
     if deg.min(90.0 - deg) < 0.5 {
         return axis_gaps(free, limits);
     }
@@ -252,7 +252,7 @@ fn gaps_in_line(len: usize, is_free: impl Fn(usize) -> bool, limits: GapLimits) 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::imaging::ascii_mask;
+    use crate::imaging::{ascii_mask, dominant_orientation};
 
     /// `.` free, `#` wall.
     fn free_mask(text: &str) -> Mask {
@@ -316,7 +316,7 @@ mod tests {
             jamb: 4,
             depth: 4,
         };
-        let g = wall_gaps(&m, limits);
+        let g = wall_gaps(&m, dominant_orientation(&m), limits);
         assert_eq!(g.len(), 1, "{g:?}");
         assert!((9..=11).contains(&g[0].width_px));
         // The line lies across the doorway: near the centre, 10-14 px long.
