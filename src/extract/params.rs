@@ -99,8 +99,11 @@ pub struct ExtractParams {
 pub struct BuildingPriors {
     /// Borders narrower than this, or shorter (fewer pixels along the
     /// border, both sides counted), are corner contacts, not doorways: no
-    /// door. Default 0.4 m (twice `noise_radius_m`: narrower passages were
-    /// removed as noise anyway).
+    /// door. Default 0.3 m: passages narrower than twice `noise_radius_m`
+    /// are removed as noise anyway, and a border's width (twice its largest
+    /// distance to an obstacle) runs short of its passage where scan specks
+    /// line a doorway on a real map; leave-one-building-out picks 0.25–0.3
+    /// over 0.4 for every development building (benches/README.md).
     pub door_width_min_m: f64,
     /// A boundary between two spaces whose passage is at most this wide is a
     /// door; wider boundaries are open connections. Default 1.8 m (double
@@ -249,7 +252,7 @@ impl Default for ExtractParams {
 impl Default for BuildingPriors {
     fn default() -> Self {
         BuildingPriors {
-            door_width_min_m: 0.4,
+            door_width_min_m: 0.3,
             door_width_max_m: 1.8,
             wall_gap_width_max_m: 2.1,
             wall_jamb_m: 0.3,

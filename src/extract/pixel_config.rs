@@ -287,7 +287,7 @@ mod tests {
         assert_eq!((fine.min_room_area, coarse.min_room_area), (400, 100));
         assert_eq!(fine.passage.window, 72);
         let gaps = fine.gaps.unwrap();
-        assert_eq!((gaps.width, gaps.jamb, gaps.depth), ((8, 42), 6, 24));
+        assert_eq!((gaps.width, gaps.jamb, gaps.depth), ((6, 42), 6, 24));
         assert!((fine.span.max_width - 1.15 * 42.0).abs() < 1e-9);
         assert_eq!(fine.skeleton.map(|s| s.near), None, "constriction rule");
         let skeleton = ExtractParams {
