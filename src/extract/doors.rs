@@ -3,7 +3,7 @@
 
 use std::collections::{BTreeMap, HashSet, VecDeque};
 
-use super::doorway::{DoorSpan, SpanLimits, border_line, door_span};
+use super::doorway::{DoorSpan, Pixel, SpanLimits, border_line, door_span};
 use super::wandering_doors::{DoorToCut, Scratch, cut_along};
 use crate::imaging::Labels;
 
@@ -139,7 +139,7 @@ fn stretches(list: &[Crossing], w: usize, join_px: i64) -> Vec<Vec<usize>> {
 /// `dist` is each pixel's distance to the nearest obstacle).
 pub(crate) fn cut_doors(
     labels: &Labels,
-    walls: Option<&[bool]>,
+    outside: Option<&[Pixel]>,
     doors: &[&Border],
     dist: &[f32],
     limits: &SpanLimits,
@@ -150,7 +150,7 @@ pub(crate) fn cut_doors(
     let mut spanned: Vec<(u32, &Border, DoorSpan)> = Vec::new();
     for (k, door) in doors.iter().enumerate() {
         let label = labels.count + 1 + k as u32;
-        match door_span(labels, walls, door.pair, &door.pixels, limits) {
+        match door_span(labels, outside, door.pair, &door.pixels, limits) {
             Some(span) => {
                 fill_span(labels, &mut out, door, &span, label);
                 lines.push(Some(span.line));
@@ -183,7 +183,7 @@ pub(crate) fn cut_doors(
             pixels: [of(door.pair.0), of(door.pair.1)],
             siblings: &siblings,
         };
-        let line = cut_along(labels, walls, &mut out, &cut, limits, &mut scratch);
+        let line = cut_along(labels, outside, &mut out, &cut, limits, &mut scratch);
         let kept = line.is_none();
         lines[k] = line.or_else(|| border_line(labels, door.pair, &door.pixels, dist));
         kept

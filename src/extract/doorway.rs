@@ -14,7 +14,7 @@
 //! them, see [`Pixel`]); it ends at a wall.
 
 use crate::grid::{Cell, OccupancyGrid};
-use crate::imaging::Labels;
+use crate::imaging::{Labels, Mask, label_runs};
 
 /// Limits of [`door_span`], in pixels.
 #[derive(Debug, Clone, Copy)]
@@ -116,30 +116,29 @@ impl DoorSpan {
 /// The span of the door across the border between `pair` whose pixels
 /// (on both sides) are `pixels`, in the free space of `labels` (non-zero
 /// = free): the throat nearest the border's centre and the opening
-/// through the wall around it. `walls` marks the pixels that are surely
-/// walls (the map's occupied cells and their halo); other pixels outside
-/// `labels` are [`Pixel::Noise`]; with `None` every pixel outside `labels`
-/// is a wall. None when the border crosses no bounded opening (no chord
+/// through the wall around it. `outside` says what each pixel outside
+/// `labels` is to a chord (see [`outside_pixels`]); with `None` every
+/// pixel outside `labels` is a wall. None when the border crosses no bounded opening (no chord
 /// through its centre shorter than `max_width`).
 pub(crate) fn door_span(
     labels: &Labels,
-    walls: Option<&[bool]>,
+    outside: Option<&[Pixel]>,
     pair: (u32, u32),
     pixels: &[u32],
     limits: &SpanLimits,
 ) -> Option<DoorSpan> {
-    let pixel = classifier(labels, walls);
+    let pixel = classifier(labels, outside);
     let (centre, normal) = border_frame(labels, pair, pixels)?;
     let throat = throat(&pixel, centre, normal, limits)?;
     Some(span(&pixel, &throat, limits))
 }
 
-/// What each pixel is to a chord: free where `labels` is non-zero, a wall
-/// where `walls` says so (every pixel outside `labels` with `None`) and
-/// beyond the image, noise otherwise (see [`door_span`]).
+/// What each pixel is to a chord: free where `labels` is non-zero,
+/// elsewhere what `outside` says (a wall with `None`), and a wall beyond
+/// the image (see [`door_span`]).
 pub(super) fn classifier<'a>(
     labels: &'a Labels,
-    walls: Option<&'a [bool]>,
+    outside: Option<&'a [Pixel]>,
 ) -> impl Fn(i64, i64) -> Pixel + 'a {
     let (w, h) = (i64::from(labels.width), i64::from(labels.height));
     move |x: i64, y: i64| {
@@ -149,10 +148,8 @@ pub(super) fn classifier<'a>(
         let i = (y * w + x) as usize;
         if labels.data[i] != 0 {
             Pixel::Free
-        } else if walls.is_none_or(|walls| walls.get(i).is_none_or(|&wall| wall)) {
-            Pixel::Wall
         } else {
-            Pixel::Noise
+            outside.map_or(Pixel::Wall, |o| o.get(i).copied().unwrap_or(Pixel::Wall))
         }
     }
 }
@@ -221,11 +218,11 @@ pub(super) fn border_frame(
 /// What a chord meets at a pixel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Pixel {
-    /// Free space of the map's regions.
+    /// Free space of the map's regions, or a speck standing free in the
+    /// map that a chord passes through (see [`outside_pixels`]).
     Free,
     /// Not free, but not surely a wall either: a speck of an unknown or
-    /// uncertain grey (JPEG artefacts, a stray ray), a free pixel the
-    /// noise filter took.
+    /// uncertain grey (JPEG artefacts, a stray ray).
     Noise,
     /// A wall pixel (an occupied cell or one next to it), or beyond the
     /// map.
@@ -498,12 +495,54 @@ pub(super) fn span(
     }
 }
 
-/// Pixels that are surely walls: occupied cells, and cells next to one
-/// (8-neighbours: the uncertain halo of a scanned wall, a blurred drawn
-/// wall). A 3 × 3 dilation, by rows then by columns.
-pub(crate) fn wall_pixels(grid: &OccupancyGrid) -> Vec<bool> {
+/// What each pixel outside the regions is to a doorway chord:
+/// - [`Pixel::Wall`]: an occupied cell or a cell next to one (8-neighbours:
+///   the uncertain halo of a scanned wall, a blurred drawn wall; a 3 × 3
+///   dilation, by rows then by columns);
+/// - [`Pixel::Free`]: a cell of a **speck**, an 8-connected piece of
+///   non-free cells standing free (off the image's edge) and at most
+///   `speck_px` across on both sides (a stray return beside a jamb, a scan
+///   artefact in a doorway), or a free cell the noise filter took (round
+///   such a speck, in a jamb's corner): chords run through them, so they
+///   do not shorten the doorway;
+/// - [`Pixel::Noise`] otherwise (an uncertain grey).
+pub(crate) fn outside_pixels(grid: &OccupancyGrid, speck_px: f64) -> Vec<Pixel> {
     let w = grid.width as usize;
-    let occupied: Vec<bool> = grid.cells.iter().map(|c| *c == Cell::Occupied).collect();
+    let blocked: Vec<u8> = grid
+        .cells
+        .iter()
+        .map(|c| if *c == Cell::Free { 0 } else { 255 })
+        .collect();
+    let speck = Mask::from_raw(grid.width, grid.height, blocked)
+        .map(|m| {
+            let pieces = label_runs(&m, true);
+            let edge = pieces.touches_border();
+            let small: Vec<bool> = pieces
+                .bounding_boxes()
+                .iter()
+                .zip(&edge)
+                .map(|(b, &edge)| {
+                    let across = |lo: u32, hi: u32| f64::from(hi.saturating_sub(lo) + 1);
+                    !edge
+                        && b[0] != u32::MAX
+                        && across(b[0], b[2]) <= speck_px
+                        && across(b[1], b[3]) <= speck_px
+                })
+                .collect();
+            let mut speck = vec![false; grid.cells.len()];
+            for r in pieces.runs.iter().filter(|r| small[r.label as usize]) {
+                let i = r.y as usize * w;
+                speck[i + r.x0 as usize..i + r.x1 as usize].fill(true);
+            }
+            speck
+        })
+        .unwrap_or_else(|| vec![false; grid.cells.len()]);
+    let occupied: Vec<bool> = grid
+        .cells
+        .iter()
+        .zip(&speck)
+        .map(|(c, &s)| *c == Cell::Occupied && !s)
+        .collect();
     let mut rows = occupied.clone();
     for (row, out) in occupied.chunks(w.max(1)).zip(rows.chunks_mut(w.max(1))) {
         for x in 0..row.len() {
@@ -511,7 +550,16 @@ pub(crate) fn wall_pixels(grid: &OccupancyGrid) -> Vec<bool> {
         }
     }
     (0..rows.len())
-        .map(|i| rows[i] || (i >= w && rows[i - w]) || rows.get(i + w).is_some_and(|&r| r))
+        .map(|i| {
+            let wall = rows[i] || (i >= w && rows[i - w]) || rows.get(i + w).is_some_and(|&r| r);
+            if wall {
+                Pixel::Wall
+            } else if speck[i] || grid.cells[i] == Cell::Free {
+                Pixel::Free
+            } else {
+                Pixel::Noise
+            }
+        })
         .collect()
 }
 
@@ -623,12 +671,12 @@ mod tests {
         ]);
         rows.extend(vec!["bbbbbbbbbbbbbbbbbbbbbbbbbbbbbb"; 10]);
         let l = ascii_labels(&rows);
-        let walls: Vec<bool> = rows
+        let walls: Vec<Pixel> = rows
             .iter()
             .flat_map(|r| r.bytes())
-            .map(|b| b == b'#')
+            .map(|b| if b == b'#' { Pixel::Wall } else { Pixel::Noise })
             .collect();
-        let length = |walls: Option<&[bool]>| {
+        let length = |walls: Option<&[Pixel]>| {
             let span = door_span(&l, walls, (1, 2), &border(&l), &LIMITS).unwrap();
             let [p, q] = span.line;
             (q[0] - p[0]).hypot(q[1] - p[1])
@@ -647,6 +695,62 @@ mod tests {
         let [p, q] = span.line;
         let len = (q[0] - p[0]).hypot(q[1] - p[1]);
         assert!(len < 9.0, "{len}: {span:?}");
+    }
+
+    /// A 3-pixel speck standing a pixel off a jamb, and the free cells the
+    /// noise filter took round it, are no jamb: the doorway is measured
+    /// from wall to wall. A speck touching the wall is part of it.
+    #[test]
+    fn a_speck_beside_a_jamb_does_not_narrow_the_doorway() {
+        // Room above, room below, a wall 2 rows thick with a 14-pixel
+        // doorway (columns 8..=21); a speck at columns 10..=12 of the
+        // first wall row, two columns off the left jamb.
+        let mut map = vec![".".repeat(30); 8];
+        map.push(format!("{}..###.........{}", "#".repeat(8), "#".repeat(8)));
+        map.push(format!("{}..............{}", "#".repeat(8), "#".repeat(8)));
+        map.extend(vec![".".repeat(30); 8]);
+        let grid = OccupancyGrid::from_ascii(&map.join("\n"), 0.05);
+        let outside = outside_pixels(&grid, 4.0);
+        let at = |x: usize, y: usize| outside[y * 30 + x];
+        assert_eq!(at(11, 8), Pixel::Free, "speck");
+        assert_eq!(at(3, 8), Pixel::Wall, "wall");
+        assert_eq!(at(8, 8), Pixel::Wall, "halo of the jamb");
+        // The regions: every free cell but the one between the jamb's halo
+        // and the speck (taken by a noise filter).
+        let regions = |map: &[String]| -> Vec<String> {
+            map.iter()
+                .enumerate()
+                .map(|(y, r)| {
+                    r.chars()
+                        .enumerate()
+                        .map(|(x, c)| match c {
+                            '.' if y == 8 && x == 9 => '#',
+                            '.' if y < 9 => 'a',
+                            '.' => 'b',
+                            _ => '#',
+                        })
+                        .collect()
+                })
+                .collect()
+        };
+        let length = |map: &[String]| {
+            let grid = OccupancyGrid::from_ascii(&map.join("\n"), 0.05);
+            let rows = regions(map);
+            let refs: Vec<&str> = rows.iter().map(String::as_str).collect();
+            let l = ascii_labels(&refs);
+            let outside = outside_pixels(&grid, 4.0);
+            let span = door_span(&l, Some(&outside), (1, 2), &border(&l), &LIMITS).unwrap();
+            let [p, q] = span.line;
+            (q[0] - p[0]).hypot(q[1] - p[1])
+        };
+        // The whole opening, columns 8..=21.
+        let measured = length(&map);
+        assert!((measured - 14.0).abs() < 0.6, "{measured}");
+        // The same speck joined to the wall is a jamb.
+        let mut joined = map.clone();
+        joined[8] = format!("{}#####.........{}", "#".repeat(8), "#".repeat(8));
+        let short = length(&joined);
+        assert!(short < 10.5, "{short}");
     }
 
     #[test]

@@ -12,7 +12,7 @@ use super::ccl::segment_ccl;
 use super::clean::{FreeSpace, clean_free};
 use super::door_choice::{DoorCues, choose_doors};
 use super::doors::{Border, cut_doors};
-use super::doorway::wall_pixels;
+use super::doorway::outside_pixels;
 use super::filled::filled_diameters;
 use super::graph::topology;
 use super::interior::{claim_enclosed_unknown, fill_specks};
@@ -227,11 +227,11 @@ fn span_doors(
     px: &PixelConfig,
 ) -> (Labels, Vec<Option<[[f64; 2]; 2]>>) {
     // Doorway chords end at the map's walls; other pixels outside the
-    // regions may be noise they cross (see `doorway::Pixel`).
-    let walls = wall_pixels(grid);
+    // regions may be noise or specks they cross (see `doorway::Pixel`).
+    let outside = outside_pixels(grid, px.chord_speck_max);
     let (mut labels, door_lines) = cut_doors(
         &regions.labels,
-        Some(&walls),
+        Some(&outside),
         doors,
         &regions.dist,
         &px.span,

@@ -13,7 +13,7 @@
 use std::collections::VecDeque;
 
 use super::doors::Border;
-use super::doorway::{DoorSpan, SpanLimits, Throat, border_frame, classifier, span, throat};
+use super::doorway::{DoorSpan, Pixel, SpanLimits, Throat, border_frame, classifier, span, throat};
 use crate::imaging::Labels;
 
 /// Most places along one border where a throat is sought.
@@ -72,16 +72,16 @@ pub(super) struct DoorToCut<'a> {
 /// moves the pixels on the wrong side of it, and returns its doorway line
 /// (pixels); None, with `out` unchanged, when no candidate parts them.
 /// `labels` are the regions before any door was cut (free = non-zero);
-/// `walls` as for [`door_span`](super::doorway::door_span).
+/// `outside` as for [`door_span`](super::doorway::door_span).
 pub(super) fn cut_along(
     labels: &Labels,
-    walls: Option<&[bool]>,
+    outside: Option<&[Pixel]>,
     out: &mut Labels,
     cut: &DoorToCut<'_>,
     limits: &SpanLimits,
     scratch: &mut Scratch,
 ) -> Option<[[f64; 2]; 2]> {
-    spans_along(labels, walls, cut.door, limits)
+    spans_along(labels, outside, cut.door, limits)
         .iter()
         .find(|span| try_cut(out, cut, span, scratch))
         .map(|span| span.line)
@@ -93,12 +93,12 @@ pub(super) fn cut_along(
 /// opening, at most [`MAX_TRIES`], shortest first.
 fn spans_along(
     labels: &Labels,
-    walls: Option<&[bool]>,
+    outside: Option<&[Pixel]>,
     door: &Border,
     limits: &SpanLimits,
 ) -> Vec<DoorSpan> {
     let w = labels.width as usize;
-    let pixel = classifier(labels, walls);
+    let pixel = classifier(labels, outside);
     let spacing = limits.search.max(2.0);
     let xy = |p: u32| ((p as usize % w) as f64, (p as usize / w) as f64);
     let apart = |p: (f64, f64), q: (f64, f64)| (p.0 - q.0).abs().max((p.1 - q.1).abs());
