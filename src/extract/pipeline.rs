@@ -102,10 +102,13 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     let mut free = clean(grid, params, &px)?;
     // The building's two directions, from the free space without noise.
     let deg = dominant_orientation(&free.clean);
-    let gaps = match &px.gaps {
+    let support = WallSupport::new(grid, deg, px.support);
+    let mut gaps = match &px.gaps {
         Some(limits) => wall_gaps(&free.clean, deg, *limits),
         None => Vec::new(),
     };
+    // A gap between pieces of clutter is no doorway in a wall.
+    gaps.retain(|g| !support.lacks_gap(&g.line));
     clock.lap("clean");
     // The paper's doorway points (Tab. 2), taken before the gaps close.
     let skeleton = px
@@ -125,7 +128,6 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     clock.lap("merge");
     regions.split_passages(&px);
     clock.lap("passages");
-    let support = WallSupport::new(grid, deg, px.support);
     regions.join_open(&gaps, &support, &px);
     clock.lap("joins");
     let cues = DoorCues {

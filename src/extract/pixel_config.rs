@@ -252,6 +252,7 @@ impl PixelConfig {
             support: SupportLimits {
                 long_run: px(SUPPORT_RUN_M),
                 pair_run: px(SUPPORT_PAIR_RUN_M),
+                tie_run: px(b.wall_jamb_m),
                 gap: px(WALL_LINE_GAP_M).round().max(1.0) as i64,
                 tolerance: px(SUPPORT_TOLERANCE_M).round() as i64,
                 reach: px(SUPPORT_REACH_M),

@@ -4,20 +4,28 @@
 //! The idea is ROSE²'s (Luperto et al., RA-L 2022): rooms are cells bounded
 //! by the building's walls, which are long, straight and run along the
 //! map's few dominant directions; cells whose shared edge has no wall on
-//! it are one room. Here it judges the borders the watershed draws at
-//! door-wide constrictions that no wall gap marks (doorways found by
-//! `wall_gaps.rs` are never judged). Such a border is **unsupported**, and
-//! its two regions are one, when its line runs along a dominant direction
+//! it are one room. Here it judges the doorway gaps `wall_gaps.rs` finds
+//! (an unsupported one is dropped: a gap between pieces of clutter) and
+//! the borders the watershed draws at door-wide constrictions that no
+//! kept gap marks. Such a line is **unsupported**, and the regions on
+//! either side are one, when it runs along a dominant direction
 //! (within [`MIN_COS`]) where the walls follow those directions (a long run
 //! within [`SupportLimits::near`] of its middle), and
 //! - no long run of wall face ([`SupportLimits::long_run`]) goes on in line
 //!   beyond either end (the wall the doorway is cut in);
 //! - no long run across the line passes either end (a reveal, or the wall
 //!   the doorway opens from);
-//! - and the two ends are not both ends of shorter in-line runs
-//!   ([`SupportLimits::pair_run`]): aligned wall ends facing each other.
+//! - the two ends are not both ends of shorter in-line runs
+//!   ([`SupportLimits::pair_run`]): aligned wall ends facing each other;
+//! - and, for a doorway gap, the two ends are not both anchored: tied to
+//!   the building (an in-line run of at least [`SupportLimits::tie_run`]
+//!   beyond the end reaching a long wall across: a short partition between
+//!   two walls) or on a wall line that goes on in pieces (in-line runs of
+//!   at least `tie_run` adding up to `pair_run` within twice `long_run`
+//!   beyond the end: a wall with several doorways). Borders are not judged
+//!   so: on real maps clutter touching a room's walls is tied too.
 //!
-//! Anywhere else the rule abstains and the border stays. Lengths are in
+//! Anywhere else the rule abstains and the gap or border stays. Lengths are in
 //! pixels here; `pixel_config.rs` sets them in metres.
 
 use super::wall_runs::{Run, WallRuns, along, project};
@@ -34,6 +42,9 @@ pub(crate) struct SupportLimits {
     pub long_run: f64,
     /// Shortest in-line runs that support a doorway when both ends have one.
     pub pair_run: f64,
+    /// Shortest in-line run that ties a doorway end to a long wall across
+    /// (the jamb of `wall_jamb_m`).
+    pub tie_run: f64,
     /// Longest break bridged in a run, whole pixels.
     pub gap: i64,
     /// How far across its line a run may lie from a doorway end, whole
@@ -46,7 +57,7 @@ pub(crate) struct SupportLimits {
     pub near: f64,
 }
 
-/// The wall runs of one map, ready to judge borders.
+/// The wall runs of one map, ready to judge doorway gaps and borders.
 pub(crate) struct WallSupport {
     runs: WallRuns,
     width: u32,
@@ -73,7 +84,7 @@ impl WallSupport {
                 }
             }
         }
-        let min_run = limits.long_run.min(limits.pair_run);
+        let min_run = limits.long_run.min(limits.pair_run).min(limits.tie_run);
         WallSupport {
             runs: WallRuns::new(&face, deg, min_run, limits.gap),
             width: grid.width,
@@ -84,12 +95,21 @@ impl WallSupport {
     /// Whether the border through `pixels` (indices into the grid) is
     /// judged and has no wall support (see the module doc).
     pub(crate) fn lacks(&self, pixels: &[u32]) -> bool {
-        border_ends(self.width, pixels).is_some_and(|(a, b)| self.supported(a, b) == Some(false))
+        border_ends(self.width, pixels)
+            .is_some_and(|(a, b)| self.supported(a, b, false) == Some(false))
+    }
+
+    /// Whether the doorway gap whose line is `pixels` is judged and has no
+    /// wall support, a partition tied at both ends counting as support.
+    pub(crate) fn lacks_gap(&self, pixels: &[u32]) -> bool {
+        border_ends(self.width, pixels)
+            .is_some_and(|(a, b)| self.supported(a, b, true) == Some(false))
     }
 
     /// Whether the doorway `a`–`b` (pixels) has wall support; `None` where
-    /// the rule abstains.
-    fn supported(&self, a: [f64; 2], b: [f64; 2]) -> Option<bool> {
+    /// the rule abstains. With `ties`, both ends anchored support it
+    /// ([`Self::tied`], [`Self::walled_line`]).
+    fn supported(&self, a: [f64; 2], b: [f64; 2], ties: bool) -> Option<bool> {
         let l = &self.limits;
         let d = [b[0] - a[0], b[1] - a[1]];
         let len = d[0].hypot(d[1]);
@@ -106,6 +126,13 @@ impl WallSupport {
         let long = in_line(l.long_run);
         if long.0 || long.1 || self.across_end(1 - k, a) || self.across_end(1 - k, b) {
             return Some(true);
+        }
+        if ties {
+            let tied = self.tied(k, a, b);
+            let walled = self.walled_line(k, a, b);
+            if (tied.0 || walled.0) && (tied.1 || walled.1) {
+                return Some(true);
+            }
         }
         let pair = in_line(l.pair_run);
         Some(pair.0 && pair.1)
@@ -126,8 +153,75 @@ impl WallSupport {
     /// Whether each end of `a`–`b`, which runs along direction `k`, has a
     /// run of at least `min` going on in line beyond it.
     fn in_line(&self, k: usize, a: [f64; 2], b: [f64; 2], min: f64) -> (bool, bool) {
+        let [lo, hi] = self.ends_beyond(k, a, b, min, |_| true);
+        (lo, hi)
+    }
+
+    /// Whether each end of `a`–`b`, which runs along direction `k`, has an
+    /// in-line run of at least `tie_run` going on beyond it to a long wall
+    /// across (see [`Self::across_end`]): the piece of wall the doorway is
+    /// cut in, however short, is tied to the building.
+    fn tied(&self, k: usize, a: [f64; 2], b: [f64; 2]) -> (bool, bool) {
+        let [lo, hi] = self.ends_beyond(k, a, b, self.limits.tie_run, |far| {
+            self.across_end(1 - k, far)
+        });
+        (lo, hi)
+    }
+
+    /// Whether, beyond each end of `a`–`b` (along direction `k`) and within
+    /// twice `long_run` of it, runs of at least `tie_run` on the doorway's
+    /// line cover `pair_run` of it: the wall the doorway is in goes on, in
+    /// pieces (between further doorways).
+    fn walled_line(&self, k: usize, a: [f64; 2], b: [f64; 2]) -> (bool, bool) {
         let across = self.runs.across(k);
-        let t = |p| project(p, along(across));
+        let u = along(across);
+        let t = |p| project(p, u);
+        let (lo, hi) = if t(a) <= t(b) { (a, b) } else { (b, a) };
+        let l = &self.limits;
+        let window = 2.0 * l.long_run;
+        let covered = |p: [f64; 2], outward: f64| {
+            let tp = t(p);
+            let (w0, w1) = if outward < 0.0 {
+                (tp - window, tp)
+            } else {
+                (tp, tp + window)
+            };
+            // The along-line stretch they cover, once (a wall's two faces
+            // lie side by side).
+            let mut pieces: Vec<(f64, f64)> = self
+                .runs
+                .near(k, project(p, across), l.tolerance)
+                .filter(|&r| length(r) >= l.tie_run)
+                .map(|(r0, r1)| ((r0 as f64).max(w0), (r1 as f64 + 1.0).min(w1)))
+                .filter(|(a, b)| b > a)
+                .collect();
+            pieces.sort_by(|x, y| x.0.total_cmp(&y.0));
+            let mut covered = 0.0;
+            let mut reached = f64::NEG_INFINITY;
+            for (a, b) in pieces {
+                covered += (b - a.max(reached)).max(0.0);
+                reached = reached.max(b);
+            }
+            covered >= l.pair_run
+        };
+        (covered(lo, -1.0), covered(hi, 1.0))
+    }
+
+    /// For the lower and the upper end of `a`–`b` along direction `k`:
+    /// whether a run of at least `min` starts within `reach` of it and goes
+    /// on outwards, with `accept(far)` true for the run's far end (a point
+    /// on the doorway's line).
+    fn ends_beyond(
+        &self,
+        k: usize,
+        a: [f64; 2],
+        b: [f64; 2],
+        min: f64,
+        accept: impl Fn([f64; 2]) -> bool,
+    ) -> [bool; 2] {
+        let across = self.runs.across(k);
+        let u = along(across);
+        let t = |p| project(p, u);
         let (lo, hi) = if t(a) <= t(b) { (a, b) } else { (b, a) };
         let l = &self.limits;
         let beyond = |p: [f64; 2], outward: f64| {
@@ -135,16 +229,17 @@ impl WallSupport {
             self.runs
                 .near(k, project(p, across), l.tolerance)
                 .filter(|&r| length(r) >= min)
-                .any(|(r0, r1)| {
+                .filter_map(|(r0, r1)| {
                     let (r0, r1) = (r0 as f64, r1 as f64);
                     if outward < 0.0 {
-                        (r1 - tp).abs() <= l.reach && r0 < tp
+                        ((r1 - tp).abs() <= l.reach && r0 < tp).then_some(r0)
                     } else {
-                        (r0 - tp).abs() <= l.reach && r1 > tp
+                        ((r0 - tp).abs() <= l.reach && r1 > tp).then_some(r1)
                     }
                 })
+                .any(|far| accept([p[0] + (far - tp) * u.0, p[1] + (far - tp) * u.1]))
         };
-        (beyond(lo, -1.0), beyond(hi, 1.0))
+        [beyond(lo, -1.0), beyond(hi, 1.0)]
     }
 
     /// Whether a long run along direction `k` (across the doorway) passes
@@ -201,6 +296,7 @@ mod tests {
     const AT_10_CM: SupportLimits = SupportLimits {
         long_run: 15.0,
         pair_run: 10.0,
+        tie_run: 3.0,
         gap: 1,
         tolerance: 5,
         reach: 6.0,
@@ -231,7 +327,7 @@ mod tests {
     fn a_doorway_in_a_long_wall_is_supported() {
         // Two 4 m rooms: a wall at x = 40, its doorway y 30..38 (0.8 m).
         let s = grid(81, 60, |x, y| x == 40 && !(30..38).contains(&y));
-        assert_eq!(s.supported([40.0, 30.0], [40.0, 37.0]), Some(true));
+        assert_eq!(s.supported([40.0, 30.0], [40.0, 37.0], false), Some(true));
     }
 
     #[test]
@@ -240,10 +336,39 @@ mod tests {
         // 2 m into a 6 m room: short, but in line and facing each other.
         let piece = |x: usize, y: usize| y == 20 && ((9..20).contains(&x) || (28..39).contains(&x));
         let s = grid(60, 60, piece);
-        assert_eq!(s.supported([20.0, 20.0], [27.0, 20.0]), Some(true));
+        assert_eq!(s.supported([20.0, 20.0], [27.0, 20.0], false), Some(true));
         // One end alone is not enough.
         let one = grid(60, 60, |x, y| y == 20 && (9..20).contains(&x));
-        assert_eq!(one.supported([20.0, 20.0], [27.0, 20.0]), Some(false));
+        assert_eq!(
+            one.supported([20.0, 20.0], [27.0, 20.0], false),
+            Some(false)
+        );
+    }
+
+    #[test]
+    fn a_partition_tied_to_the_walls_at_both_ends_supports_its_doorway_gap() {
+        // Two 2 m rooms; the wall between them (x = 22) runs 0.6 m from
+        // each outer wall to a 0.8 m doorway (y 7..15).
+        let s = grid(45, 22, |x, y| x == 22 && !(7..15).contains(&y));
+        assert_eq!(s.supported([22.0, 7.0], [22.0, 14.0], true), Some(true));
+        // As a border, ties do not count.
+        assert_eq!(s.supported([22.0, 7.0], [22.0, 14.0], false), Some(false));
+        // Tied at one end only: a stub, not a partition.
+        let stub = grid(45, 22, |x, y| x == 22 && y < 7);
+        assert_eq!(stub.supported([22.0, 7.0], [22.0, 14.0], true), Some(false));
+    }
+
+    #[test]
+    fn doorway_gaps_in_a_wall_of_short_pieces_are_anchored() {
+        // A 5 m wide building; the wall at y = 20 has a 0.8 m and a 1.5 m
+        // doorway, with pieces of 0.7 m (to the outer wall), 1.1 m and
+        // 0.7 m (to the outer wall): no piece is long, none pairs.
+        let wall = |x: usize, y: usize| y == 20 && !((8..16).contains(&x) || (27..42).contains(&x));
+        let s = grid(50, 40, wall);
+        assert_eq!(s.supported([8.0, 20.0], [15.0, 20.0], true), Some(true));
+        assert_eq!(s.supported([27.0, 20.0], [41.0, 20.0], true), Some(true));
+        // Judged as a border, the first is unsupported.
+        assert_eq!(s.supported([8.0, 20.0], [15.0, 20.0], false), Some(false));
     }
 
     #[test]
@@ -253,7 +378,11 @@ mod tests {
             (14..19).contains(&y) && ((20..25).contains(&x) || (33..38).contains(&x))
         };
         let s = grid(60, 60, blocks);
-        assert_eq!(s.supported([25.0, 16.0], [32.0, 16.0]), Some(false));
+        assert_eq!(s.supported([25.0, 16.0], [32.0, 16.0], false), Some(false));
+        // As a doorway gap's line of pixels (row 16, columns 25..=32): the
+        // gap is dropped.
+        let line: Vec<u32> = (25..=32).map(|x| 16 * 60 + x).collect();
+        assert!(s.lacks_gap(&line));
         assert!(!s.lacks(&[]), "no border, nothing to judge");
     }
 
@@ -261,9 +390,9 @@ mod tests {
     fn the_rule_abstains_off_the_walls_directions_and_far_from_walls() {
         let s = grid(60, 60, |_, _| false);
         // A diagonal doorway line.
-        assert_eq!(s.supported([20.0, 20.0], [25.0, 25.0]), None);
+        assert_eq!(s.supported([20.0, 20.0], [25.0, 25.0], false), None);
         // A doorway line in the middle of a 10 m hall, 4.5 m from its walls.
         let hall = grid(101, 101, |_, _| false);
-        assert_eq!(hall.supported([46.0, 50.0], [54.0, 50.0]), None);
+        assert_eq!(hall.supported([46.0, 50.0], [54.0, 50.0], false), None);
     }
 }
