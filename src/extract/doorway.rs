@@ -13,8 +13,9 @@
 //! speck (up to [`NOISE_RUN_MAX`] uncertain pixels with free space after
 //! them, see [`Pixel`]); it ends at a wall.
 
+use super::furniture::islands;
 use crate::grid::{Cell, OccupancyGrid};
-use crate::imaging::{Labels, Mask, label_runs};
+use crate::imaging::Labels;
 
 /// Limits of [`door_span`], in pixels.
 #[derive(Debug, Clone, Copy)]
@@ -118,8 +119,8 @@ impl DoorSpan {
 /// = free): the throat nearest the border's centre and the opening
 /// through the wall around it. `outside` says what each pixel outside
 /// `labels` is to a chord (see [`outside_pixels`]); with `None` every
-/// pixel outside `labels` is a wall. None when the border crosses no bounded opening (no chord
-/// through its centre shorter than `max_width`).
+/// pixel outside `labels` is a wall. None when the border crosses no
+/// bounded opening (no chord through its centre shorter than `max_width`).
 pub(crate) fn door_span(
     labels: &Labels,
     outside: Option<&[Pixel]>,
@@ -218,8 +219,9 @@ pub(super) fn border_frame(
 /// What a chord meets at a pixel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Pixel {
-    /// Free space of the map's regions, or a speck standing free in the
-    /// map that a chord passes through (see [`outside_pixels`]).
+    /// Free space of the map's regions, or a pixel outside them that a
+    /// chord passes through: a speck standing free, a free cell the noise
+    /// filter took (see [`outside_pixels`]).
     Free,
     /// Not free, but not surely a wall either: a speck of an unknown or
     /// uncertain grey (JPEG artefacts, a stray ray).
@@ -508,35 +510,14 @@ pub(super) fn span(
 /// - [`Pixel::Noise`] otherwise (an uncertain grey).
 pub(crate) fn outside_pixels(grid: &OccupancyGrid, speck_px: f64) -> Vec<Pixel> {
     let w = grid.width as usize;
-    let blocked: Vec<u8> = grid
-        .cells
-        .iter()
-        .map(|c| if *c == Cell::Free { 0 } else { 255 })
-        .collect();
-    let speck = Mask::from_raw(grid.width, grid.height, blocked)
-        .map(|m| {
-            let pieces = label_runs(&m, true);
-            let edge = pieces.touches_border();
-            let small: Vec<bool> = pieces
-                .bounding_boxes()
-                .iter()
-                .zip(&edge)
-                .map(|(b, &edge)| {
-                    let across = |lo: u32, hi: u32| f64::from(hi.saturating_sub(lo) + 1);
-                    !edge
-                        && b[0] != u32::MAX
-                        && across(b[0], b[2]) <= speck_px
-                        && across(b[1], b[3]) <= speck_px
-                })
-                .collect();
-            let mut speck = vec![false; grid.cells.len()];
-            for r in pieces.runs.iter().filter(|r| small[r.label as usize]) {
-                let i = r.y as usize * w;
-                speck[i + r.x0 as usize..i + r.x1 as usize].fill(true);
-            }
-            speck
-        })
-        .unwrap_or_else(|| vec![false; grid.cells.len()]);
+    let islands = islands(grid);
+    let mut speck = vec![false; grid.cells.len()];
+    for r in &islands.pieces.runs {
+        if islands.extent[r.label as usize].is_some_and(|e| e <= speck_px) {
+            let i = r.y as usize * w;
+            speck[i + r.x0 as usize..i + r.x1 as usize].fill(true);
+        }
+    }
     let occupied: Vec<bool> = grid
         .cells
         .iter()

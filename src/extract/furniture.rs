@@ -45,23 +45,11 @@ pub(crate) fn free_without_furniture(grid: &OccupancyGrid, limits: &IslandLimits
     if largest < 1.0 {
         return Mask::from_raw(w, h, free).unwrap_or_else(|| Mask::new(w, h));
     }
-    let blocked_data = free.iter().map(|&f| 255 - f).collect();
-    let blocked = Mask::from_raw(w, h, blocked_data).unwrap_or_else(|| Mask::new(w, h));
-    let blobs = label_runs(&blocked, true);
-    let bbox = blobs.bounding_boxes();
-    let extent: Vec<Option<f64>> = bbox
-        .iter()
-        .map(|b| {
-            let touches_border = b[0] == 0 || b[1] == 0 || b[2] + 1 >= w || b[3] + 1 >= h;
-            (b[0] != u32::MAX && !touches_border).then(|| {
-                f64::from(
-                    (b[2] + 1)
-                        .saturating_sub(b[0])
-                        .max((b[3] + 1).saturating_sub(b[1])),
-                )
-            })
-        })
-        .collect();
+    let Islands {
+        pieces: blobs,
+        bbox,
+        extent,
+    } = islands(grid);
     let mut island: Vec<bool> = extent
         .iter()
         .map(|e| e.is_some_and(|e| e <= limits.furniture))
@@ -93,6 +81,50 @@ pub(crate) fn free_without_furniture(grid: &OccupancyGrid, limits: &IslandLimits
         data[i + r.x0 as usize..i + r.x1 as usize].fill(0);
     }
     Mask::from_raw(w, h, data).unwrap_or_else(|| Mask::new(w, h))
+}
+
+/// The 8-connected pieces of non-free cells of a grid, with each piece's
+/// bounding box and extent (by label, index 0 unused).
+pub(crate) struct Islands {
+    /// The pieces.
+    pub pieces: RunLabels,
+    /// Each piece's bounding box `[min_col, min_row, max_col, max_row]`.
+    pub bbox: Vec<[u32; 4]>,
+    /// Each piece's extent in pixels (the longer side of its bounding
+    /// box), None for a piece on the image's edge (the outside, or walls
+    /// joined to it): only islands standing free have one.
+    pub extent: Vec<Option<f64>>,
+}
+
+/// The non-free pieces of `grid` and their extents (see [`Islands`]).
+pub(crate) fn islands(grid: &OccupancyGrid) -> Islands {
+    let (w, h) = (grid.width, grid.height);
+    let blocked_data = grid
+        .cells
+        .iter()
+        .map(|c| if *c == Cell::Free { 0 } else { 255 })
+        .collect();
+    let blocked = Mask::from_raw(w, h, blocked_data).unwrap_or_else(|| Mask::new(w, h));
+    let pieces = label_runs(&blocked, true);
+    let bbox = pieces.bounding_boxes();
+    let extent = bbox
+        .iter()
+        .map(|b| {
+            let touches_border = b[0] == 0 || b[1] == 0 || b[2] + 1 >= w || b[3] + 1 >= h;
+            (b[0] != u32::MAX && !touches_border).then(|| {
+                f64::from(
+                    (b[2] + 1)
+                        .saturating_sub(b[0])
+                        .max((b[3] + 1).saturating_sub(b[1])),
+                )
+            })
+        })
+        .collect();
+    Islands {
+        pieces,
+        bbox,
+        extent,
+    }
 }
 
 /// Which of the `candidate` islands (by label; larger than furniture and

@@ -173,10 +173,9 @@ impl WallSupport {
     /// line cover `pair_run` of it: the wall the doorway is in goes on, in
     /// pieces (between further doorways).
     fn walled_line(&self, k: usize, a: [f64; 2], b: [f64; 2]) -> (bool, bool) {
-        let across = self.runs.across(k);
+        let (across, [lo, hi]) = self.frame(k, a, b);
         let u = along(across);
         let t = |p| project(p, u);
-        let (lo, hi) = if t(a) <= t(b) { (a, b) } else { (b, a) };
         let l = &self.limits;
         let window = 2.0 * l.long_run;
         let covered = |p: [f64; 2], outward: f64| {
@@ -207,6 +206,19 @@ impl WallSupport {
         (covered(lo, -1.0), covered(hi, 1.0))
     }
 
+    /// Direction `k`'s unit vector across, and the ends of `a`–`b`
+    /// ordered along the direction.
+    fn frame(&self, k: usize, a: [f64; 2], b: [f64; 2]) -> ((f64, f64), [[f64; 2]; 2]) {
+        let across = self.runs.across(k);
+        let u = along(across);
+        let ends = if project(a, u) <= project(b, u) {
+            [a, b]
+        } else {
+            [b, a]
+        };
+        (across, ends)
+    }
+
     /// For the lower and the upper end of `a`–`b` along direction `k`:
     /// whether a run of at least `min` starts within `reach` of it and goes
     /// on outwards, with `accept(far)` true for the run's far end (a point
@@ -219,10 +231,9 @@ impl WallSupport {
         min: f64,
         accept: impl Fn([f64; 2]) -> bool,
     ) -> [bool; 2] {
-        let across = self.runs.across(k);
+        let (across, [lo, hi]) = self.frame(k, a, b);
         let u = along(across);
         let t = |p| project(p, u);
-        let (lo, hi) = if t(a) <= t(b) { (a, b) } else { (b, a) };
         let l = &self.limits;
         let beyond = |p: [f64; 2], outward: f64| {
             let tp = t(p);
