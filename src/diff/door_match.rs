@@ -19,6 +19,9 @@
 //! may widen by up to a metre on one side, or be re-cut a few pixels away
 //! after alignment, and still be the same door; moved along its wall by
 //! more than half a metre, or to another wall, it is a different door),
+//! or the shorter doorway's centre lies that near the longer doorway's
+//! line (a doorway widened further on one side, as when the wall beside
+//! it is taken down, is the same doorway, wider),
 //! and they join the same spaces: every non-door space one opens onto
 //! corresponds to one the other opens onto, and back. Spaces correspond
 //! when the IoU matching (run first, on the non-door spaces only) pairs
@@ -156,14 +159,13 @@ pub(crate) fn door_candidates(
     let mut out = Vec::new();
     let reach = params.door_shift_m;
     for (i, old) in ov.old_sides.iter().enumerate() {
-        let Some((old, co)) = old.as_ref().and_then(|s| Some((s, s.centre()?))) else {
+        let Some(old) = old.as_ref() else {
             continue;
         };
         for (j, new) in ov.new_sides.iter().enumerate() {
-            let Some((new, cn)) = new.as_ref().and_then(|s| Some((s, s.centre()?))) else {
+            let Some((new, dist)) = new.as_ref().and_then(|s| Some((s, old.distance(s)?))) else {
                 continue;
             };
-            let dist = (co[0] - cn[0]).hypot(co[1] - cn[1]);
             if dist.is_nan() || dist > reach {
                 continue;
             }
@@ -297,6 +299,15 @@ mod tests {
         let b = floor(line_door(4, 5.0, 2.0, 2.9), corridor_door(5, 1.3, 2.2));
         // Door 4 moved by its width (1 m > 0.5 m), door 5 by 0.3 m.
         assert_eq!(pairs(&a, &b), vec![(1, 1), (2, 2), (3, 3), (5, 5)]);
+    }
+
+    #[test]
+    fn a_doorway_widened_on_one_side_is_the_same_door() {
+        let a = floor(line_door(4, 5.0, 2.0, 2.9), corridor_door(5, 1.0, 1.9));
+        // The wall below door 4 is taken down to the floor's edge: its
+        // centre moves 0.98 m, but its old line lies inside the new one.
+        let b = floor(line_door(4, 5.0, 0.05, 2.9), corridor_door(5, 1.0, 1.9));
+        assert_eq!(pairs(&a, &b), vec![(1, 1), (2, 2), (3, 3), (4, 4), (5, 5)]);
     }
 
     #[test]

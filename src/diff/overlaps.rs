@@ -72,4 +72,32 @@ impl DoorSide {
         self.line
             .map(|[a, b]| [(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0])
     }
+
+    /// How far apart two doorways are: their centres' distance, or, when
+    /// less, the distance from the shorter line's centre to the longer
+    /// line (a doorway widened on one side, its old line inside the new).
+    pub(crate) fn distance(&self, other: &DoorSide) -> Option<f64> {
+        let (a, b) = (self.line?, other.line?);
+        let (ca, cb) = (self.centre()?, other.centre()?);
+        let length = |[p, q]: [Point; 2]| (q[0] - p[0]).hypot(q[1] - p[1]);
+        let (short_centre, long) = if length(a) <= length(b) {
+            (ca, b)
+        } else {
+            (cb, a)
+        };
+        let centres = (ca[0] - cb[0]).hypot(ca[1] - cb[1]);
+        Some(centres.min(to_segment(short_centre, long)))
+    }
+}
+
+/// Distance from `p` to the segment `[a, b]`.
+fn to_segment(p: Point, [a, b]: [Point; 2]) -> f64 {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let len2 = d[0] * d[0] + d[1] * d[1];
+    let t = if len2 > 0.0 {
+        (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (p[0] - a[0] - t * d[0]).hypot(p[1] - a[1] - t * d[1])
 }

@@ -23,7 +23,7 @@ use super::resample::{coarsen, pixel_centroids, refine};
 use super::segment::segment_basins;
 use super::skeleton_doors::skeleton_doorways;
 use super::tidy::tidy_labels;
-use super::wall_gaps::{close_gaps, reopen_gaps, wall_gaps};
+use super::wall_gaps::{WallGap, close_gaps, reopen_gaps, wall_gaps};
 use super::wall_support::WallSupport;
 use super::{ExtractError, ExtractParams};
 use crate::grid::OccupancyGrid;
@@ -107,6 +107,8 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         Some(limits) => wall_gaps(&free.clean, deg, *limits),
         None => Vec::new(),
     };
+    let openings = openings(&free, deg, &support, &px);
+    gaps.extend(openings.iter().cloned());
     // A gap between pieces of clutter is no doorway in a wall.
     gaps.retain(|g| !support.lacks_gap(&g.line));
     clock.lap("clean");
@@ -138,7 +140,13 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     let doors: Vec<&Border> = chosen.iter().map(|&k| &regions.borders[k]).collect();
     let door_pairs: Vec<(u32, u32)> = doors.iter().map(|b| b.pair).collect();
     let n_regions = regions.labels.count;
-    let (mut labels, door_lines) = span_doors(grid, &regions, &doors, &px);
+    let (mut labels, mut door_lines) = span_doors(grid, &regions, &doors, &px);
+    // An opening's door is as wide as the opening, jamb to jamb.
+    for (line, door) in door_lines.iter_mut().zip(&doors) {
+        if let Some(o) = openings.iter().find(|o| o.crossed_by(&door.pixels)) {
+            *line = o.ends(grid.width).or(*line);
+        }
+    }
     clock.lap("doors");
     // One simple polygon per space: before the graph, so that it and the
     // polygons see the same labels.
@@ -198,6 +206,18 @@ fn clean(
     Ok(free)
 }
 
+/// Openings in walls wider than doorway gaps (see `opening_width_max_m`),
+/// but none across a passage (`WallSupport::crosses_passage`); like the
+/// doorway gaps, they must then have wall support.
+fn openings(free: &FreeSpace, deg: f64, support: &WallSupport, px: &PixelConfig) -> Vec<WallGap> {
+    let Some(limits) = &px.openings else {
+        return Vec::new();
+    };
+    let mut found = wall_gaps(&free.clean, deg, *limits);
+    found.retain(|o| !support.crosses_passage(&o.line));
+    found
+}
+
 /// Stage `segment`: the free space cut into regions, by the watershed of
 /// its distance transform or by the paper's CCL.
 fn segment(free: &FreeSpace, dist: &[f32], px: &PixelConfig) -> Labels {
@@ -253,6 +273,52 @@ fn span_doors(
 mod tests {
     use super::*;
     use crate::model::SpaceKind;
+
+    #[test]
+    fn a_room_open_to_the_corridor_gets_a_door_as_wide_as_its_opening() {
+        // At 0.1 m/px: two 6 x 4 m rooms above a 3 m corridor. The left
+        // room opens onto the corridor through a 3 m gap in its front wall
+        // (x 15..45), wider than any doorway; the right one through a
+        // 0.9 m doorway.
+        let (w, h) = (122, 74);
+        let rows: Vec<String> = (0..h)
+            .map(|y| {
+                (0..w)
+                    .map(|x| {
+                        let outer = x == 0 || y == 0 || x == w - 1 || y == h - 1;
+                        let divider = x == 60 && y < 40;
+                        let front = (40..42).contains(&y)
+                            && !(15..45).contains(&x)
+                            && !(85..94).contains(&x);
+                        if outer || divider || front { '#' } else { '.' }
+                    })
+                    .collect()
+            })
+            .collect();
+        let grid = OccupancyGrid::from_ascii(&rows.join("\n"), 0.1);
+        let spaces = |params: &ExtractParams| {
+            let x = extract(&grid, params).unwrap();
+            let doors: Vec<f64> = x
+                .nrg
+                .spaces()
+                .iter()
+                .filter_map(crate::model::doorway)
+                .map(|d| d.width_m)
+                .collect();
+            (x.nrg.spaces().len() - doors.len(), doors)
+        };
+        let (others, mut widths) = spaces(&ExtractParams::default());
+        widths.sort_by(f64::total_cmp);
+        assert_eq!(others, 3, "{widths:?}");
+        assert_eq!(widths.len(), 2, "{widths:?}");
+        assert!((widths[0] - 0.9).abs() <= 0.1, "{widths:?}");
+        assert!((widths[1] - 3.0).abs() <= 0.1, "{widths:?}");
+        // Without openings the room and the corridor are one space.
+        let mut params = ExtractParams::default();
+        params.building.opening_width_max_m = 0.0;
+        let (others, widths) = spaces(&params);
+        assert_eq!((others, widths.len()), (2, 1), "{widths:?}");
+    }
 
     #[test]
     fn a_narrow_stretch_beside_a_wide_opening_is_no_door() {

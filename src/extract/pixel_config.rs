@@ -10,7 +10,7 @@ use super::joins::JoinLimits;
 use super::params::{DoorRule, ExtractParams, Method};
 use super::passages::PassageLimits;
 use super::stubs::StubLimits;
-use super::wall_gaps::GapLimits;
+use super::wall_gaps::{GapKind, GapLimits};
 use super::wall_support::SupportLimits;
 
 /// A border is a door under `DoorRule::Skeleton` if it passes this close
@@ -150,6 +150,11 @@ pub(crate) struct PixelConfig {
     pub islands: IslandLimits,
     /// Doorway gaps in walls; none with the CCL method or `wall_jamb_m` 0.
     pub gaps: Option<GapLimits>,
+    /// Openings in walls wider than doorway gaps (`opening_width_max_m`):
+    /// jambs a metre of wall in line (the wall support's pair run) or a
+    /// wall across, floor for `wall_jamb_m` beyond both faces; none with
+    /// the CCL method, `wall_jamb_m` 0, or no width above the gaps'.
+    pub openings: Option<GapLimits>,
     /// The skeleton door rule, when chosen (watershed only).
     pub skeleton: Option<SkeletonLimits>,
     /// How regions are found.
@@ -216,7 +221,22 @@ impl PixelConfig {
                 width: (whole(b.door_width_min_m), whole(b.wall_gap_width_max_m)),
                 jamb: whole(b.wall_jamb_m).max(1),
                 depth: whole(b.wall_thickness_max_m).max(1),
+                kind: GapKind::Doorway,
             }),
+            openings: (watershed
+                && b.wall_jamb_m > 0.0
+                && b.opening_width_max_m > b.wall_gap_width_max_m)
+                .then(|| GapLimits {
+                    width: (
+                        whole(b.wall_gap_width_max_m) + 1,
+                        whole(b.opening_width_max_m),
+                    ),
+                    jamb: whole(SUPPORT_PAIR_RUN_M).max(1),
+                    depth: whole(b.wall_thickness_max_m).max(1),
+                    kind: GapKind::Opening {
+                        face: whole(b.wall_jamb_m).max(1),
+                    },
+                }),
             skeleton: (watershed && params.door_rule == DoorRule::Skeleton).then(|| {
                 SkeletonLimits {
                     erode: px(i.skeleton_erode_m),

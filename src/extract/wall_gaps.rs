@@ -4,6 +4,8 @@
 //! doorway even when it is as wide as the corridor it opens onto, where the
 //! distance transform shows no constriction.
 
+use std::collections::HashSet;
+
 use super::interior::neighbours;
 use crate::imaging::{Labels, Mask, line_pixels, turn_mask};
 
@@ -17,6 +19,29 @@ pub(crate) struct WallGap {
     pub width_px: usize,
 }
 
+impl WallGap {
+    /// Whether a border through `pixels` crosses this gap: it runs along at
+    /// least half of the gap's line (as `door_choice` asks of doors).
+    pub(crate) fn crossed_by(&self, pixels: &[u32]) -> bool {
+        let on: HashSet<u32> = pixels.iter().copied().collect();
+        2 * self.line.iter().filter(|p| on.contains(p)).count() >= self.line.len()
+    }
+
+    /// The gap's line from jamb to jamb (pixel coordinates, corners at
+    /// whole numbers) in a `width`-wide image: the outer edges of its end
+    /// pixels along the line.
+    pub(crate) fn ends(&self, width: u32) -> Option<[[f64; 2]; 2]> {
+        let centre = |p: u32| [f64::from(p % width) + 0.5, f64::from(p / width) + 0.5];
+        let (a, b) = (centre(*self.line.first()?), centre(*self.line.last()?));
+        let len = (b[0] - a[0]).hypot(b[1] - a[1]);
+        if len <= 0.0 {
+            return None;
+        }
+        let u = [(b[0] - a[0]) / len * 0.5, (b[1] - a[1]) / len * 0.5];
+        Some([[a[0] - u[0], a[1] - u[1]], [b[0] + u[0], b[1] + u[1]]])
+    }
+}
+
 /// Limits of [`wall_gaps`], in pixels.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct GapLimits {
@@ -26,6 +51,25 @@ pub(crate) struct GapLimits {
     pub jamb: usize,
     /// Thickest wall a doorway may pass through.
     pub depth: usize,
+    /// Doorways or wider openings.
+    pub kind: GapKind,
+}
+
+/// What a scan looks for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum GapKind {
+    /// Doorway gaps: the checks of [`wall_gaps`].
+    Doorway,
+    /// Openings wider than doorways, judged harder. A jamb that is a wall
+    /// going on in line is as thick as the stack (the opening's two jambs
+    /// are the ends of one wall, not walls offset across the line, as
+    /// where a slanted wall runs past a doorway); and the floor goes on
+    /// for `face` lines beyond both faces across nine tenths of the
+    /// opening's width (a wall hugging the line leaves no opening).
+    Opening {
+        /// Lines looked at beyond each face.
+        face: usize,
+    },
 }
 
 /// Finds doorway gaps in the walls of `free` (non-zero = free; everything
@@ -178,7 +222,23 @@ fn scan(
             let reach = limits.jamb.max(2);
             let before = face(&mut (1..=reach).filter_map(|d| first.checked_sub(d)));
             let after = face(&mut (1..=reach).map(|d| last + d));
-            let faces_open = matches!((before, after), (Some(a), Some(b)) if a || b);
+            let mut faces_open = matches!((before, after), (Some(a), Some(b)) if a || b);
+            if let GapKind::Opening { face } = limits.kind {
+                let floor = |ls: &mut dyn Iterator<Item = usize>| {
+                    let (mut n, mut f) = (0usize, 0usize);
+                    for l in ls {
+                        for k in lo..hi {
+                            n += 1;
+                            f += usize::from(l < lines && is_free(l, k));
+                        }
+                    }
+                    n > 0 && 10 * f >= 9 * n
+                };
+                faces_open = faces_open
+                    && first >= face
+                    && floor(&mut (1..=face).map(|d| first - d))
+                    && floor(&mut (1..=face).map(|d| last + d));
+            }
             let wide_enough = hi - lo >= limits.width.0;
             // Each jamb is a wall along the line (at least `jamb` of it, in
             // some line of the stack) or the end of a wall across it that
@@ -202,8 +262,17 @@ fn scan(
                     up + down >= depth + limits.jamb
                 })
             };
-            let left_jamb = lo > 0 && (along(lo - 1, -1) || across(lo - 1));
-            let right_jamb = hi < len && (along(hi, 1) || across(hi));
+            // An opening's jamb in line is as thick as its wall (see
+            // `GapKind::Opening`), give or take a ragged pixel each side.
+            let thin = |k: usize| {
+                limits.kind == GapKind::Doorway || {
+                    let up = (0..=mid).rev().take_while(|&l| !is_free(l, k)).count();
+                    let down = (mid + 1..lines).take_while(|&l| !is_free(l, k)).count();
+                    up + down <= depth + 2
+                }
+            };
+            let left_jamb = lo > 0 && ((along(lo - 1, -1) && thin(lo - 1)) || across(lo - 1));
+            let right_jamb = hi < len && ((along(hi, 1) && thin(hi)) || across(hi));
             if depth <= limits.depth && wide_enough && faces_open && left_jamb && right_jamb {
                 out.push(WallGap {
                     line: (lo..hi).map(|k| index(mid, k)).collect(),
@@ -265,7 +334,46 @@ mod tests {
         width: (2, 4),
         jamb: 2,
         depth: 2,
+        kind: GapKind::Doorway,
     };
+
+    /// A 30 x 14 px floor with a wall in rows 6-7 that has a 12 px
+    /// opening (x 8..20), and `extra(x, y)` walls besides.
+    fn front(extra: impl Fn(usize, usize) -> bool) -> Mask {
+        Mask::from_fn(30, 14, |x, y| {
+            let (x, y) = (x as usize, y as usize);
+            let wall = (6..8).contains(&y) && !(8..20).contains(&x);
+            image::Luma([if wall || extra(x, y) { 0 } else { 255 }])
+        })
+    }
+
+    const OPENINGS: GapLimits = GapLimits {
+        width: (9, 16),
+        jamb: 4,
+        depth: 3,
+        kind: GapKind::Opening { face: 2 },
+    };
+
+    #[test]
+    fn an_opening_wider_than_any_doorway_is_found_by_its_own_scan() {
+        let g = axis_gaps(&front(|_, _| false), OPENINGS);
+        assert_eq!(g.len(), 1, "{g:?}");
+        assert_eq!(g[0].width_px, 12);
+        // Jamb to jamb, along row 7 (the middle of the 2-row stack).
+        assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
+        assert!(g[0].crossed_by(&g[0].line[..6]));
+        assert!(!g[0].crossed_by(&g[0].line[..5]));
+        // The doorway scan takes none so wide.
+        let doorways = GapLimits {
+            width: (2, 8),
+            kind: GapKind::Doorway,
+            ..OPENINGS
+        };
+        assert!(axis_gaps(&front(|_, _| false), doorways).is_empty());
+        // A wall hugging one face (row 9, x 12..20) leaves no opening.
+        let hugged = front(|x, y| y == 9 && (12..20).contains(&x));
+        assert!(axis_gaps(&hugged, OPENINGS).is_empty());
+    }
 
     #[test]
     fn a_doorway_in_a_horizontal_wall() {
@@ -315,6 +423,7 @@ mod tests {
             width: (6, 14),
             jamb: 4,
             depth: 4,
+            kind: GapKind::Doorway,
         };
         let g = wall_gaps(&m, dominant_orientation(&m), limits);
         assert_eq!(g.len(), 1, "{g:?}");
@@ -378,6 +487,7 @@ mod tests {
             width: (2, 6),
             jamb: 3,
             depth: 3,
+            kind: GapKind::Doorway,
         };
         let g = axis_gaps(&m, limits);
         assert_eq!(g.len(), 1, "{g:?}");
@@ -401,6 +511,7 @@ mod tests {
         width: (2, 6),
         jamb: 2,
         depth: 2,
+        kind: GapKind::Doorway,
     };
 
     #[test]

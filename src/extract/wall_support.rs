@@ -106,18 +106,50 @@ impl WallSupport {
             .is_some_and(|(a, b)| self.supported(a, b, true) == Some(false))
     }
 
+    /// Whether the opening whose line is `pixels` crosses a passage: at one
+    /// of its ends a wall line across (runs of at least `tie_run`, a jamb,
+    /// within `tolerance` of the end's line) goes on more than `reach` past
+    /// both faces of the wall, within twice `long_run`; as a corridor's side
+    /// walls do where the line joins two wall ends across it, or a room's
+    /// front wall where the line runs from furniture standing out from the
+    /// back wall to the front (with a doorway beside the end, the wall may
+    /// go on past that face only in a short piece). A room's side wall
+    /// meeting its front at an opening's end stops at the front.
+    pub(crate) fn crosses_passage(&self, pixels: &[u32]) -> bool {
+        let Some((a, b)) = border_ends(self.width, pixels) else {
+            return false;
+        };
+        let Some(k) = self.direction(a, b) else {
+            return false;
+        };
+        let l = &self.limits;
+        let j = 1 - k;
+        let across = self.runs.across(j);
+        let window = 2.0 * l.long_run;
+        let both = |p: [f64; 2]| {
+            let t = project(p, along(across));
+            let runs: Vec<Run> = self
+                .runs
+                .near(j, project(p, across), l.tolerance)
+                .filter(|&r| length(r) >= l.tie_run)
+                .collect();
+            let lower = runs
+                .iter()
+                .any(|r| (r.0 as f64) < t - l.reach && r.1 as f64 > t - window);
+            let upper = runs
+                .iter()
+                .any(|r| r.1 as f64 > t + l.reach && (r.0 as f64) < t + window);
+            lower && upper
+        };
+        both(a) || both(b)
+    }
+
     /// Whether the doorway `a`–`b` (pixels) has wall support; `None` where
     /// the rule abstains. With `ties`, both ends anchored support it
     /// ([`Self::tied`], [`Self::walled_line`]).
     fn supported(&self, a: [f64; 2], b: [f64; 2], ties: bool) -> Option<bool> {
         let l = &self.limits;
-        let d = [b[0] - a[0], b[1] - a[1]];
-        let len = d[0].hypot(d[1]);
-        if len <= 0.0 {
-            return None;
-        }
-        let k =
-            (0..2).find(|&k| (project(d, along(self.runs.across(k))) / len).abs() >= MIN_COS)?;
+        let k = self.direction(a, b)?;
         let middle = [(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0];
         if !self.walls_near(middle) {
             return None;
@@ -136,6 +168,17 @@ impl WallSupport {
         }
         let pair = in_line(l.pair_run);
         Some(pair.0 && pair.1)
+    }
+
+    /// The dominant direction (0 or 1) line `a`–`b` runs along, within
+    /// [`MIN_COS`].
+    fn direction(&self, a: [f64; 2], b: [f64; 2]) -> Option<usize> {
+        let d = [b[0] - a[0], b[1] - a[1]];
+        let len = d[0].hypot(d[1]);
+        if len <= 0.0 {
+            return None;
+        }
+        (0..2).find(|&k| (project(d, along(self.runs.across(k))) / len).abs() >= MIN_COS)
     }
 
     /// Whether a long run lies within `near` of `p`.
@@ -332,6 +375,26 @@ mod tests {
             0.0,
             AT_10_CM,
         )
+    }
+
+    #[test]
+    fn a_line_joining_wall_ends_across_a_corridor_crosses_a_passage() {
+        // A 3 m corridor (x 20..50) between walls at x = 19 and 50, rooms
+        // either side divided along y = 30: the line across the corridor
+        // between the dividers' ends has the corridor's walls going on
+        // past both its faces.
+        let w = 70;
+        let line: Vec<u32> = (20..50).map(|x| (30 * w + x) as u32).collect();
+        let corridor = grid(w, 60, |x, y| {
+            x == 19 || x == 50 || (y == 30 && !(19..=50).contains(&x))
+        });
+        assert!(corridor.crosses_passage(&line));
+        // A room's 3 m open front: the room's side wall meets the front
+        // and stops there.
+        let front = grid(w, 60, |x, y| {
+            (y == 30 && !(20..50).contains(&x)) || (x == 19 && y < 30)
+        });
+        assert!(!front.crosses_passage(&line));
     }
 
     #[test]
