@@ -7,7 +7,7 @@
 //! Uses `model`. Must not use the other diff files, so that none of them
 //! imports another in a circle.
 
-use crate::model::{Point, SpaceId};
+use crate::model::{Point, SpaceId, segment_distance};
 
 /// The positive-area overlaps between the spaces of two models: every pair
 /// whose polygons share area, with both areas (holes excluded); and, for
@@ -86,18 +86,6 @@ impl DoorSide {
             (cb, a)
         };
         let centres = (ca[0] - cb[0]).hypot(ca[1] - cb[1]);
-        Some(centres.min(to_segment(short_centre, long)))
+        Some(centres.min(segment_distance(short_centre, long[0], long[1])))
     }
-}
-
-/// Distance from `p` to the segment `[a, b]`.
-fn to_segment(p: Point, [a, b]: [Point; 2]) -> f64 {
-    let d = [b[0] - a[0], b[1] - a[1]];
-    let len2 = d[0] * d[0] + d[1] * d[1];
-    let t = if len2 > 0.0 {
-        (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p[0] - a[0] - t * d[0]).hypot(p[1] - a[1] - t * d[1])
 }

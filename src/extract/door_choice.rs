@@ -3,7 +3,7 @@
 //! under the paper's skeleton rule, those touching a doorway point); a
 //! door found inside a narrow passage moves to the passage's mouth.
 
-use std::collections::{HashMap, HashSet};
+use std::collections::HashSet;
 
 use super::doors::Border;
 use super::joins::JoinLimits;
@@ -11,7 +11,7 @@ use super::passages::give_passages_to_narrow_side;
 use super::pixel_config::PixelConfig;
 use super::regions::Regions;
 use super::stubs::compared_width;
-use super::wall_gaps::WallGap;
+use super::wall_gaps::{GapIndex, WallGap};
 
 /// What marks a doorway besides the borders' widths.
 pub(crate) struct DoorCues<'a> {
@@ -73,21 +73,9 @@ fn select_doors(
             .filter(|&k| all[k].pixels.iter().any(|&p| skeleton[p as usize]))
             .collect();
     }
-    let gaps = cues.gaps;
     let (door_min_px, door_px) = (limits.door_min_px, limits.door_max_px);
     let constriction = |b: &Border| limits.constriction * compared_width(b, widest, is_passage);
-    let gap_at: HashMap<u32, usize> = gaps
-        .iter()
-        .enumerate()
-        .flat_map(|(k, g)| g.line.iter().map(move |&p| (p, k)))
-        .collect();
-    let crosses_gap = |b: &Border| {
-        let mut hits: HashMap<usize, usize> = HashMap::new();
-        for k in b.pixels.iter().filter_map(|p| gap_at.get(p)) {
-            *hits.entry(*k).or_default() += 1;
-        }
-        hits.iter().any(|(&k, &n)| 2 * n >= gaps[k].line.len())
-    };
+    let gaps = GapIndex::new(cues.gaps);
     // Pairs of regions that also meet wider than any door: openly joined,
     // so a narrow stretch between them elsewhere (a nook between furniture
     // and a wall) is no doorway.
@@ -100,7 +88,7 @@ fn select_doors(
         .filter(|&k| {
             let b = &all[k];
             // A doorway in a wall is a door whatever the widths around it.
-            crosses_gap(b)
+            gaps.crossed(&b.pixels).is_some()
                 || (b.width_px >= door_min_px
                     && b.width_px <= door_px
                     && b.pixels.len() as f64 >= door_min_px

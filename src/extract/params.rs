@@ -125,9 +125,9 @@ pub struct BuildingPriors {
     /// turns this off. Default 4.0 m: the open fronts and room-to-room
     /// openings of the Intel lab, office_a and FR079 (IPA door recall
     /// 95.18 → 96.02 %, connections 91.84 → 92.70 %; ROSE² door recall
-    /// 67.82 → 69.26 %) with no shared map worse and two of 150 simulated
-    /// buildings a door worse (`benches/README.md`, "Openings wider than
-    /// doorways").
+    /// 67.82 → 69.26 %) with no shared map worse; of 150 simulated
+    /// buildings one gains a false door and one loses room recall
+    /// (`benches/README.md`, "Openings wider than doorways").
     pub opening_width_max_m: f64,
     /// A gap between `door_width_min_m` and `wall_gap_width_max_m` in a
     /// straight wall (along the map's dominant directions) with at least

@@ -23,7 +23,7 @@ use super::resample::{coarsen, pixel_centroids, refine};
 use super::segment::segment_basins;
 use super::skeleton_doors::skeleton_doorways;
 use super::tidy::tidy_labels;
-use super::wall_gaps::{WallGap, close_gaps, reopen_gaps, wall_gaps};
+use super::wall_gaps::{GapIndex, WallGap, close_gaps, reopen_gaps, wall_gaps};
 use super::wall_support::WallSupport;
 use super::{ExtractError, ExtractParams};
 use crate::grid::OccupancyGrid;
@@ -142,8 +142,9 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     let n_regions = regions.labels.count;
     let (mut labels, mut door_lines) = span_doors(grid, &regions, &doors, &px);
     // An opening's door is as wide as the opening, jamb to jamb.
+    let crossed = GapIndex::new(&openings);
     for (line, door) in door_lines.iter_mut().zip(&doors) {
-        if let Some(o) = openings.iter().find(|o| o.crossed_by(&door.pixels)) {
+        if let Some(o) = crossed.crossed(&door.pixels) {
             *line = o.ends(grid.width).or(*line);
         }
     }
@@ -206,15 +207,15 @@ fn clean(
     Ok(free)
 }
 
-/// Openings in walls wider than doorway gaps (see `opening_width_max_m`),
-/// but none across a passage (`WallSupport::crosses_passage`); like the
-/// doorway gaps, they must then have wall support.
+/// Openings in walls wider than doorway gaps (see `opening_width_max_m`)
+/// with wall support like the doorway gaps, and none across a passage
+/// (`WallSupport::crosses_passage`).
 fn openings(free: &FreeSpace, deg: f64, support: &WallSupport, px: &PixelConfig) -> Vec<WallGap> {
     let Some(limits) = &px.openings else {
         return Vec::new();
     };
     let mut found = wall_gaps(&free.clean, deg, *limits);
-    found.retain(|o| !support.crosses_passage(&o.line));
+    found.retain(|o| !support.crosses_passage(&o.line) && !support.lacks_gap(&o.line));
     found
 }
 

@@ -4,7 +4,7 @@
 //! doorway even when it is as wide as the corridor it opens onto, where the
 //! distance transform shows no constriction.
 
-use std::collections::HashSet;
+use std::collections::HashMap;
 
 use super::interior::neighbours;
 use crate::imaging::{Labels, Mask, line_pixels, turn_mask};
@@ -20,13 +20,6 @@ pub(crate) struct WallGap {
 }
 
 impl WallGap {
-    /// Whether a border through `pixels` crosses this gap: it runs along at
-    /// least half of the gap's line (as `door_choice` asks of doors).
-    pub(crate) fn crossed_by(&self, pixels: &[u32]) -> bool {
-        let on: HashSet<u32> = pixels.iter().copied().collect();
-        2 * self.line.iter().filter(|p| on.contains(p)).count() >= self.line.len()
-    }
-
     /// The gap's line from jamb to jamb (pixel coordinates, corners at
     /// whole numbers) in a `width`-wide image: the outer edges of its end
     /// pixels along the line.
@@ -39,6 +32,40 @@ impl WallGap {
         }
         let u = [(b[0] - a[0]) / len * 0.5, (b[1] - a[1]) / len * 0.5];
         Some([[a[0] - u[0], a[1] - u[1]], [b[0] + u[0], b[1] + u[1]]])
+    }
+}
+
+/// Which gap a border between two regions crosses: a gap whose line the
+/// border runs along for at least half its pixels. Built once over a set
+/// of gaps, asked per border.
+pub(crate) struct GapIndex<'a> {
+    gaps: &'a [WallGap],
+    /// The gap each line pixel belongs to.
+    at: HashMap<u32, usize>,
+}
+
+impl<'a> GapIndex<'a> {
+    /// The index of `gaps`' line pixels.
+    pub(crate) fn new(gaps: &'a [WallGap]) -> GapIndex<'a> {
+        let at = gaps
+            .iter()
+            .enumerate()
+            .flat_map(|(k, g)| g.line.iter().map(move |&p| (p, k)))
+            .collect();
+        GapIndex { gaps, at }
+    }
+
+    /// The gap the border through `pixels` crosses, if any (of several,
+    /// the one it runs along furthest).
+    pub(crate) fn crossed(&self, pixels: &[u32]) -> Option<&'a WallGap> {
+        let mut hits: HashMap<usize, usize> = HashMap::new();
+        for &k in pixels.iter().filter_map(|p| self.at.get(p)) {
+            *hits.entry(k).or_default() += 1;
+        }
+        hits.into_iter()
+            .filter(|&(k, n)| 2 * n >= self.gaps[k].line.len())
+            .max_by_key(|&(k, n)| (n, std::cmp::Reverse(k)))
+            .map(|(k, _)| &self.gaps[k])
     }
 }
 
@@ -361,8 +388,9 @@ mod tests {
         assert_eq!(g[0].width_px, 12);
         // Jamb to jamb, along row 7 (the middle of the 2-row stack).
         assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
-        assert!(g[0].crossed_by(&g[0].line[..6]));
-        assert!(!g[0].crossed_by(&g[0].line[..5]));
+        let index = GapIndex::new(&g);
+        assert_eq!(index.crossed(&g[0].line[..6]), Some(&g[0]));
+        assert_eq!(index.crossed(&g[0].line[..5]), None);
         // The doorway scan takes none so wide.
         let doorways = GapLimits {
             width: (2, 8),
