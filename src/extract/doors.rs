@@ -356,6 +356,7 @@ mod tests {
             min_depth: 2.0,
             max_depth: 4.0,
             slack: 1.0,
+            noise_run: 2.0,
         };
         let (cut, lines) = cut_doors(&labels, None, &[&b[0]], &dist, &limits);
         assert_eq!(cut.count, 3);

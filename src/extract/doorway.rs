@@ -10,8 +10,8 @@
 //! cell (Amanatides & Woo 1987, "A fast voxel traversal algorithm"), so a
 //! chord ends exactly on the edge of the first blocked pixel: a run of n
 //! free pixels along a row is a chord n pixels long. A chord crosses a
-//! speck (up to [`NOISE_RUN_MAX`] uncertain pixels with free space after
-//! them, see [`Pixel`]); it ends at a wall.
+//! speck (a stretch of uncertain pixels up to [`SpanLimits::noise_run`]
+//! long with free space after it, see [`Pixel`]); it ends at a wall.
 
 use super::furniture::islands;
 use crate::grid::{Cell, OccupancyGrid};
@@ -33,6 +33,9 @@ pub(crate) struct SpanLimits {
     /// How much wider than the throat (on either end) the opening may get
     /// and still be inside the wall: anti-aliased or ragged jambs.
     pub slack: f64,
+    /// Longest stretch of uncertain pixels a chord crosses (with free space
+    /// after it): a jamb is a wall, or a longer stretch of uncertain grey.
+    pub noise_run: f64,
 }
 
 /// A door's place in its opening (see the module doc).
@@ -231,20 +234,16 @@ pub(crate) enum Pixel {
     Wall,
 }
 
-/// Most noise pixels in a row that a chord crosses (with free space
-/// after them): a jamb is a wall, or more uncertain pixels than this in a
-/// row. On real maps specks inside a doorway cut its chords short and
-/// tilted: umic's 0.88 m doorways measured 0.4–0.75 m.
-const NOISE_RUN_MAX: usize = 2;
-
 /// Distance from `p` along the unit vector `d` to the edge of the first
-/// wall pixel, or of the first of more than [`NOISE_RUN_MAX`] noise pixels
-/// in a row; None beyond `max` (0 when `p` is not free).
+/// wall pixel, or to the start of a stretch of noise pixels longer than
+/// `noise_run` (pixels along `d`); None beyond `max` (0 when `p` is not
+/// free).
 fn exit_distance(
     pixel: &impl Fn(i64, i64) -> Pixel,
     p: [f64; 2],
     d: [f64; 2],
     max: f64,
+    noise_run: f64,
 ) -> Option<f64> {
     let (mut ix, mut iy) = (p[0].floor() as i64, p[1].floor() as i64);
     if pixel(ix, iy) != Pixel::Free {
@@ -261,8 +260,8 @@ fn exit_distance(
     };
     let (step_x, mut next_x, delta_x) = axis(p[0], ix, d[0]);
     let (step_y, mut next_y, delta_y) = axis(p[1], iy, d[1]);
-    // The noise pixels just crossed: where the first began, how many.
-    let mut noise: Option<(f64, usize)> = None;
+    // Where the noise pixels just crossed began.
+    let mut noise: Option<f64> = None;
     loop {
         let t = if next_x < next_y {
             ix += step_x;
@@ -280,24 +279,26 @@ fn exit_distance(
         }
         match (pixel(ix, iy), noise) {
             (Pixel::Free, _) => noise = None,
-            (Pixel::Wall, run) => return Some(run.map_or(t, |(at, _)| at)),
-            (Pixel::Noise, None) => noise = Some((t, 1)),
-            (Pixel::Noise, Some((at, n))) if n >= NOISE_RUN_MAX => return Some(at),
-            (Pixel::Noise, Some((at, n))) => noise = Some((at, n + 1)),
+            (Pixel::Wall, run) => return Some(run.unwrap_or(t)),
+            (Pixel::Noise, None) => noise = Some(t),
+            (Pixel::Noise, Some(at)) if t - at >= noise_run - 1e-9 => return Some(at),
+            (Pixel::Noise, Some(_)) => {}
         }
     }
 }
 
 /// The chord through `p` along `u`: `(s_lo, s_hi)` with `s_lo ≤ 0 ≤ s_hi`,
-/// or None if it is longer than `max` or `p` is blocked.
+/// or None if it is longer than `limits.max_width` or `p` is blocked;
+/// stretches of noise up to `limits.noise_run` are crossed.
 fn chord(
     pixel: &impl Fn(i64, i64) -> Pixel,
     p: [f64; 2],
     u: [f64; 2],
-    max: f64,
+    limits: &SpanLimits,
 ) -> Option<(f64, f64)> {
-    let hi = exit_distance(pixel, p, u, max)?;
-    let lo = exit_distance(pixel, p, [-u[0], -u[1]], max - hi)?;
+    let (max, run) = (limits.max_width, limits.noise_run);
+    let hi = exit_distance(pixel, p, u, max, run)?;
+    let lo = exit_distance(pixel, p, [-u[0], -u[1]], max - hi, run)?;
     (hi > 0.0 && lo + hi <= max).then_some((-lo, hi))
 }
 
@@ -348,9 +349,7 @@ pub(super) fn throat(
     // The shortest chord through the point at offset t: (length, angle).
     let shortest_at = |t: f64| -> Option<(f64, f64)> {
         let p = [centre[0] + t * normal[0], centre[1] + t * normal[1]];
-        let length = |deg: f64| {
-            chord(pixel, p, turned(along, deg), limits.max_width).map(|(lo, hi)| hi - lo)
-        };
+        let length = |deg: f64| chord(pixel, p, turned(along, deg), limits).map(|(lo, hi)| hi - lo);
         let mut found: Option<(f64, f64)> = None;
         for a in (-30..=30).map(|a| f64::from(a) * 2.0) {
             if let Some(l) = length(a)
@@ -396,7 +395,7 @@ pub(super) fn throat(
     let lengths: Vec<(f64, f64)> = (-80..=80)
         .map(|f| a + f64::from(f) * 0.25)
         .filter_map(|deg| {
-            chord(pixel, p, turned(along, deg), limits.max_width).map(|(lo, hi)| (deg, hi - lo))
+            chord(pixel, p, turned(along, deg), limits).map(|(lo, hi)| (deg, hi - lo))
         })
         .collect();
     let least = lengths.iter().map(|l| l.1).fold(f64::INFINITY, f64::min);
@@ -407,7 +406,7 @@ pub(super) fn throat(
         .collect();
     let a = plateau.get(plateau.len() / 2).copied().unwrap_or(a);
     let u = turned(along, a);
-    let s = chord(pixel, p, u, limits.max_width)?;
+    let s = chord(pixel, p, u, limits)?;
     // Across the doorway, on the border normal's side.
     let mut n = [u[1], -u[0]];
     if n[0] * normal[0] + n[1] * normal[1] < 0.0 {
@@ -447,7 +446,7 @@ pub(super) fn span(
             // reads the pixels on the throat's side (no bias by direction).
             let t = (k * STEP - 1e-6) * if side == 0 { -1.0 } else { 1.0 };
             let p = [th.centre[0] + t * th.n[0], th.centre[1] + t * th.n[1]];
-            let inside = chord(pixel, p, th.u, limits.max_width)
+            let inside = chord(pixel, p, th.u, limits)
                 .filter(|&(a, b)| a >= s_lo - limits.slack && b <= s_hi + limits.slack);
             match inside {
                 Some((a, b)) => {
@@ -569,6 +568,7 @@ mod tests {
         min_depth: 2.0,
         max_depth: 24.0,
         slack: 1.5,
+        noise_run: 2.0,
     };
 
     #[test]
@@ -676,6 +676,42 @@ mod tests {
         let [p, q] = span.line;
         let len = (q[0] - p[0]).hypot(q[1] - p[1]);
         assert!(len < 9.0, "{len}: {span:?}");
+    }
+
+    /// A cluster of specks standing in a doorway is crossed when it is no
+    /// longer than `noise_run`; a longer one is a jamb.
+    #[test]
+    fn a_speck_cluster_in_a_doorway_is_crossed_up_to_the_noise_run() {
+        // A 12-pixel doorway (columns 6..=17) through a wall 3 rows thick;
+        // a cluster of specks three pixels long (columns 8..=10) stands
+        // in every row of it, free space on both sides.
+        let mut rows = vec!["aaaaaaaaaaaaaaaaaaaaaaaaaaaaaa"; 10];
+        rows.extend([
+            "######aa+++aaaaaaa############",
+            "######bb+++bbbbbbb############",
+            "######bb+++bbbbbbb############",
+        ]);
+        rows.extend(vec!["bbbbbbbbbbbbbbbbbbbbbbbbbbbbbb"; 10]);
+        let l = ascii_labels(&rows);
+        let walls: Vec<Pixel> = rows
+            .iter()
+            .flat_map(|r| r.bytes())
+            .map(|b| if b == b'#' { Pixel::Wall } else { Pixel::Noise })
+            .collect();
+        let length = |noise_run: f64| {
+            let limits = SpanLimits {
+                noise_run,
+                ..LIMITS
+            };
+            let span = door_span(&l, Some(&walls), (1, 2), &border(&l), &limits).unwrap();
+            let [p, q] = span.line;
+            (q[0] - p[0]).hypot(q[1] - p[1])
+        };
+        let crossed = length(4.0);
+        assert!((crossed - 12.0).abs() < 0.5, "{crossed}");
+        // Columns 11..=17 only.
+        let cut = length(2.0);
+        assert!((cut - 7.0).abs() < 0.5, "{cut}");
     }
 
     /// A 3-pixel speck standing a pixel off a jamb, and the free cells the

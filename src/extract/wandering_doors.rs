@@ -300,6 +300,7 @@ mod tests {
         min_depth: 1.0,
         max_depth: 3.0,
         slack: 1.0,
+        noise_run: 2.0,
     };
 
     #[test]
