@@ -127,6 +127,71 @@ pub(crate) fn islands(grid: &OccupancyGrid) -> Islands {
     }
 }
 
+/// Per pixel of `grid`: whether it is **clutter**, a cell of an island
+/// (see [`Islands`]) at most `max_px` across that is no piece of wall:
+/// less than `wall_elongation` times as long as it is thick, by its second
+/// moments (so at any angle). A doorway's jambs are the building's walls;
+/// a border ending on clutter runs between furniture and whatever it
+/// stands by.
+pub(crate) fn clutter_pixels(grid: &OccupancyGrid, max_px: f64, wall_elongation: f64) -> Vec<bool> {
+    let isl = islands(grid);
+    let elongation = elongations(&isl.pieces);
+    let clutter: Vec<bool> = isl
+        .extent
+        .iter()
+        .zip(&elongation)
+        .map(|(e, &k)| e.is_some_and(|e| e <= max_px) && k < wall_elongation)
+        .collect();
+    let w = grid.width as usize;
+    let mut out = vec![false; grid.cells.len()];
+    for r in isl.pieces.runs.iter().filter(|r| clutter[r.label as usize]) {
+        let i = r.y as usize * w;
+        out[i + r.x0 as usize..i + r.x1 as usize].fill(true);
+    }
+    out
+}
+
+/// Per label of `pieces` (index 0 unused): how many times longer than
+/// thick the piece is, the square root of the ratio of its principal
+/// second moments (each pixel a unit square, so a single row of pixels is
+/// finite).
+fn elongations(pieces: &RunLabels) -> Vec<f64> {
+    // Per label: n, Σx, Σy, Σx², Σy², Σxy over pixel centres.
+    let mut sums = vec![[0f64; 6]; pieces.count as usize + 1];
+    for r in &pieces.runs {
+        let (a, b) = (f64::from(r.x0), f64::from(r.x1));
+        let n = b - a;
+        let sx = (a + b - 1.0) * n / 2.0;
+        // Σ x² for x in a..b.
+        let sq = |m: f64| (m - 1.0) * m * (2.0 * m - 1.0) / 6.0;
+        let sxx = sq(b) - sq(a);
+        let y = f64::from(r.y);
+        let s = &mut sums[r.label as usize];
+        s[0] += n;
+        s[1] += sx;
+        s[2] += y * n;
+        s[3] += sxx;
+        s[4] += y * y * n;
+        s[5] += y * sx;
+    }
+    sums.iter()
+        .map(|s| {
+            if s[0] <= 0.0 {
+                return 1.0;
+            }
+            let n = s[0];
+            let (mx, my) = (s[1] / n, s[2] / n);
+            // A pixel's own spread (1/12 on each axis) keeps thin pieces finite.
+            let cxx = s[3] / n - mx * mx + 1.0 / 12.0;
+            let cyy = s[4] / n - my * my + 1.0 / 12.0;
+            let cxy = s[5] / n - mx * my;
+            let half = (cxx + cyy) / 2.0;
+            let d = (((cxx - cyy) / 2.0).powi(2) + cxy * cxy).sqrt();
+            ((half + d) / (half - d).max(1e-9)).sqrt()
+        })
+        .collect()
+}
+
 /// Which of the `candidate` islands (by label; larger than furniture and
 /// at most `limits.clutter` across) are clutter: no wall piece by the wall
 /// lines of the components that are no island of either size (the
@@ -244,6 +309,35 @@ mod tests {
                 tolerance: 1,
             },
         }
+    }
+
+    #[test]
+    fn elongation_is_length_over_thickness_at_any_angle() {
+        // A 10 x 2 bar, a 4 x 4 block and a diagonal line of 8 pixels.
+        let mut rows = vec![".".repeat(30); 20];
+        for y in 2..4 {
+            rows[y].replace_range(2..12, &"#".repeat(10));
+        }
+        for y in 8..12 {
+            rows[y].replace_range(2..6, "####");
+        }
+        for k in 0..8 {
+            rows[8 + k].replace_range(14 + k..15 + k, "#");
+        }
+        let g = OccupancyGrid::from_ascii(&rows.join("\n"), 0.05);
+        let isl = islands(&g);
+        let k = elongations(&isl.pieces);
+        let at = |x: usize, y: usize| {
+            let r = isl
+                .pieces
+                .runs
+                .iter()
+                .find(|r| r.y as usize == y && (r.x0 as usize..r.x1 as usize).contains(&x));
+            k[r.map_or(0, |r| r.label as usize)]
+        };
+        assert!((at(2, 2) - 5.0).abs() < 1e-9, "{}", at(2, 2));
+        assert!((at(2, 8) - 1.0).abs() < 1e-9, "{}", at(2, 8));
+        assert!(at(14, 8) > 5.0, "{}", at(14, 8));
     }
 
     #[test]

@@ -43,6 +43,22 @@ const SUPPORT_TOLERANCE_M: f64 = 0.5;
 const SUPPORT_REACH_M: f64 = 0.6;
 const SUPPORT_NEAR_M: f64 = 2.0;
 
+/// Clutter is no jamb (`wall_support.rs`, `furniture::clutter_pixels`): a
+/// door-wide border with an end on an obstacle island at most this wide
+/// (m) that is less than [`WALL_PIECE_ELONGATION`] times as long as thick,
+/// and on nothing else within [`BORDER_END_REACH_M`], joins its regions.
+/// It is ROSE²'s idea that rooms are bounded by the building's walls.
+/// Measured on the 19 development buildings (benches/README.md, "Clutter
+/// is no jamb"): no IPA map changes at 1.5 or 2 m; at 3 m office_e loses
+/// doors whose jambs are its round wall's pieces. Without the elongation
+/// test, lab_intel loses the doorways on either side of a free-standing
+/// diagonal wall piece. Ends looked at within 0.1 m lose umic a doorway
+/// whose jamb's speckled halo makes it look like a blob; 0.15 and 0.2 m
+/// measure the same.
+const CLUTTER_JAMB_MAX_M: f64 = 2.0;
+const WALL_PIECE_ELONGATION: f64 = 3.0;
+const BORDER_END_REACH_M: f64 = 0.15;
+
 /// How far (m) from a door border's centre, across it, its doorway's
 /// narrowest chord is sought.
 const SPAN_SEARCH_M: f64 = 0.25;
@@ -287,6 +303,9 @@ impl PixelConfig {
                 tolerance: px(SUPPORT_TOLERANCE_M).round() as i64,
                 reach: px(SUPPORT_REACH_M),
                 near: px(SUPPORT_NEAR_M),
+                clutter_max: px(CLUTTER_JAMB_MAX_M),
+                wall_elongation: WALL_PIECE_ELONGATION,
+                end_reach: px(BORDER_END_REACH_M).round().max(1.0) as i64,
             },
             near_reach: NEAR_REACH_DOORS * px(b.door_width_max_m),
             passage: PassageLimits {

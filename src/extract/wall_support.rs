@@ -28,6 +28,7 @@
 //! Anywhere else the rule abstains and the gap or border stays. Lengths are in
 //! pixels here; `pixel_config.rs` sets them in metres.
 
+use super::furniture::clutter_pixels;
 use super::wall_runs::{Run, WallRuns, along, project};
 use crate::grid::{Cell, OccupancyGrid};
 
@@ -55,12 +56,25 @@ pub(crate) struct SupportLimits {
     /// How far from a doorway's middle a long run shows that the walls
     /// there follow the dominant directions.
     pub near: f64,
+    /// Widest island that can be clutter (see `furniture::clutter_pixels`).
+    pub clutter_max: f64,
+    /// An island at least this many times as long as thick is a piece of
+    /// wall, not clutter.
+    pub wall_elongation: f64,
+    /// How far round a border's end its obstacles are looked at, whole
+    /// pixels.
+    pub end_reach: i64,
 }
 
 /// The wall runs of one map, ready to judge doorway gaps and borders.
 pub(crate) struct WallSupport {
     runs: WallRuns,
+    /// Per pixel: not free.
+    blocked: Vec<bool>,
+    /// Per pixel: clutter (see `furniture::clutter_pixels`).
+    clutter: Vec<bool>,
     width: u32,
+    height: u32,
     limits: SupportLimits,
 }
 
@@ -87,16 +101,45 @@ impl WallSupport {
         let min_run = limits.long_run.min(limits.pair_run).min(limits.tie_run);
         WallSupport {
             runs: WallRuns::new(&face, deg, min_run, limits.gap),
+            blocked: grid.cells.iter().map(|c| *c != Cell::Free).collect(),
+            clutter: clutter_pixels(grid, limits.clutter_max, limits.wall_elongation),
             width: grid.width,
+            height: grid.height,
             limits,
         }
     }
 
-    /// Whether the border through `pixels` (indices into the grid) is
-    /// judged and has no wall support (see the module doc).
+    /// Whether the border through `pixels` (indices into the grid) has no
+    /// wall support: an end of it lies on clutter, or it is judged and
+    /// unsupported (see the module doc).
     pub(crate) fn lacks(&self, pixels: &[u32]) -> bool {
-        border_ends(self.width, pixels)
-            .is_some_and(|(a, b)| self.supported(a, b, false) == Some(false))
+        border_ends(self.width, pixels).is_some_and(|(a, b)| {
+            self.on_clutter(a) || self.on_clutter(b) || self.supported(a, b, false) == Some(false)
+        })
+    }
+
+    /// Whether the obstacles within `end_reach` of `p` are all clutter
+    /// (and there are some): a border's end on a piece of furniture, not
+    /// on a jamb.
+    fn on_clutter(&self, p: [f64; 2]) -> bool {
+        let r = self.limits.end_reach;
+        let (w, h) = (i64::from(self.width), i64::from(self.height));
+        let (cx, cy) = (p[0].round() as i64, p[1].round() as i64);
+        let mut any = false;
+        for y in (cy - r).max(0)..=(cy + r).min(h - 1) {
+            for x in (cx - r).max(0)..=(cx + r).min(w - 1) {
+                if (x - cx).pow(2) + (y - cy).pow(2) > r * r {
+                    continue;
+                }
+                let i = (y * w + x) as usize;
+                if self.clutter[i] {
+                    any = true;
+                } else if self.blocked[i] {
+                    return false;
+                }
+            }
+        }
+        any
     }
 
     /// Whether the doorway gap whose line is `pixels` is judged and has no
@@ -355,6 +398,9 @@ mod tests {
         tolerance: 5,
         reach: 6.0,
         near: 20.0,
+        clutter_max: 20.0,
+        wall_elongation: 3.0,
+        end_reach: 1,
     };
 
     /// A `w` x `h` grid at 0.1 m/px, walled round, with `wall(x, y)` cells
@@ -395,6 +441,27 @@ mod tests {
             (y == 30 && !(20..50).contains(&x)) || (x == 19 && y < 30)
         });
         assert!(!front.crosses_passage(&line));
+    }
+
+    #[test]
+    fn a_border_ending_on_clutter_lacks_support() {
+        // A 6 m room; a 0.6 m desk (x 30..36, y 20..26) stands 0.9 m from
+        // the wall at y = 10: the border between them (x 33, y 11..20)
+        // ends on the desk.
+        let desk = |x: usize, y: usize| (30..36).contains(&x) && (20..26).contains(&y);
+        let border: Vec<u32> = (11..20).map(|y| (y * 70 + 33) as u32).collect();
+        let s = grid(70, 60, |x, y| y == 10 || desk(x, y));
+        assert!(s.lacks(&border));
+        // A free-standing piece of wall as long (3 m, 0.2 m thick) is a
+        // jamb: the border's ends are judged by the runs, as before.
+        let piece = |x: usize, y: usize| (18..48).contains(&x) && (20..22).contains(&y);
+        let w = grid(70, 60, |x, y| y == 10 || piece(x, y));
+        assert!(!w.on_clutter([33.0, 19.0]));
+        // The same desk against the wall is the wall's: no clutter.
+        let against = grid(70, 60, |x, y| {
+            y == 10 || ((30..36).contains(&x) && (11..17).contains(&y))
+        });
+        assert!(!against.on_clutter([33.0, 17.0]));
     }
 
     #[test]
