@@ -1,7 +1,7 @@
 //! Free-space cleaning: the free mask without LiDAR rays leaking into unknown
 //! space, speckle and tiny islands.
 
-use super::furniture::{IslandLimits, free_without_furniture};
+use super::furniture::{IslandLimits, Islands, free_without_furniture};
 use crate::grid::OccupancyGrid;
 use crate::imaging::{Mask, dilate, label_runs, open};
 
@@ -20,11 +20,12 @@ pub(crate) struct FreeSpace {
 /// 8-connected components under `min_area_px`. Lengths in pixels.
 pub(crate) fn clean_free(
     grid: &OccupancyGrid,
+    obstacles: &Islands,
     noise_px: f64,
     min_area_px: usize,
     islands: &IslandLimits,
 ) -> FreeSpace {
-    let free = free_without_furniture(grid, islands);
+    let free = free_without_furniture(grid, obstacles, islands);
     let r = noise_px;
     let mut clean = if r >= 0.5 {
         open(&free, r)
@@ -56,6 +57,7 @@ pub(crate) fn clean_free(
 mod tests {
     use super::*;
     use crate::extract::clutter::LineLimits;
+    use crate::extract::furniture::islands;
 
     #[test]
     fn rays_and_islands_go_rooms_stay() {
@@ -81,7 +83,7 @@ mod tests {
                 tolerance: 1,
             },
         };
-        let f = clean_free(&g, 1.0, 5, &none);
+        let f = clean_free(&g, &islands(&g), 1.0, 5, &none);
         let w = g.width as usize;
         assert_eq!(f.clean.as_raw()[2 * w + 10], 0, "ray removed");
         assert_eq!(f.clean.as_raw()[4 * w + 11], 0, "island removed");

@@ -13,7 +13,7 @@
 //! speck (a stretch of uncertain pixels up to [`SpanLimits::noise_run`]
 //! long with free space after it, see [`Pixel`]); it ends at a wall.
 
-use super::furniture::islands;
+use super::furniture::Islands;
 use crate::grid::{Cell, OccupancyGrid};
 use crate::imaging::Labels;
 
@@ -507,9 +507,8 @@ pub(super) fn span(
 ///   such a speck, in a jamb's corner): chords run through them, so they
 ///   do not shorten the doorway;
 /// - [`Pixel::Noise`] otherwise (an uncertain grey).
-pub(crate) fn outside_pixels(grid: &OccupancyGrid, speck_px: f64) -> Vec<Pixel> {
+pub(crate) fn outside_pixels(grid: &OccupancyGrid, islands: &Islands, speck_px: f64) -> Vec<Pixel> {
     let w = grid.width as usize;
-    let islands = islands(grid);
     let mut speck = vec![false; grid.cells.len()];
     for r in &islands.pieces.runs {
         if islands.extent[r.label as usize].is_some_and(|e| e <= speck_px) {
@@ -546,6 +545,7 @@ pub(crate) fn outside_pixels(grid: &OccupancyGrid, speck_px: f64) -> Vec<Pixel> 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::extract::furniture::islands;
     use crate::imaging::ascii_labels;
 
     fn border(l: &Labels) -> Vec<u32> {
@@ -727,7 +727,7 @@ mod tests {
         map.push(format!("{}..............{}", "#".repeat(8), "#".repeat(8)));
         map.extend(vec![".".repeat(30); 8]);
         let grid = OccupancyGrid::from_ascii(&map.join("\n"), 0.05);
-        let outside = outside_pixels(&grid, 4.0);
+        let outside = outside_pixels(&grid, &islands(&grid), 4.0);
         let at = |x: usize, y: usize| outside[y * 30 + x];
         assert_eq!(at(11, 8), Pixel::Free, "speck");
         assert_eq!(at(3, 8), Pixel::Wall, "wall");
@@ -755,7 +755,7 @@ mod tests {
             let rows = regions(map);
             let refs: Vec<&str> = rows.iter().map(String::as_str).collect();
             let l = ascii_labels(&refs);
-            let outside = outside_pixels(&grid, 4.0);
+            let outside = outside_pixels(&grid, &islands(&grid), 4.0);
             let span = door_span(&l, Some(&outside), (1, 2), &border(&l), &LIMITS).unwrap();
             let [p, q] = span.line;
             (q[0] - p[0]).hypot(q[1] - p[1])

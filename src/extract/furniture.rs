@@ -34,7 +34,11 @@ pub(crate) struct IslandLimits {
 /// as long as thick that lie in line with a wall of about their thickness on
 /// both ends, each within `limits.wall_piece_gap` (a pillar between the two
 /// leaves of a double door, the wall between two doors side by side).
-pub(crate) fn free_without_furniture(grid: &OccupancyGrid, limits: &IslandLimits) -> Mask {
+pub(crate) fn free_without_furniture(
+    grid: &OccupancyGrid,
+    islands: &Islands,
+    limits: &IslandLimits,
+) -> Mask {
     let (w, h) = (grid.width, grid.height);
     let free: Vec<u8> = grid
         .cells
@@ -49,7 +53,7 @@ pub(crate) fn free_without_furniture(grid: &OccupancyGrid, limits: &IslandLimits
         pieces: blobs,
         bbox,
         extent,
-    } = islands(grid);
+    } = islands;
     let mut island: Vec<bool> = extent
         .iter()
         .map(|e| e.is_some_and(|e| e <= limits.furniture))
@@ -59,7 +63,7 @@ pub(crate) fn free_without_furniture(grid: &OccupancyGrid, limits: &IslandLimits
         .map(|e| e.is_some_and(|e| e > limits.furniture && e <= limits.clutter))
         .collect();
     if candidate.iter().any(|&c| c) {
-        let clutter = clutter_islands(grid, &free, &blobs, &extent, &candidate, limits);
+        let clutter = clutter_islands(grid, &free, blobs, extent, &candidate, limits);
         for (island, clutter) in island.iter_mut().zip(clutter) {
             *island |= clutter;
         }
@@ -128,13 +132,17 @@ pub(crate) fn islands(grid: &OccupancyGrid) -> Islands {
 }
 
 /// Per pixel of `grid`: whether it is **clutter**, a cell of an island
-/// (see [`Islands`]) at most `max_px` across that is no piece of wall:
+/// of `isl` (the grid's, see [`Islands`]) at most `max_px` across that is no piece of wall:
 /// less than `wall_elongation` times as long as it is thick, by its second
 /// moments (so at any angle). A doorway's jambs are the building's walls;
 /// a border ending on clutter runs between furniture and whatever it
 /// stands by.
-pub(crate) fn clutter_pixels(grid: &OccupancyGrid, max_px: f64, wall_elongation: f64) -> Vec<bool> {
-    let isl = islands(grid);
+pub(crate) fn clutter_pixels(
+    grid: &OccupancyGrid,
+    isl: &Islands,
+    max_px: f64,
+    wall_elongation: f64,
+) -> Vec<bool> {
     let elongation = elongations(&isl.pieces);
     let clutter: Vec<bool> = isl
         .extent
@@ -315,11 +323,11 @@ mod tests {
     fn elongation_is_length_over_thickness_at_any_angle() {
         // A 10 x 2 bar, a 4 x 4 block and a diagonal line of 8 pixels.
         let mut rows = vec![".".repeat(30); 20];
-        for y in 2..4 {
-            rows[y].replace_range(2..12, &"#".repeat(10));
+        for row in &mut rows[2..4] {
+            row.replace_range(2..12, &"#".repeat(10));
         }
-        for y in 8..12 {
-            rows[y].replace_range(2..6, "####");
+        for row in &mut rows[8..12] {
+            row.replace_range(2..6, "####");
         }
         for k in 0..8 {
             rows[8 + k].replace_range(14 + k..15 + k, "#");
@@ -355,7 +363,7 @@ mod tests {
              ############",
             0.1,
         );
-        let m = free_without_furniture(&g, &limits(3.0, 0.0));
+        let m = free_without_furniture(&g, &islands(&g), &limits(3.0, 0.0));
         let expected = "............
                         .##########.
                         .##########.
@@ -387,7 +395,7 @@ mod tests {
              ################",
             0.1,
         );
-        let m = free_without_furniture(&g, &limits(4.0, 3.0));
+        let m = free_without_furniture(&g, &islands(&g), &limits(4.0, 3.0));
         let row = |y: u32| -> String {
             (0..16)
                 .map(|x| if m.get_pixel(x, y)[0] == 0 { '#' } else { '.' })
@@ -446,7 +454,7 @@ mod tests {
                 clutter,
                 ..limits(10.0, 21.0)
             };
-            let m = free_without_furniture(&g, &limits);
+            let m = free_without_furniture(&g, &islands(&g), &limits);
             let free_at = |x: u32, y: u32| m.get_pixel(x, y)[0] != 0;
             (free_at(12, 12), free_at(35, 7), free_at(40, 25))
         };

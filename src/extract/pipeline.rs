@@ -14,6 +14,7 @@ use super::door_choice::{DoorCues, choose_doors};
 use super::doors::{Border, cut_doors};
 use super::doorway::outside_pixels;
 use super::filled::filled_diameters;
+use super::furniture::{Islands, islands};
 use super::graph::topology;
 use super::interior::{claim_enclosed_unknown, fill_specks};
 use super::merge::merge_small;
@@ -99,10 +100,13 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         last: Instant::now(),
         timings: Vec::new(),
     };
-    let mut free = clean(grid, params, &px)?;
+    // The obstacles standing free, labelled once for the furniture filter,
+    // the clutter the wall support rule knows and the doorway chords.
+    let islands = islands(grid);
+    let mut free = clean(grid, &islands, params, &px)?;
     // The building's two directions, from the free space without noise.
     let deg = dominant_orientation(&free.clean);
-    let support = WallSupport::new(grid, deg, px.support);
+    let support = WallSupport::new(grid, &islands, deg, px.support);
     let mut gaps = match &px.gaps {
         Some(limits) => wall_gaps(&free.clean, deg, *limits),
         None => Vec::new(),
@@ -140,7 +144,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     let doors: Vec<&Border> = chosen.iter().map(|&k| &regions.borders[k]).collect();
     let door_pairs: Vec<(u32, u32)> = doors.iter().map(|b| b.pair).collect();
     let n_regions = regions.labels.count;
-    let (mut labels, mut door_lines) = span_doors(grid, &regions, &doors, &px);
+    let (mut labels, mut door_lines) = span_doors(grid, &islands, &regions, &doors, &px);
     // An opening's door is as wide as the opening, jamb to jamb.
     let crossed = GapIndex::new(&openings);
     for (line, door) in door_lines.iter_mut().zip(&doors) {
@@ -194,10 +198,17 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
 /// islands; an error when nothing is left.
 fn clean(
     grid: &OccupancyGrid,
+    islands: &Islands,
     params: &ExtractParams,
     px: &PixelConfig,
 ) -> Result<FreeSpace, ExtractError> {
-    let free = clean_free(grid, px.noise_radius, px.min_free_area, &px.islands);
+    let free = clean_free(
+        grid,
+        islands,
+        px.noise_radius,
+        px.min_free_area,
+        &px.islands,
+    );
     if free.clean.iter().all(|&p| p == 0) {
         return Err(ExtractError::NoSpace {
             noise_m: params.building.noise_radius_m,
@@ -245,13 +256,14 @@ fn segment(free: &FreeSpace, dist: &[f32], px: &PixelConfig) -> Labels {
 /// the unknown pockets and specks inside spaces joined to them.
 fn span_doors(
     grid: &OccupancyGrid,
+    islands: &Islands,
     regions: &Regions,
     doors: &[&Border],
     px: &PixelConfig,
 ) -> (Labels, Vec<Option<[[f64; 2]; 2]>>) {
     // Doorway chords end at the map's walls; other pixels outside the
     // regions may be noise or specks they cross (see `doorway::Pixel`).
-    let outside = outside_pixels(grid, px.chord_speck_max);
+    let outside = outside_pixels(grid, islands, px.chord_speck_max);
     let (mut labels, door_lines) = cut_doors(
         &regions.labels,
         Some(&outside),

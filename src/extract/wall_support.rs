@@ -28,7 +28,7 @@
 //! Anywhere else the rule abstains and the gap or border stays. Lengths are in
 //! pixels here; `pixel_config.rs` sets them in metres.
 
-use super::furniture::clutter_pixels;
+use super::furniture::{Islands, clutter_pixels};
 use super::wall_runs::{Run, WallRuns, along, project};
 use crate::grid::{Cell, OccupancyGrid};
 
@@ -82,7 +82,12 @@ impl WallSupport {
     /// The runs of wall face (cells that are not free next to a free one)
     /// of `grid`, along its dominant directions `deg` and a quarter turn
     /// from it (degrees, see `imaging::dominant_orientation`).
-    pub(crate) fn new(grid: &OccupancyGrid, deg: f64, limits: SupportLimits) -> WallSupport {
+    pub(crate) fn new(
+        grid: &OccupancyGrid,
+        islands: &Islands,
+        deg: f64,
+        limits: SupportLimits,
+    ) -> WallSupport {
         let (w, h) = (grid.width as usize, grid.height as usize);
         let is_free = |x: usize, y: usize| grid.cells[y * w + x] == Cell::Free;
         let mut face = Vec::new();
@@ -102,7 +107,7 @@ impl WallSupport {
         WallSupport {
             runs: WallRuns::new(&face, deg, min_run, limits.gap),
             blocked: grid.cells.iter().map(|c| *c != Cell::Free).collect(),
-            clutter: clutter_pixels(grid, limits.clutter_max, limits.wall_elongation),
+            clutter: clutter_pixels(grid, islands, limits.clutter_max, limits.wall_elongation),
             width: grid.width,
             height: grid.height,
             limits,
@@ -388,6 +393,7 @@ fn border_ends(width: u32, pixels: &[u32]) -> Option<([f64; 2], [f64; 2])> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::extract::furniture::islands;
 
     /// The limits `pixel_config` sets at 0.1 m/px.
     const AT_10_CM: SupportLimits = SupportLimits {
@@ -416,11 +422,8 @@ mod tests {
                     .collect()
             })
             .collect();
-        WallSupport::new(
-            &OccupancyGrid::from_ascii(&rows.join("\n"), 0.1),
-            0.0,
-            AT_10_CM,
-        )
+        let g = OccupancyGrid::from_ascii(&rows.join("\n"), 0.1);
+        WallSupport::new(&g, &islands(&g), 0.0, AT_10_CM)
     }
 
     #[test]
