@@ -2,7 +2,11 @@
 //! (table and chair legs, boxes, pillars). The paper's stated weakness is
 //! that clutter cuts rooms into pieces; here such islands are treated as
 //! free space while the rooms are segmented, so a room is found as if it
-//! were empty and the pixels under its furniture belong to it.
+//! were empty and the pixels under its furniture belong to it. The
+//! islands are labelled once per extraction ([`islands`]); the larger
+//! ones that are no pieces of wall are the clutter a doorway's jamb cannot
+//! be ([`clutter_pixels`]), and the smallest are specks doorway chords
+//! cross (`doorway::outside_pixels`).
 
 use super::clutter::{LineLimits, WallLines, is_wall_piece};
 use crate::grid::{Cell, OccupancyGrid};

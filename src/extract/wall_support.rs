@@ -25,8 +25,12 @@
 //!   beyond the end: a wall with several doorways). Borders are not judged
 //!   so: on real maps clutter touching a room's walls is tied too.
 //!
-//! Anywhere else the rule abstains and the gap or border stays. Lengths are in
-//! pixels here; `pixel_config.rs` sets them in metres.
+//! Anywhere else the rule abstains and the gap or border stays. A border
+//! (not a doorway gap) is also unsupported, at any angle, when an end of it
+//! lies on clutter and on nothing else within [`SupportLimits::end_reach`]:
+//! an island standing free, small and no piece of wall
+//! (`furniture::clutter_pixels`). Lengths are in pixels here;
+//! `pixel_config.rs` sets them in metres.
 
 use super::furniture::{Islands, clutter_pixels};
 use super::wall_runs::{Run, WallRuns, along, project};
