@@ -636,6 +636,30 @@ mod tests {
         assert!((len - truth).abs() < 0.6, "{len} vs {truth}: {span:?}");
     }
 
+    /// Room `a` (10 rows) above, room `b` (10 rows) below and `wall`
+    /// between them, 30 columns wide.
+    fn through_wall(wall: [&'static str; 3]) -> Vec<&'static str> {
+        let mut rows = vec!["aaaaaaaaaaaaaaaaaaaaaaaaaaaaaa"; 10];
+        rows.extend(wall);
+        rows.extend(vec!["bbbbbbbbbbbbbbbbbbbbbbbbbbbbbb"; 10]);
+        rows
+    }
+
+    /// What a chord meets at each pixel outside the regions of `rows`:
+    /// a wall at `#`, noise anywhere else.
+    fn wall_pixels(rows: &[&str]) -> Vec<Pixel> {
+        rows.iter()
+            .flat_map(|r| r.bytes())
+            .map(|b| if b == b'#' { Pixel::Wall } else { Pixel::Noise })
+            .collect()
+    }
+
+    /// The length of a span's doorway line.
+    fn line_length(span: &DoorSpan) -> f64 {
+        let [p, q] = span.line;
+        (q[0] - p[0]).hypot(q[1] - p[1])
+    }
+
     /// Uncertain specks inside a doorway (a JPEG-compressed map) are no
     /// jambs: the width runs from wall to wall. Without knowing which
     /// pixels are walls, the specks cut the doorway short.
@@ -644,23 +668,15 @@ mod tests {
         // Room a above, b below, a wall 3 rows thick with a doorway of
         // 10 pixels (columns 6..=15); `+` are specks (not free, no wall),
         // one or two in a row.
-        let mut rows = vec!["aaaaaaaaaaaaaaaaaaaaaaaaaaaaaa"; 10];
-        rows.extend([
+        let rows = through_wall([
             "######aa+aaaa+aa##############",
             "######bbbb++bbbb##############",
             "######bb+bbbbb+b##############",
         ]);
-        rows.extend(vec!["bbbbbbbbbbbbbbbbbbbbbbbbbbbbbb"; 10]);
         let l = ascii_labels(&rows);
-        let walls: Vec<Pixel> = rows
-            .iter()
-            .flat_map(|r| r.bytes())
-            .map(|b| if b == b'#' { Pixel::Wall } else { Pixel::Noise })
-            .collect();
+        let walls = wall_pixels(&rows);
         let length = |walls: Option<&[Pixel]>| {
-            let span = door_span(&l, walls, (1, 2), &border(&l), &LIMITS).unwrap();
-            let [p, q] = span.line;
-            (q[0] - p[0]).hypot(q[1] - p[1])
+            line_length(&door_span(&l, walls, (1, 2), &border(&l), &LIMITS).unwrap())
         };
         let with_walls = length(Some(&walls));
         assert!((with_walls - 10.0).abs() < 0.5, "{with_walls}");
@@ -673,8 +689,7 @@ mod tests {
         jamb[12] = "######bb+bbbb+++##############";
         let l = ascii_labels(&jamb);
         let span = door_span(&l, Some(&walls), (1, 2), &border(&l), &LIMITS).unwrap();
-        let [p, q] = span.line;
-        let len = (q[0] - p[0]).hypot(q[1] - p[1]);
+        let len = line_length(&span);
         assert!(len < 9.0, "{len}: {span:?}");
     }
 
@@ -685,27 +700,19 @@ mod tests {
         // A 12-pixel doorway (columns 6..=17) through a wall 3 rows thick;
         // a cluster of specks three pixels long (columns 8..=10) stands
         // in every row of it, free space on both sides.
-        let mut rows = vec!["aaaaaaaaaaaaaaaaaaaaaaaaaaaaaa"; 10];
-        rows.extend([
+        let rows = through_wall([
             "######aa+++aaaaaaa############",
             "######bb+++bbbbbbb############",
             "######bb+++bbbbbbb############",
         ]);
-        rows.extend(vec!["bbbbbbbbbbbbbbbbbbbbbbbbbbbbbb"; 10]);
         let l = ascii_labels(&rows);
-        let walls: Vec<Pixel> = rows
-            .iter()
-            .flat_map(|r| r.bytes())
-            .map(|b| if b == b'#' { Pixel::Wall } else { Pixel::Noise })
-            .collect();
+        let walls = wall_pixels(&rows);
         let length = |noise_run: f64| {
             let limits = SpanLimits {
                 noise_run,
                 ..LIMITS
             };
-            let span = door_span(&l, Some(&walls), (1, 2), &border(&l), &limits).unwrap();
-            let [p, q] = span.line;
-            (q[0] - p[0]).hypot(q[1] - p[1])
+            line_length(&door_span(&l, Some(&walls), (1, 2), &border(&l), &limits).unwrap())
         };
         let crossed = length(4.0);
         assert!((crossed - 12.0).abs() < 0.5, "{crossed}");
