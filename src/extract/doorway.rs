@@ -630,8 +630,7 @@ mod tests {
         let refs: Vec<&str> = rows.iter().map(String::as_str).collect();
         let l = ascii_labels(&refs);
         let span = door_span(&l, None, (1, 2), &border(&l), &LIMITS).unwrap();
-        let [p, q] = span.line;
-        let len = (q[0] - p[0]).hypot(q[1] - p[1]);
+        let len = line_length(&span);
         let truth = 3f64.hypot(7.0);
         assert!((len - truth).abs() < 0.6, "{len} vs {truth}: {span:?}");
     }
@@ -763,9 +762,7 @@ mod tests {
             let refs: Vec<&str> = rows.iter().map(String::as_str).collect();
             let l = ascii_labels(&refs);
             let outside = outside_pixels(&grid, &islands(&grid), 4.0);
-            let span = door_span(&l, Some(&outside), (1, 2), &border(&l), &LIMITS).unwrap();
-            let [p, q] = span.line;
-            (q[0] - p[0]).hypot(q[1] - p[1])
+            line_length(&door_span(&l, Some(&outside), (1, 2), &border(&l), &LIMITS).unwrap())
         };
         // The whole opening, columns 8..=21.
         let measured = length(&map);

@@ -135,18 +135,13 @@ pub(crate) fn islands(grid: &OccupancyGrid) -> Islands {
     }
 }
 
-/// Per pixel of `grid`: whether it is **clutter**, a cell of an island
-/// of `isl` (the grid's, see [`Islands`]) at most `max_px` across that is no piece of wall:
+/// Per pixel of the grid `isl` was labelled in: whether it is **clutter**,
+/// a cell of an island at most `max_px` across that is no piece of wall:
 /// less than `wall_elongation` times as long as it is thick, by its second
 /// moments (so at any angle). A doorway's jambs are the building's walls;
 /// a border ending on clutter runs between furniture and whatever it
 /// stands by.
-pub(crate) fn clutter_pixels(
-    grid: &OccupancyGrid,
-    isl: &Islands,
-    max_px: f64,
-    wall_elongation: f64,
-) -> Vec<bool> {
+pub(crate) fn clutter_pixels(isl: &Islands, max_px: f64, wall_elongation: f64) -> Vec<bool> {
     let elongation = elongations(&isl.pieces);
     let clutter: Vec<bool> = isl
         .extent
@@ -154,8 +149,8 @@ pub(crate) fn clutter_pixels(
         .zip(&elongation)
         .map(|(e, &k)| e.is_some_and(|e| e <= max_px) && k < wall_elongation)
         .collect();
-    let w = grid.width as usize;
-    let mut out = vec![false; grid.cells.len()];
+    let w = isl.pieces.width as usize;
+    let mut out = vec![false; w * isl.pieces.height as usize];
     for r in isl.pieces.runs.iter().filter(|r| clutter[r.label as usize]) {
         let i = r.y as usize * w;
         out[i + r.x0 as usize..i + r.x1 as usize].fill(true);

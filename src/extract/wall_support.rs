@@ -70,13 +70,22 @@ pub(crate) struct SupportLimits {
     pub end_reach: i64,
 }
 
+/// What a pixel is to a border's end.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Ground {
+    /// Free space.
+    Free,
+    /// Clutter (see `furniture::clutter_pixels`): no jamb.
+    Clutter,
+    /// Any other obstacle: a wall, or what the sensor could not see.
+    Wall,
+}
+
 /// The wall runs of one map, ready to judge doorway gaps and borders.
 pub(crate) struct WallSupport {
     runs: WallRuns,
-    /// Per pixel: not free.
-    blocked: Vec<bool>,
-    /// Per pixel: clutter (see `furniture::clutter_pixels`).
-    clutter: Vec<bool>,
+    /// Per pixel: what a border's end may lie on.
+    ground: Vec<Ground>,
     width: u32,
     height: u32,
     limits: SupportLimits,
@@ -110,8 +119,20 @@ impl WallSupport {
         let min_run = limits.long_run.min(limits.pair_run).min(limits.tie_run);
         WallSupport {
             runs: WallRuns::new(&face, deg, min_run, limits.gap),
-            blocked: grid.cells.iter().map(|c| *c != Cell::Free).collect(),
-            clutter: clutter_pixels(grid, islands, limits.clutter_max, limits.wall_elongation),
+            ground: grid
+                .cells
+                .iter()
+                .zip(clutter_pixels(
+                    islands,
+                    limits.clutter_max,
+                    limits.wall_elongation,
+                ))
+                .map(|(c, clutter)| match (c, clutter) {
+                    (Cell::Free, _) => Ground::Free,
+                    (_, true) => Ground::Clutter,
+                    _ => Ground::Wall,
+                })
+                .collect(),
             width: grid.width,
             height: grid.height,
             limits,
@@ -140,11 +161,10 @@ impl WallSupport {
                 if (x - cx).pow(2) + (y - cy).pow(2) > r * r {
                     continue;
                 }
-                let i = (y * w + x) as usize;
-                if self.clutter[i] {
-                    any = true;
-                } else if self.blocked[i] {
-                    return false;
+                match self.ground[(y * w + x) as usize] {
+                    Ground::Free => {}
+                    Ground::Clutter => any = true,
+                    Ground::Wall => return false,
                 }
             }
         }
