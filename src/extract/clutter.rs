@@ -96,8 +96,14 @@ pub(crate) fn is_wall_piece(area: usize, outline: &[[u32; 2]], lines: &WallLines
     if bar_or_block {
         return true;
     }
+    on_wall_lines(outline, lines, ON_LINE_MIN_FRACTION)
+}
+
+/// Whether at least `min_fraction` of the island outline `outline`
+/// (`[x, y]` pixels with a free 4-neighbour) lies on `lines`.
+pub(crate) fn on_wall_lines(outline: &[[u32; 2]], lines: &WallLines, min_fraction: f64) -> bool {
     let on = outline.iter().filter(|&&p| lines.on_line(p)).count();
-    on as f64 >= ON_LINE_MIN_FRACTION * outline.len() as f64
+    !outline.is_empty() && on as f64 >= min_fraction * outline.len() as f64
 }
 
 /// The long and the short side (pixels) of the minimum rotated rectangle

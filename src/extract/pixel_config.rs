@@ -19,10 +19,10 @@ use super::wall_support::SupportLimits;
 /// was measured on.
 const SKELETON_NEAR_M: f64 = 0.1;
 
-/// The clutter rule's wall lines (`clutter.rs`): the shortest straight run
-/// of wall face that makes one, the longest break bridged in it (a ragged
-/// scan, at least a pixel) and how far from it an island's outline may
-/// lie and be on it.
+/// The wall lines of the clutter rule (`clutter.rs`) and of doorway gaps'
+/// jambs (`wall_support.rs`): the shortest straight run of wall face that
+/// makes one, the longest break bridged in it (a ragged scan, at least a
+/// pixel) and how far from it an island's outline may lie and be on it.
 const WALL_LINE_MIN_M: f64 = 2.5;
 const WALL_LINE_GAP_M: f64 = 0.1;
 const WALL_LINE_TOLERANCE_M: f64 = 0.1;
@@ -46,7 +46,9 @@ const SUPPORT_NEAR_M: f64 = 2.0;
 /// Clutter is no jamb (`wall_support.rs`, `furniture::clutter_pixels`): a
 /// door-wide border with an end on an obstacle island at most this wide
 /// (m) that is less than [`WALL_PIECE_ELONGATION`] times as long as thick,
-/// and on nothing else within [`BORDER_END_REACH_M`], joins its regions.
+/// and on nothing else within [`BORDER_END_REACH_M`], joins its regions;
+/// a doorway gap so ending is dropped unless the island lies on the
+/// building's wall lines (`wall_support::JAMB_ON_LINE_MIN_FRACTION`).
 /// It is ROSE²'s idea that rooms are bounded by the building's walls.
 /// Measured on the 19 development buildings (benches/README.md, "Clutter
 /// is no jamb"): no IPA map changes at 1.5 or 2 m; at 3 m office_e loses
@@ -230,6 +232,11 @@ impl PixelConfig {
         let area = |m2: f64| (m2 / (resolution * resolution)).ceil() as usize;
         let whole = |m: f64| px(m).round() as usize;
         let watershed = params.method == Method::Watershed;
+        let wall_lines = LineLimits {
+            min_run: px(WALL_LINE_MIN_M),
+            gap: px(WALL_LINE_GAP_M).round().max(1.0) as i64,
+            tolerance: px(WALL_LINE_TOLERANCE_M).round() as i64,
+        };
         PixelConfig {
             noise_radius: px(b.noise_radius_m),
             min_free_area: area(i.min_free_area_m2),
@@ -237,11 +244,7 @@ impl PixelConfig {
                 furniture: px(b.furniture_max_m),
                 clutter: px(b.clutter_max_m),
                 wall_piece_gap: px(b.wall_gap_width_max_m),
-                lines: LineLimits {
-                    min_run: px(WALL_LINE_MIN_M),
-                    gap: px(WALL_LINE_GAP_M).round().max(1.0) as i64,
-                    tolerance: px(WALL_LINE_TOLERANCE_M).round() as i64,
-                },
+                lines: wall_lines,
             },
             gaps: (watershed && b.wall_jamb_m > 0.0).then(|| GapLimits {
                 width: (whole(b.door_width_min_m), whole(b.wall_gap_width_max_m)),
@@ -306,6 +309,7 @@ impl PixelConfig {
                 clutter_max: px(CLUTTER_JAMB_MAX_M),
                 wall_elongation: WALL_PIECE_ELONGATION,
                 end_reach: px(BORDER_END_REACH_M).round().max(1.0) as i64,
+                lines: wall_lines,
             },
             near_reach: NEAR_REACH_DOORS * px(b.door_width_max_m),
             passage: PassageLimits {
