@@ -59,6 +59,7 @@ mod stubs;
 mod tidy;
 mod wall_gaps;
 mod wall_runs;
+mod wall_stubs;
 mod wall_support;
 mod wandering_doors;
 

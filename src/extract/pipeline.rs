@@ -4,7 +4,7 @@
 //! `polygons` → [`Nrg`]. The parameters are turned into pixels once
 //! ([`PixelConfig`]); every stage takes them from there.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashSet};
 use std::time::{Duration, Instant};
 
 use super::build::{DoorLines, build};
@@ -25,6 +25,7 @@ use super::segment::segment_basins;
 use super::skeleton_doors::skeleton_doorways;
 use super::tidy::tidy_labels;
 use super::wall_gaps::{GapIndex, WallGap, close_gaps, reopen_gaps, wall_gaps};
+use super::wall_stubs::wall_stub_openings;
 use super::wall_support::WallSupport;
 use super::{ExtractError, ExtractParams};
 use crate::grid::OccupancyGrid;
@@ -111,7 +112,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         Some(limits) => wall_gaps(&free.clean, deg, *limits),
         None => Vec::new(),
     };
-    let openings = openings(&free, deg, &support, &px);
+    let openings = openings(&free, deg, &support, &px, &gaps);
     gaps.extend(openings.iter().cloned());
     // A gap between pieces of clutter is no doorway in a wall.
     gaps.retain(|g| !support.lacks_gap(&g.line));
@@ -220,14 +221,52 @@ fn clean(
 
 /// Openings in walls wider than doorway gaps (see `opening_width_max_m`)
 /// with wall support like the doorway gaps, and none across a passage
-/// (`WallSupport::crosses_passage`).
-fn openings(free: &FreeSpace, deg: f64, support: &WallSupport, px: &PixelConfig) -> Vec<WallGap> {
+/// (`WallSupport::crosses_passage`); then the openings from wall stubs'
+/// ends (`wall_stubs.rs`) with wall support that pass no opening or
+/// doorway gap (in `doorways`) within `WallStubLimits::tolerance`.
+fn openings(
+    free: &FreeSpace,
+    deg: f64,
+    support: &WallSupport,
+    px: &PixelConfig,
+    doorways: &[WallGap],
+) -> Vec<WallGap> {
     let Some(limits) = &px.openings else {
         return Vec::new();
     };
     let mut found = wall_gaps(&free.clean, deg, *limits);
     found.retain(|o| !support.crosses_passage(&o.line) && !support.lacks_gap(&o.line));
+    if let Some(stub_limits) = &px.wall_stubs {
+        let w = free.clean.width();
+        let near = near_lines(found.iter().chain(doorways), w, stub_limits.tolerance);
+        let mut stubs = wall_stub_openings(&free.clean, deg, stub_limits);
+        stubs.retain(|s| !s.line.iter().any(|p| near.contains(p)) && !support.lacks_gap(&s.line));
+        found.extend(stubs);
+    }
     found
+}
+
+/// The pixels (row-major in a `width`-wide image) within `reach` (a
+/// square) of the lines of `gaps`.
+fn near_lines<'a>(
+    gaps: impl Iterator<Item = &'a WallGap>,
+    width: u32,
+    reach: usize,
+) -> HashSet<u32> {
+    let (w, r) = (i64::from(width), reach as i64);
+    let mut near = HashSet::new();
+    for &p in gaps.flat_map(|g| &g.line) {
+        let (x, y) = (i64::from(p) % w, i64::from(p) / w);
+        for dy in -r..=r {
+            for dx in -r..=r {
+                let (nx, ny) = (x + dx, y + dy);
+                if (0..w).contains(&nx) && ny >= 0 {
+                    near.insert((ny * w + nx) as u32);
+                }
+            }
+        }
+    }
+    near
 }
 
 /// Stage `segment`: the free space cut into regions, by the watershed of
@@ -286,6 +325,46 @@ fn span_doors(
 mod tests {
     use super::*;
     use crate::model::SpaceKind;
+
+    #[test]
+    fn a_partition_short_of_the_wall_across_leaves_a_door_along_its_line() {
+        // At 0.05 m/px: a 10 x 6 m hall (x 1..199, y 1..119) divided by a
+        // 0.15 m partition (x 100..103) from the south wall to y = 70,
+        // 3.45 m short of the north wall: two rooms and one opening
+        // between them, drawn along the partition's line.
+        let (w, h) = (201, 121);
+        let rows: Vec<String> = (0..h)
+            .map(|y| {
+                (0..w)
+                    .map(|x| {
+                        let outer = x == 0 || y == 0 || x == w - 1 || y == h - 1;
+                        let partition = (100..103).contains(&x) && y >= 70;
+                        if outer || partition { '#' } else { '.' }
+                    })
+                    .collect()
+            })
+            .collect();
+        let grid = OccupancyGrid::from_ascii(&rows.join("\n"), 0.05);
+        let x = extract(&grid, &ExtractParams::default()).unwrap();
+        let doors: Vec<_> = x
+            .nrg
+            .spaces()
+            .iter()
+            .filter_map(crate::model::doorway)
+            .collect();
+        assert_eq!(x.nrg.spaces().len() - doors.len(), 2, "{doors:?}");
+        assert_eq!(doors.len(), 1, "{doors:?}");
+        // From the partition's end to the north wall, along x = 5.1 m.
+        assert!((doors[0].width_m - 3.45).abs() <= 0.1, "{doors:?}");
+        for p in doors[0].line {
+            assert!((p[0] - 5.08).abs() <= 0.1, "{doors:?}");
+        }
+        // Without openings the hall is one space.
+        let mut params = ExtractParams::default();
+        params.building.opening_width_max_m = 0.0;
+        let one = extract(&grid, &params).unwrap();
+        assert_eq!(one.nrg.spaces().len(), 1);
+    }
 
     #[test]
     fn a_room_open_to_the_corridor_gets_a_door_as_wide_as_its_opening() {

@@ -11,6 +11,7 @@ use super::params::{DoorRule, ExtractParams, Method};
 use super::passages::PassageLimits;
 use super::stubs::StubLimits;
 use super::wall_gaps::{GapKind, GapLimits};
+use super::wall_stubs::WallStubLimits;
 use super::wall_support::SupportLimits;
 
 /// A border is a door under `DoorRule::Skeleton` if it passes this close
@@ -60,6 +61,21 @@ const SUPPORT_NEAR_M: f64 = 2.0;
 const CLUTTER_JAMB_MAX_M: f64 = 2.0;
 const WALL_PIECE_ELONGATION: f64 = 3.0;
 const BORDER_END_REACH_M: f64 = 0.15;
+
+/// Wall-stub openings (`wall_stubs.rs`), with the openings' limits: a stub
+/// is at most this thick (m), thin with free space beside it over this
+/// share of its first metre (the openings' jamb, [`SUPPORT_PAIR_RUN_M`])
+/// and thin all along its first `wall_jamb_m`; a piece of wall across at
+/// least this long (m) within this reach (m) of its end makes a front.
+/// Measured on the 19 development buildings and 150 simulated ones
+/// (benches/README.md, "Wall-stub openings"): NLB gains two doorways and
+/// umic one, no map or simulated building gains a false door. With a
+/// front reach of 1 m lab_a_scan and lab_intel gain false doors across
+/// the corridor in front of their bays; at 2.5 m NLB's two are lost.
+const STUB_THICK_MAX_M: f64 = 0.4;
+const STUB_THIN_SHARE: f64 = 0.7;
+const STUB_FRONT_RUN_M: f64 = 0.5;
+const STUB_FRONT_REACH_M: f64 = 1.5;
 
 /// How far (m) from a door border's centre, across it, its doorway's
 /// narrowest chord is sought.
@@ -183,6 +199,9 @@ pub(crate) struct PixelConfig {
     /// wall across, floor for `wall_jamb_m` beyond both faces; none with
     /// the CCL method, `wall_jamb_m` 0, or no width above the gaps'.
     pub openings: Option<GapLimits>,
+    /// Openings from a wall stub's end to the wall it points at; with the
+    /// openings only.
+    pub wall_stubs: Option<WallStubLimits>,
     /// The skeleton door rule, when chosen (watershed only).
     pub skeleton: Option<SkeletonLimits>,
     /// How regions are found.
@@ -265,6 +284,23 @@ impl PixelConfig {
                     kind: GapKind::Opening {
                         face: whole(b.wall_jamb_m).max(1),
                     },
+                }),
+            wall_stubs: (watershed
+                && b.wall_jamb_m > 0.0
+                && b.opening_width_max_m > b.wall_gap_width_max_m)
+                .then(|| WallStubLimits {
+                    width: (
+                        whole(b.door_width_min_m).max(1),
+                        whole(b.opening_width_max_m),
+                    ),
+                    thick: whole(STUB_THICK_MAX_M).max(1),
+                    length: whole(SUPPORT_PAIR_RUN_M).max(1),
+                    thin_share: STUB_THIN_SHARE,
+                    head: whole(b.wall_jamb_m).max(1),
+                    face: whole(b.wall_jamb_m).max(1),
+                    front_run: whole(STUB_FRONT_RUN_M).max(1),
+                    front_reach: whole(STUB_FRONT_REACH_M).max(1),
+                    tolerance: whole(WALL_LINE_TOLERANCE_M).max(1),
                 }),
             skeleton: (watershed && params.door_rule == DoorRule::Skeleton).then(|| {
                 SkeletonLimits {

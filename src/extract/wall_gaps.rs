@@ -106,8 +106,18 @@ pub(crate) enum GapKind {
 /// are found there and their lines drawn back into the map (4-connected,
 /// reaching a pixel and a half into the jambs, free pixels only).
 pub(crate) fn wall_gaps(free: &Mask, deg: f64, limits: GapLimits) -> Vec<WallGap> {
+    turned_gaps(free, deg, |m| axis_gaps(m, limits))
+}
+
+/// The gaps `axis` finds in `free` turned so that `deg` (degrees) lies
+/// along its rows, drawn back into `free` as [`wall_gaps`] draws its own.
+pub(crate) fn turned_gaps(
+    free: &Mask,
+    deg: f64,
+    axis: impl Fn(&Mask) -> Vec<WallGap>,
+) -> Vec<WallGap> {
     if deg.min(90.0 - deg) < 0.5 {
-        return axis_gaps(free, limits);
+        return axis(free);
     }
     let (turned, turn) = turn_mask(free, deg);
     let tw = turned.width() as usize;
@@ -117,7 +127,7 @@ pub(crate) fn wall_gaps(free: &Mask, deg: f64, limits: GapLimits) -> Vec<WallGap
             (i as usize / tw) as f64 + 0.5,
         ]
     };
-    axis_gaps(&turned, limits)
+    axis(&turned)
         .into_iter()
         .filter_map(|g| {
             let (a, b) = (centre(*g.line.first()?), centre(*g.line.last()?));
