@@ -326,25 +326,34 @@ mod tests {
     use super::*;
     use crate::model::SpaceKind;
 
+    /// A `w` × `h` grid at `resolution` m/px, walled round, with the cells
+    /// `wall(x, y)` says occupied inside.
+    fn walled(
+        w: usize,
+        h: usize,
+        resolution: f64,
+        wall: impl Fn(usize, usize) -> bool,
+    ) -> OccupancyGrid {
+        let rows: Vec<String> = (0..h)
+            .map(|y| {
+                (0..w)
+                    .map(|x| {
+                        let outer = x == 0 || y == 0 || x == w - 1 || y == h - 1;
+                        if outer || wall(x, y) { '#' } else { '.' }
+                    })
+                    .collect()
+            })
+            .collect();
+        OccupancyGrid::from_ascii(&rows.join("\n"), resolution)
+    }
+
     #[test]
     fn a_partition_short_of_the_wall_across_leaves_a_door_along_its_line() {
         // At 0.05 m/px: a 10 x 6 m hall (x 1..199, y 1..119) divided by a
         // 0.15 m partition (x 100..103) from the south wall to y = 70,
         // 3.45 m short of the north wall: two rooms and one opening
         // between them, drawn along the partition's line.
-        let (w, h) = (201, 121);
-        let rows: Vec<String> = (0..h)
-            .map(|y| {
-                (0..w)
-                    .map(|x| {
-                        let outer = x == 0 || y == 0 || x == w - 1 || y == h - 1;
-                        let partition = (100..103).contains(&x) && y >= 70;
-                        if outer || partition { '#' } else { '.' }
-                    })
-                    .collect()
-            })
-            .collect();
-        let grid = OccupancyGrid::from_ascii(&rows.join("\n"), 0.05);
+        let grid = walled(201, 121, 0.05, |x, y| (100..103).contains(&x) && y >= 70);
         let x = extract(&grid, &ExtractParams::default()).unwrap();
         let doors: Vec<_> = x
             .nrg
@@ -372,22 +381,11 @@ mod tests {
         // room opens onto the corridor through a 3 m gap in its front wall
         // (x 15..45), wider than any doorway; the right one through a
         // 0.9 m doorway.
-        let (w, h) = (122, 74);
-        let rows: Vec<String> = (0..h)
-            .map(|y| {
-                (0..w)
-                    .map(|x| {
-                        let outer = x == 0 || y == 0 || x == w - 1 || y == h - 1;
-                        let divider = x == 60 && y < 40;
-                        let front = (40..42).contains(&y)
-                            && !(15..45).contains(&x)
-                            && !(85..94).contains(&x);
-                        if outer || divider || front { '#' } else { '.' }
-                    })
-                    .collect()
-            })
-            .collect();
-        let grid = OccupancyGrid::from_ascii(&rows.join("\n"), 0.1);
+        let grid = walled(122, 74, 0.1, |x, y| {
+            let divider = x == 60 && y < 40;
+            let front = (40..42).contains(&y) && !(15..45).contains(&x) && !(85..94).contains(&x);
+            divider || front
+        });
         let spaces = |params: &ExtractParams| {
             let x = extract(&grid, params).unwrap();
             let doors: Vec<f64> = x
