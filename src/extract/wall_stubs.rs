@@ -43,7 +43,9 @@ pub(crate) struct WallStubLimits {
     pub front_run: usize,
     /// How far to either side of the stub a front is looked for.
     pub front_reach: usize,
-    /// How far across its end a front's pieces may lie.
+    /// How far across its end a front's pieces may lie; the pipeline also
+    /// keeps a line this far from the doorway gaps and openings already
+    /// found.
     pub tolerance: usize,
 }
 
