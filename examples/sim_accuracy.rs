@@ -1,7 +1,8 @@
 //! The accuracy benchmark on simulated buildings: simulates, extracts and
 //! evaluates `--count` buildings per group (fixed seeds 1..=count), plain,
-//! furnished (boxes) and cluttered (shelves, desk clusters, kitchens:
-//! `FloorPlanParams::clutter`), and prints a line per building and
+//! furnished (boxes), cluttered (shelves, desk clusters, kitchens:
+//! `FloorPlanParams::clutter`) and turned (the plain buildings at a heading
+//! spread over 3°–87°: `sim::spread_heading_deg`), and prints a line per building and
 //! the means per group. `kinds` is corridors and rooms labelled as the plan
 //! has them / corridors labelled room and rooms labelled corridor. The regression guard over the same figures is the
 //! integration test `sim_accuracy` (tests/it/sim_accuracy.rs).
@@ -36,16 +37,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "{:<10} {:>6} {:>6} | {:>6} {:>6} | {:>6} {:>6} | {:>7} {:>9} {:>7}",
         "building", "R", "P", "doorR", "doorP", "connR", "connP", "rooms", "kinds", "ms"
     );
-    for (group, furnished, cluttered) in [
-        ("plain", false, false),
-        ("furnished", true, false),
-        ("cluttered", false, true),
+    for (group, furnished, cluttered, turned) in [
+        ("plain", false, false, false),
+        ("furnished", true, false, false),
+        ("cluttered", false, true, false),
+        ("turned", false, false, true),
     ] {
         let mut scores = Vec::new();
         for seed in 1..=count {
             let mut sim = SimParams::new(seed);
             sim.plan.furniture = furnished;
             sim.plan.clutter = cluttered;
+            if turned {
+                sim.plan.heading_deg = nrgdb::sim::spread_heading_deg(seed);
+            }
             let t = Instant::now();
             let s = evaluate_simulated(&sim, &params, scratch.path())?;
             let ms = t.elapsed().as_secs_f64() * 1e3;

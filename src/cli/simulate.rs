@@ -34,6 +34,15 @@ pub struct Args {
     /// door-wide aisles, desk clusters with chairs, a counter and a table.
     #[arg(long)]
     pub clutter: bool,
+    /// Turn the whole building by this many degrees (counter-clockwise):
+    /// a robot's map seldom lies square to the walls.
+    #[arg(
+        long,
+        value_name = "DEG",
+        default_value_t = 0.0,
+        allow_negative_numbers = true
+    )]
+    pub heading: f64,
     /// A building of this many levels (2 to 50): the same plan on each, one robot run per
     /// level, written to `OUT/levelK/` with `OUT/building.toml` for `nrgdb import`.
     #[arg(long, value_name = "N")]
@@ -47,6 +56,7 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     params.plan.furniture = args.furniture;
     params.plan.non_manhattan = args.non_manhattan;
     params.plan.clutter = args.clutter;
+    params.plan.heading_deg = args.heading;
     if let Some(levels) = args.levels {
         let files = nrgdb::sim::write_storeys(&args.out, &params, levels)
             .into_diagnostic()

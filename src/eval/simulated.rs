@@ -21,6 +21,9 @@ pub struct SimulatedScore {
     /// Whether rooms hold real-map clutter (shelves, desk clusters,
     /// kitchens; `FloorPlanParams::clutter`).
     pub cluttered: bool,
+    /// The building's heading in the map, degrees
+    /// (`FloorPlanParams::heading_deg`).
+    pub heading_deg: f64,
     /// Rooms in the true plan.
     pub true_rooms: usize,
     /// The scores against the plan's ground truth.
@@ -56,6 +59,7 @@ pub fn evaluate_simulated(
         seed: sim.plan.seed,
         furnished: sim.plan.furniture,
         cluttered: sim.plan.clutter,
+        heading_deg: sim.plan.heading_deg,
         true_rooms,
         evaluation: evaluate(&gt, &x, grid.resolution),
         kinds: kind_score(&x.nrg, &building.plan.corridors, &building.plan.rooms),

@@ -10,7 +10,7 @@
 
 use super::clutter::{LineLimits, WallLines, is_wall_piece};
 use crate::grid::{Cell, OccupancyGrid};
-use crate::imaging::{Mask, RunLabels, dominant_orientation, label_runs};
+use crate::imaging::{Mask, Run, RunLabels, dominant_orientation, label_runs};
 
 /// Which islands are treated as free, in pixels.
 #[derive(Debug, Clone, Copy)]
@@ -55,9 +55,12 @@ pub(crate) fn free_without_furniture(
     }
     let Islands {
         pieces: blobs,
-        bbox,
         extent,
+        ..
     } = islands;
+    let free_mask = Mask::from_raw(w, h, free.clone()).unwrap_or_else(|| Mask::new(w, h));
+    // The building's two directions: pieces of wall lie along them.
+    let deg = dominant_orientation(&free_mask);
     let mut island: Vec<bool> = extent
         .iter()
         .map(|e| e.is_some_and(|e| e <= limits.furniture))
@@ -67,7 +70,7 @@ pub(crate) fn free_without_furniture(
         .map(|e| e.is_some_and(|e| e > limits.furniture && e <= limits.clutter))
         .collect();
     if candidate.iter().any(|&c| c) {
-        let clutter = clutter_islands(grid, &free, blobs, extent, &candidate, limits);
+        let clutter = clutter_islands(grid, &free, deg, blobs, extent, &candidate, limits);
         for (island, clutter) in island.iter_mut().zip(clutter) {
             *island |= clutter;
         }
@@ -79,10 +82,13 @@ pub(crate) fn free_without_furniture(
     }
     // With every island gone, the obstacles left are walls.
     let walls = Mask::from_raw(w, h, data.clone()).unwrap_or_else(|| Mask::new(w, h));
-    let wall_piece: Vec<bool> = bbox
+    let mut runs_of: Vec<Vec<&Run>> = vec![Vec::new(); island.len()];
+    for r in blobs.runs.iter().filter(|r| island[r.label as usize]) {
+        runs_of[r.label as usize].push(r);
+    }
+    let wall_piece: Vec<bool> = runs_of
         .iter()
-        .enumerate()
-        .map(|(l, b)| island[l] && in_wall_line(&walls, *b, limits.wall_piece_gap))
+        .map(|runs| !runs.is_empty() && in_wall_line(&walls, runs, deg, limits.wall_piece_gap))
         .collect();
     for r in blobs.runs.iter().filter(|r| wall_piece[r.label as usize]) {
         let i = r.y as usize * w as usize;
@@ -92,12 +98,10 @@ pub(crate) fn free_without_furniture(
 }
 
 /// The 8-connected pieces of non-free cells of a grid, with each piece's
-/// bounding box and extent (by label, index 0 unused).
+/// extent (by label, index 0 unused).
 pub(crate) struct Islands {
     /// The pieces.
     pub pieces: RunLabels,
-    /// Each piece's bounding box `[min_col, min_row, max_col, max_row]`.
-    pub bbox: Vec<[u32; 4]>,
     /// Each piece's extent in pixels (the longer side of its bounding
     /// box), None for a piece on the image's edge (the outside, or walls
     /// joined to it): only islands standing free have one.
@@ -128,11 +132,7 @@ pub(crate) fn islands(grid: &OccupancyGrid) -> Islands {
             })
         })
         .collect();
-    Islands {
-        pieces,
-        bbox,
-        extent,
-    }
+    Islands { pieces, extent }
 }
 
 /// Per pixel of the grid `isl` was labelled in: whether it is **clutter**,
@@ -206,6 +206,7 @@ fn elongations(pieces: &RunLabels) -> Vec<f64> {
 fn clutter_islands(
     grid: &OccupancyGrid,
     free: &[u8],
+    deg: f64,
     blobs: &RunLabels,
     extent: &[Option<f64>],
     candidate: &[bool],
@@ -240,63 +241,77 @@ fn clutter_islands(
             }
         }
     }
-    let free_mask =
-        Mask::from_raw(grid.width, grid.height, free.to_vec()).unwrap_or_else(|| Mask::new(1, 1));
-    let lines = WallLines::new(&face, dominant_orientation(&free_mask), &limits.lines);
+    let lines = WallLines::new(&face, deg, &limits.lines);
     let areas = blobs.areas();
     (0..building.len())
         .map(|l| candidate[l] && !is_wall_piece(areas[l], &outlines[l], &lines))
         .collect()
 }
 
-/// Whether the island with bounding box `b` (`[x0, y0, x1, y1]`, inclusive)
-/// lies in a wall line of `walls` (0 = wall): at least 1.5 times as long
-/// as thick, with a wall within `gap_px` of either end along its middle line,
-/// and each of those walls no thicker across the line than twice the
-/// island plus two pixels (a wall running on in line, not a side wall).
-fn in_wall_line(walls: &Mask, b: [u32; 4], gap_px: f64) -> bool {
+/// Whether the island made of `runs` lies in a wall line of `walls`
+/// (0 = wall) along one of the building's two directions (`deg` and a
+/// quarter turn from it, degrees, see `imaging::dominant_orientation`):
+/// along the direction in which it is longer, at least 1.5 times as long
+/// as it is thick, with a wall within `gap_px` of either end along its
+/// middle line, and each of those walls no thicker across the line than
+/// twice the island plus two pixels (a wall running on in line, not a
+/// side wall). Lengths are the spread of the pixel centres plus one, so
+/// on a map drawn square to the building (`deg` 0) they are the island's
+/// bounding box.
+fn in_wall_line(walls: &Mask, runs: &[&Run], deg: f64, gap_px: f64) -> bool {
     let (w, h) = (walls.width() as i64, walls.height() as i64);
-    let [x0, y0, x1, y1] = b.map(i64::from);
-    let (long, thick) = (x1 - x0 + 1, y1 - y0 + 1);
-    let horizontal = long >= thick;
-    let (long, thick) = if horizontal {
-        (long, thick)
+    let (sin, cos) = deg.to_radians().sin_cos();
+    let dirs = [[cos, sin], [-sin, cos]];
+    // The spread of the pixel centres along each direction.
+    let mut spread = [[f64::INFINITY, f64::NEG_INFINITY]; 2];
+    for r in runs {
+        let y = f64::from(r.y);
+        for x in (r.x0..r.x1).map(f64::from) {
+            for (d, sp) in dirs.iter().zip(&mut spread) {
+                let v = x * d[0] + y * d[1];
+                *sp = [sp[0].min(v), sp[1].max(v)];
+            }
+        }
+    }
+    let extent = |k: usize| spread[k][1] - spread[k][0] + 1.0;
+    let (along, across) = if extent(0) >= extent(1) {
+        (0, 1)
     } else {
-        (thick, long)
+        (1, 0)
     };
-    if 2 * long < 3 * thick {
+    let (u, n, t) = (dirs[along], dirs[across], spread[along]);
+    let (long, thick) = (extent(along), extent(across));
+    if !(long.is_finite() && 2.0 * long >= 3.0 * thick) {
         return false;
     }
-    let wall = |x: i64, y: i64| {
+    let wall = |p: [f64; 2]| {
+        // The nearest pixel, halves rounded down (so on a map drawn square
+        // to the building the middle line of an island an even number of
+        // pixels thick is the upper or left of its two middle rows).
+        let (x, y) = ((p[0] - 0.5).ceil() as i64, (p[1] - 0.5).ceil() as i64);
         x < 0 || y < 0 || x >= w || y >= h || walls.as_raw()[(y * w + x) as usize] == 0
     };
-    // (x, y) of a point `t` along the line and `s` across it.
-    let at = |t: i64, s: i64| if horizontal { (t, s) } else { (s, t) };
-    let (t0, t1, mid) = if horizontal {
-        (x0, x1, (y0 + y1) / 2)
-    } else {
-        (y0, y1, (x0 + x1) / 2)
-    };
-    let gap = gap_px.ceil() as i64;
-    let thin_wall_within = |dir: i64| {
-        let start = if dir < 0 { t0 - 1 } else { t1 + 1 };
-        let Some(t) = (0..=gap).map(|k| start + dir * k).find(|&t| {
-            let (x, y) = at(t, mid);
-            wall(x, y)
-        }) else {
+    // The point `a` along the island's middle line and `b` across it.
+    let mid = (spread[across][0] + spread[across][1]) / 2.0;
+    let at = |a: f64, b: f64| [a * u[0] + b * n[0], a * u[1] + b * n[1]];
+    let steps = gap_px.ceil() as i64;
+    let max_across = 2.0 * thick.round() + 2.0;
+    let thin_wall_within = |dir: f64| {
+        let start = if dir < 0.0 { t[0] } else { t[1] };
+        let Some(a) = (1..=steps + 1)
+            .map(|k| start + dir * k as f64)
+            .find(|&a| wall(at(a, mid)))
+        else {
             return false;
         };
-        let across = |sdir: i64| {
-            (1..=2 * thick + 2)
-                .take_while(|&k| {
-                    let (x, y) = at(t, mid + sdir * k);
-                    wall(x, y)
-                })
-                .count() as i64
+        let across = |side: f64| {
+            (1..=max_across as i64)
+                .take_while(|&k| wall(at(a, mid + side * k as f64)))
+                .count() as f64
         };
-        1 + across(-1) + across(1) <= 2 * thick + 2
+        1.0 + across(-1.0) + across(1.0) <= max_across
     };
-    thin_wall_within(-1) && thin_wall_within(1)
+    thin_wall_within(-1.0) && thin_wall_within(1.0)
 }
 
 #[cfg(test)]
@@ -402,6 +417,38 @@ mod tests {
         };
         assert_eq!(row(4), "####...####...##", "the pillar stays");
         assert_eq!(row(6), "#..............#", "the desk goes");
+    }
+
+    #[test]
+    fn a_pillar_between_two_doorways_stays_in_a_turned_building() {
+        // An 6.5 m × 4.5 m building at 0.05 m/px turned by 20°: a 0.2 m
+        // wall across it with two 1 m doorways and a 0.8 m piece of wall
+        // between them; a 0.3 m desk stands free in a room.
+        let (sin, cos) = 20f64.to_radians().sin_cos();
+        let text: Vec<String> = (0..120)
+            .map(|y| {
+                (0..160)
+                    .map(|x| {
+                        let (dx, dy) = (f64::from(x) + 0.5 - 80.0, f64::from(y) + 0.5 - 60.0);
+                        let (u, v) = (dx * cos + dy * sin, -dx * sin + dy * cos);
+                        let outside = u.abs() >= 65.0 || v.abs() >= 45.0;
+                        let doorway = (-30.0..-10.0).contains(&u) || (6.0..26.0).contains(&u);
+                        let wall = (-2.0..2.0).contains(&v) && !doorway;
+                        let desk = (20.0..26.0).contains(&u) && (20.0..26.0).contains(&v);
+                        if outside || wall || desk { '#' } else { '.' }
+                    })
+                    .collect()
+            })
+            .collect();
+        let g = OccupancyGrid::from_ascii(&text.join("\n"), 0.05);
+        let m = free_without_furniture(&g, &islands(&g), &limits(20.0, 42.0));
+        let at = |u: f64, v: f64| {
+            let (x, y) = (80.0 + u * cos - v * sin, 60.0 + u * sin + v * cos);
+            m.get_pixel(x as u32, y as u32)[0]
+        };
+        assert_eq!(at(-2.0, 0.0), 0, "the piece between the doorways stays");
+        assert_eq!(at(23.0, 23.0), 255, "the desk goes");
+        assert_eq!(at(-20.0, 0.0), 255, "the doorway is open");
     }
 
     #[test]

@@ -38,6 +38,11 @@ pub struct FloorPlanParams {
     /// door-wide aisles, desk clusters with chairs, kitchen counters along
     /// a wall with a table (see `sim::clutter`).
     pub clutter: bool,
+    /// Direction of the first corridor, degrees counter-clockwise from the
+    /// map's x axis: the whole building turned, as a robot's map seldom
+    /// lies square to the walls (0: walls along the map's axes). Only the
+    /// geometry turns; the same seed gives the same building.
+    pub heading_deg: f64,
 }
 
 impl FloorPlanParams {
@@ -56,6 +61,7 @@ impl FloorPlanParams {
             furniture: false,
             non_manhattan: false,
             clutter: false,
+            heading_deg: 0.0,
         }
     }
 
@@ -86,6 +92,14 @@ impl FloorPlanParams {
                 hint: "0.2 is typical",
             });
         }
+        if !(self.heading_deg.is_finite() && self.heading_deg.abs() <= 360.0) {
+            return Err(SimError::BadParameter {
+                name: "heading_deg",
+                value: self.heading_deg.to_string(),
+                expected: "degrees in [-360, 360]",
+                hint: "0 draws the walls along the map's axes",
+            });
+        }
         if self.wings.0 == 0 || self.wings.1 < self.wings.0 || self.wings.1 > 8 {
             return Err(SimError::BadParameter {
                 name: "wings",
@@ -96,6 +110,22 @@ impl FloorPlanParams {
         }
         Ok(())
     }
+}
+
+/// A heading for building `seed` of a benchmark of turned buildings
+/// (`FloorPlanParams::heading_deg`): seeds 1, 2, 3, … spread evenly over
+/// [3°, 87°) (the golden-ratio sequence), so that no run of seeds keeps
+/// near one angle and none lies within 3° of the map's axes.
+///
+/// ```
+/// use nrgdb::sim::spread_heading_deg;
+/// let h: Vec<f64> = (1..=50).map(spread_heading_deg).collect();
+/// assert!(h.iter().all(|d| (3.0..87.0).contains(d)));
+/// assert!(h.iter().filter(|&&d| d < 45.0).count().abs_diff(25) <= 2);
+/// ```
+pub fn spread_heading_deg(seed: u64) -> f64 {
+    let golden = 0.618_033_988_749_894_9_f64;
+    3.0 + 84.0 * (seed as f64 * golden).fract()
 }
 
 /// A space of the plan, by kind and index.

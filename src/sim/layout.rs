@@ -97,12 +97,12 @@ fn layout(p: &FloorPlanParams) -> FloorPlan {
         wall_thickness_m: t,
     };
     let len0 = rng.range(p.corridor_length_m.0, p.corridor_length_m.1);
+    let first = Frame::new([0.0, 0.0], p.heading_deg.to_radians());
     let mut wings = vec![Wing {
-        frame: Frame::new([0.0, 0.0], 0.0),
+        frame: first,
         len: len0,
     }];
-    plan.corridors
-        .push(Frame::new([0.0, 0.0], 0.0).rect(0.0, -w, len0, 0.0));
+    plan.corridors.push(first.rect(0.0, -w, len0, 0.0));
     for k in 1..n_wings {
         let prev = &wings[k - 1];
         let turn = if p.non_manhattan && (k == 1 || rng.chance(0.5)) {
@@ -347,6 +347,44 @@ mod tests {
             v.push(p);
         }
         v
+    }
+
+    #[test]
+    fn a_heading_turns_the_same_building_about_the_first_corridors_start() {
+        // Every point of the turned plan is the unturned plan's point turned
+        // by the heading about the origin (where the first corridor starts).
+        for seed in [1, 7, 12] {
+            let mut p = FloorPlanParams::new(seed);
+            p.furniture = true;
+            p.clutter = seed == 7;
+            let square = layout(&p);
+            p.heading_deg = 33.0;
+            let turned = layout(&p);
+            let (s, c) = 33f64.to_radians().sin_cos();
+            let turn = |q: &Point| [q[0] * c - q[1] * s, q[0] * s + q[1] * c];
+            let points = |f: &FloorPlan| -> Vec<Point> {
+                let rings = f.corridors.iter().chain(&f.rooms).chain(&f.furniture);
+                let doors = f
+                    .doors
+                    .iter()
+                    .flat_map(|d| d.polygon.iter().chain(d.faces.iter().flatten()));
+                rings
+                    .flatten()
+                    .chain(doors)
+                    .chain(&f.route)
+                    .copied()
+                    .collect()
+            };
+            let (a, b) = (points(&square), points(&turned));
+            assert_eq!(a.len(), b.len(), "seed {seed}");
+            for (q, t) in a.iter().zip(&b) {
+                let want = turn(q);
+                assert!(
+                    (want[0] - t[0]).abs() < 1e-9 && (want[1] - t[1]).abs() < 1e-9,
+                    "seed {seed}: {q:?} turned is {want:?}, got {t:?}"
+                );
+            }
+        }
     }
 
     #[test]

@@ -30,7 +30,9 @@ mod storeys;
 pub use bresenham::bresenham;
 pub use carmen::{DEFAULT_NO_RETURN_M, parse_carmen, read_carmen};
 pub use error::SimError;
-pub use floor_plan::{Door, FloorPlan, FloorPlanParams, Opening, Segment, SpaceRef};
+pub use floor_plan::{
+    Door, FloorPlan, FloorPlanParams, Opening, Segment, SpaceRef, spread_heading_deg,
+};
 pub use ground_truth::ground_truth_image;
 pub use lidar::{LidarParams, Scan, simulate_scans};
 pub use log_odds::{GreyMap, LogOddsMap, LogOddsParams, MAX_CELLS};
