@@ -1,8 +1,9 @@
 //! The accuracy benchmark on simulated buildings: simulates, extracts and
 //! evaluates `--count` buildings per group (fixed seeds 1..=count), plain,
 //! furnished (boxes), cluttered (shelves, desk clusters, kitchens:
-//! `FloorPlanParams::clutter`) and turned (the plain buildings at a heading
-//! spread over 3°–87°: `sim::spread_heading_deg`), and prints a line per building and
+//! `FloorPlanParams::clutter`) and turned (the plain, furnished and
+//! cluttered buildings at a heading spread over 3°–87°:
+//! `sim::spread_heading_deg`), and prints a line per building and
 //! the means per group. `kinds` is corridors and rooms labelled as the plan
 //! has them / corridors labelled room and rooms labelled corridor. The regression guard over the same figures is the
 //! integration test `sim_accuracy` (tests/it/sim_accuracy.rs).
@@ -37,11 +38,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "{:<10} {:>6} {:>6} | {:>6} {:>6} | {:>6} {:>6} | {:>7} {:>9} {:>7}",
         "building", "R", "P", "doorR", "doorP", "connR", "connP", "rooms", "kinds", "ms"
     );
-    for (group, furnished, cluttered, turned) in [
-        ("plain", false, false, false),
-        ("furnished", true, false, false),
-        ("cluttered", false, true, false),
-        ("turned", false, false, true),
+    // (group, prefix of its buildings' lines, furnished, cluttered, turned)
+    for (group, prefix, furnished, cluttered, turned) in [
+        ("plain", "P", false, false, false),
+        ("furnished", "F", true, false, false),
+        ("cluttered", "C", false, true, false),
+        ("turned", "T", false, false, true),
+        ("furn-turned", "FT", true, false, true),
+        ("clut-turned", "CT", false, true, true),
     ] {
         let mut scores = Vec::new();
         for seed in 1..=count {
@@ -57,7 +61,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let e = &s.evaluation;
             println!(
                 "{:<10} {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>6.2} {:>6.2} | {:>7} {:>9} {:>7.0}",
-                format!("{}{seed}", &group[..1].to_uppercase()),
+                format!("{prefix}{seed}"),
                 100.0 * e.rooms.recall_micro,
                 100.0 * e.rooms.precision_micro,
                 100.0 * e.doors.recall,
