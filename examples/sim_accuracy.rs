@@ -3,7 +3,8 @@
 //! furnished (boxes), cluttered (shelves, desk clusters, kitchens:
 //! `FloorPlanParams::clutter`) and turned (the plain, furnished and
 //! cluttered buildings at a heading spread over 3°–87°:
-//! `sim::spread_heading_deg`), and prints a line per building and
+//! `sim::spread_heading_deg`) and angled (plain buildings with wings at
+//! 25°–65° to the first: `FloorPlanParams::non_manhattan`), and prints a line per building and
 //! the means per group. `kinds` is corridors and rooms labelled as the plan
 //! has them / corridors labelled room and rooms labelled corridor. The regression guard over the same figures is the
 //! integration test `sim_accuracy` (tests/it/sim_accuracy.rs).
@@ -38,20 +39,23 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "{:<10} {:>6} {:>6} | {:>6} {:>6} | {:>6} {:>6} | {:>7} {:>9} {:>7}",
         "building", "R", "P", "doorR", "doorP", "connR", "connP", "rooms", "kinds", "ms"
     );
-    // (group, prefix of its buildings' lines, furnished, cluttered, turned)
-    for (group, prefix, furnished, cluttered, turned) in [
-        ("plain", "P", false, false, false),
-        ("furnished", "F", true, false, false),
-        ("cluttered", "C", false, true, false),
-        ("turned", "T", false, false, true),
-        ("furn-turned", "FT", true, false, true),
-        ("clut-turned", "CT", false, true, true),
+    // (group, prefix of its buildings' lines, furnished, cluttered, turned,
+    // wings at other angles)
+    for (group, prefix, furnished, cluttered, turned, angled) in [
+        ("plain", "P", false, false, false, false),
+        ("furnished", "F", true, false, false, false),
+        ("cluttered", "C", false, true, false, false),
+        ("turned", "T", false, false, true, false),
+        ("furn-turned", "FT", true, false, true, false),
+        ("clut-turned", "CT", false, true, true, false),
+        ("angled", "A", false, false, false, true),
     ] {
         let mut scores = Vec::new();
         for seed in 1..=count {
             let mut sim = SimParams::new(seed);
             sim.plan.furniture = furnished;
             sim.plan.clutter = cluttered;
+            sim.plan.non_manhattan = angled;
             if turned {
                 sim.plan.heading_deg = nrgdb::sim::spread_heading_deg(seed);
             }

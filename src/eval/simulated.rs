@@ -24,6 +24,9 @@ pub struct SimulatedScore {
     /// The building's heading in the map, degrees
     /// (`FloorPlanParams::heading_deg`).
     pub heading_deg: f64,
+    /// Whether wings meet at other angles than a quarter turn
+    /// (`FloorPlanParams::non_manhattan`).
+    pub non_manhattan: bool,
     /// Rooms in the true plan.
     pub true_rooms: usize,
     /// The scores against the plan's ground truth.
@@ -60,6 +63,7 @@ pub fn evaluate_simulated(
         furnished: sim.plan.furniture,
         cluttered: sim.plan.clutter,
         heading_deg: sim.plan.heading_deg,
+        non_manhattan: sim.plan.non_manhattan,
         true_rooms,
         evaluation: evaluate(&gt, &x, grid.resolution),
         kinds: kind_score(&x.nrg, &building.plan.corridors, &building.plan.rooms),

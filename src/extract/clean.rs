@@ -77,6 +77,7 @@ mod tests {
             furniture: 0.0,
             clutter: 0.0,
             wall_piece_gap: 0.0,
+            wall_elongation: 3.0,
             lines: LineLimits {
                 min_run: 25.0,
                 gap: 1,

@@ -24,6 +24,10 @@ pub(crate) struct IslandLimits {
     /// How far a wall piece between two doorways may stand from the walls
     /// in line with it (`wall_gap_width_max_m`).
     pub wall_piece_gap: f64,
+    /// How many times longer than thick (by second moments) an island must
+    /// be for its own axis to be followed when it lies off the building's
+    /// directions (a wall piece in a wing built at another angle).
+    pub wall_elongation: f64,
     /// What makes a wall line for the clutter rule.
     pub lines: LineLimits,
 }
@@ -37,7 +41,11 @@ pub(crate) struct IslandLimits {
 /// So do pieces of wall between two doorways: islands at least 1.5 times
 /// as long as thick that lie in line with a wall of about their thickness on
 /// both ends, each within `limits.wall_piece_gap` (a pillar between the two
-/// leaves of a double door, the wall between two doors side by side).
+/// leaves of a double door, the wall between two doors side by side),
+/// along one of the building's two directions, or along their own axis
+/// when at least `limits.wall_elongation` times as long as thick and the
+/// walls met run on along it (a wing built at another angle); see
+/// [`in_wall_line`].
 pub(crate) fn free_without_furniture(
     grid: &OccupancyGrid,
     islands: &Islands,
@@ -86,9 +94,17 @@ pub(crate) fn free_without_furniture(
     for r in blobs.runs.iter().filter(|r| island[r.label as usize]) {
         runs_of[r.label as usize].push(r);
     }
+    let building = directions(deg);
     let wall_piece: Vec<bool> = runs_of
         .iter()
-        .map(|runs| !runs.is_empty() && in_wall_line(&walls, runs, deg, limits.wall_piece_gap))
+        .map(|runs| {
+            !runs.is_empty()
+                && (in_wall_line(&walls, runs, building, limits.wall_piece_gap, false)
+                    || principal_axis(runs).is_some_and(|(axis, elongation)| {
+                        elongation >= limits.wall_elongation
+                            && in_wall_line(&walls, runs, axis, limits.wall_piece_gap, true)
+                    }))
+        })
         .collect();
     for r in blobs.runs.iter().filter(|r| wall_piece[r.label as usize]) {
         let i = r.y as usize * w as usize;
@@ -163,40 +179,49 @@ pub(crate) fn clutter_pixels(isl: &Islands, max_px: f64, wall_elongation: f64) -
 /// second moments (each pixel a unit square, so a single row of pixels is
 /// finite).
 fn elongations(pieces: &RunLabels) -> Vec<f64> {
-    // Per label: n, Σx, Σy, Σx², Σy², Σxy over pixel centres.
     let mut sums = vec![[0f64; 6]; pieces.count as usize + 1];
     for r in &pieces.runs {
-        let (a, b) = (f64::from(r.x0), f64::from(r.x1));
-        let n = b - a;
-        let sx = (a + b - 1.0) * n / 2.0;
-        // Σ x² for x in a..b.
-        let sq = |m: f64| (m - 1.0) * m * (2.0 * m - 1.0) / 6.0;
-        let sxx = sq(b) - sq(a);
-        let y = f64::from(r.y);
-        let s = &mut sums[r.label as usize];
-        s[0] += n;
-        s[1] += sx;
-        s[2] += y * n;
-        s[3] += sxx;
-        s[4] += y * y * n;
-        s[5] += y * sx;
+        add_run(&mut sums[r.label as usize], r);
     }
     sums.iter()
-        .map(|s| {
-            if s[0] <= 0.0 {
-                return 1.0;
-            }
-            let n = s[0];
-            let (mx, my) = (s[1] / n, s[2] / n);
-            // A pixel's own spread (1/12 on each axis) keeps thin pieces finite.
-            let cxx = s[3] / n - mx * mx + 1.0 / 12.0;
-            let cyy = s[4] / n - my * my + 1.0 / 12.0;
-            let cxy = s[5] / n - mx * my;
-            let half = (cxx + cyy) / 2.0;
-            let d = (((cxx - cyy) / 2.0).powi(2) + cxy * cxy).sqrt();
-            ((half + d) / (half - d).max(1e-9)).sqrt()
-        })
+        .map(|s| principal(s).map_or(1.0, |(_, elongation)| elongation))
         .collect()
+}
+
+/// Adds run `r` to second-moment sums: n, Σx, Σy, Σx², Σy², Σxy over
+/// pixel centres.
+fn add_run(s: &mut [f64; 6], r: &Run) {
+    let (a, b) = (f64::from(r.x0), f64::from(r.x1));
+    let n = b - a;
+    let sx = (a + b - 1.0) * n / 2.0;
+    // Σ x² for x in a..b.
+    let sq = |m: f64| (m - 1.0) * m * (2.0 * m - 1.0) / 6.0;
+    let y = f64::from(r.y);
+    s[0] += n;
+    s[1] += sx;
+    s[2] += y * n;
+    s[3] += sq(b) - sq(a);
+    s[4] += y * y * n;
+    s[5] += y * sx;
+}
+
+/// From second-moment sums ([`add_run`]): the principal axis's angle
+/// (radians, image coordinates) and the square root of the ratio of the
+/// principal second moments, a pixel's own spread (1/12 on each axis)
+/// keeping thin pieces finite. None for no pixels.
+fn principal(s: &[f64; 6]) -> Option<(f64, f64)> {
+    if s[0] <= 0.0 {
+        return None;
+    }
+    let n = s[0];
+    let (mx, my) = (s[1] / n, s[2] / n);
+    let cxx = s[3] / n - mx * mx + 1.0 / 12.0;
+    let cyy = s[4] / n - my * my + 1.0 / 12.0;
+    let cxy = s[5] / n - mx * my;
+    let half = (cxx + cyy) / 2.0;
+    let d = (((cxx - cyy) / 2.0).powi(2) + cxy * cxy).sqrt();
+    let angle = 0.5 * (2.0 * cxy).atan2(cxx - cyy);
+    Some((angle, ((half + d) / (half - d).max(1e-9)).sqrt()))
 }
 
 /// Which of the `candidate` islands (by label; larger than furniture and
@@ -248,20 +273,42 @@ fn clutter_islands(
         .collect()
 }
 
+/// The building's two directions as unit vectors: `deg` and a quarter
+/// turn from it (degrees, image coordinates, see
+/// `imaging::dominant_orientation`).
+fn directions(deg: f64) -> [[f64; 2]; 2] {
+    let (sin, cos) = deg.to_radians().sin_cos();
+    [[cos, sin], [-sin, cos]]
+}
+
+/// The principal axis of the island made of `runs` and the one across it
+/// (unit vectors), and how many times longer than thick it is (see
+/// [`principal`]). None for no pixels.
+fn principal_axis(runs: &[&Run]) -> Option<([[f64; 2]; 2], f64)> {
+    let mut sums = [0f64; 6];
+    for r in runs {
+        add_run(&mut sums, r);
+    }
+    principal(&sums).map(|(angle, elongation)| (directions(angle.to_degrees()), elongation))
+}
+
 /// Whether the island made of `runs` lies in a wall line of `walls`
-/// (0 = wall) along one of the building's two directions (`deg` and a
-/// quarter turn from it, degrees, see `imaging::dominant_orientation`):
-/// along the direction in which it is longer, at least 1.5 times as long
+/// (0 = wall) along one of two perpendicular unit directions `dirs` (the
+/// building's, see [`directions`], or the island's own axis): along the
+/// one in which it is longer, at least 1.5 times as long
 /// as it is thick, with a wall within `gap_px` of either end along its
 /// middle line, and each of those walls no thicker across the line than
 /// twice the island plus two pixels (a wall running on in line, not a
 /// side wall). Lengths are the spread of the pixel centres plus one, so
-/// on a map drawn square to the building (`deg` 0) they are the island's
-/// bounding box.
-fn in_wall_line(walls: &Mask, runs: &[&Run], deg: f64, gap_px: f64) -> bool {
+/// along the image's axes they are the island's bounding box.
+fn in_wall_line(
+    walls: &Mask,
+    runs: &[&Run],
+    dirs: [[f64; 2]; 2],
+    gap_px: f64,
+    run_on: bool,
+) -> bool {
     let (w, h) = (walls.width() as i64, walls.height() as i64);
-    let (sin, cos) = deg.to_radians().sin_cos();
-    let dirs = [[cos, sin], [-sin, cos]];
     // The spread of the pixel centres along each direction.
     let mut spread = [[f64::INFINITY, f64::NEG_INFINITY]; 2];
     for r in runs {
@@ -309,7 +356,12 @@ fn in_wall_line(walls: &Mask, runs: &[&Run], deg: f64, gap_px: f64) -> bool {
                 .take_while(|&k| wall(at(a, mid + side * k as f64)))
                 .count() as f64
         };
-        1.0 + across(-1.0) + across(1.0) <= max_across
+        // Off the building's directions, the wall met must also run on
+        // along the line, as a wall built at the island's angle does (not
+        // one crossed at a slant).
+        let runs_on =
+            !run_on || (0..=2 * thick.round() as i64).all(|k| wall(at(a + dir * k as f64, mid)));
+        1.0 + across(-1.0) + across(1.0) <= max_across && runs_on
     };
     thin_wall_within(-1.0) && thin_wall_within(1.0)
 }
@@ -325,6 +377,7 @@ mod tests {
             furniture,
             clutter: 0.0,
             wall_piece_gap,
+            wall_elongation: 3.0,
             lines: LineLimits {
                 min_run: 25.0,
                 gap: 1,
@@ -449,6 +502,80 @@ mod tests {
         assert_eq!(at(-2.0, 0.0), 0, "the piece between the doorways stays");
         assert_eq!(at(23.0, 23.0), 255, "the desk goes");
         assert_eq!(at(-20.0, 0.0), 255, "the doorway is open");
+    }
+
+    /// Unit vectors along and across a line at `deg` (image coordinates).
+    fn frame(deg: f64) -> impl Fn(f64, f64) -> (f64, f64) {
+        let (sin, cos) = deg.to_radians().sin_cos();
+        move |dx, dy| (dx * cos + dy * sin, -dx * sin + dy * cos)
+    }
+
+    /// A grid 160 × 120 at 0.05 m/px, walled round, with `wall(u, v)` wall
+    /// in the frame of a line at `deg` through its middle.
+    fn drawn(deg: f64, wall: impl Fn(f64, f64, f64) -> bool) -> OccupancyGrid {
+        let to = frame(deg);
+        let text: Vec<String> = (0..120)
+            .map(|y| {
+                (0..160)
+                    .map(|x| {
+                        let edge = x < 2 || y < 2 || x >= 158 || y >= 118;
+                        let (u, v) = to(f64::from(x) + 0.5 - 80.0, f64::from(y) + 0.5 - 60.0);
+                        if edge || wall(u, v, f64::from(x)) {
+                            '#'
+                        } else {
+                            '.'
+                        }
+                    })
+                    .collect()
+            })
+            .collect();
+        OccupancyGrid::from_ascii(&text.join("\n"), 0.05)
+    }
+
+    /// The pixel at `(u, v)` in the frame of a line at `deg` through the
+    /// middle of [`drawn`]'s grid.
+    fn pixel(deg: f64, u: f64, v: f64) -> (u32, u32) {
+        let (sin, cos) = deg.to_radians().sin_cos();
+        (
+            (80.0 + u * cos - v * sin) as u32,
+            (60.0 + u * sin + v * cos) as u32,
+        )
+    }
+
+    #[test]
+    fn a_pillar_between_two_doorways_stays_in_a_wing_at_another_angle() {
+        // The building is square to the map; a 0.2 m wall crosses it at
+        // 40° with two 1 m doorways and a 0.8 m piece of wall between them.
+        // The piece lies off the building's directions and is followed
+        // along its own axis.
+        let g = drawn(40.0, |u, v, _| {
+            let doorway = (-30.0..-10.0).contains(&u) || (6.0..26.0).contains(&u);
+            (-2.0..2.0).contains(&v) && !doorway
+        });
+        let m = free_without_furniture(&g, &islands(&g), &limits(20.0, 42.0));
+        let (x, y) = pixel(40.0, -2.0, 0.0);
+        assert_eq!(
+            m.get_pixel(x, y)[0],
+            0,
+            "the piece between the doorways stays"
+        );
+        let (x, y) = pixel(40.0, -20.0, 0.0);
+        assert_eq!(m.get_pixel(x, y)[0], 255, "the doorway is open");
+    }
+
+    #[test]
+    fn a_slanted_bar_whose_line_crosses_walls_at_a_slant_goes() {
+        // A 0.8 m × 0.15 m bar at 40° between two 0.2 m walls square to the
+        // map, its line meeting each 1.3 m from its end: thin walls in its
+        // line, but crossed at a slant, not running on along it.
+        let g = drawn(40.0, |u, v, x| {
+            (50.0..54.0).contains(&x)
+                || (106.0..110.0).contains(&x)
+                || ((-8.0..8.0).contains(&u) && (-1.5..1.5).contains(&v))
+        });
+        let m = free_without_furniture(&g, &islands(&g), &limits(20.0, 42.0));
+        let (x, y) = pixel(40.0, 0.0, 0.0);
+        assert_eq!(m.get_pixel(x, y)[0], 255, "the bar is furniture");
     }
 
     #[test]

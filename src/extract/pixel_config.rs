@@ -263,6 +263,7 @@ impl PixelConfig {
                 furniture: px(b.furniture_max_m),
                 clutter: px(b.clutter_max_m),
                 wall_piece_gap: px(b.wall_gap_width_max_m),
+                wall_elongation: WALL_PIECE_ELONGATION,
                 lines: wall_lines,
             },
             gaps: (watershed && b.wall_jamb_m > 0.0).then(|| GapLimits {

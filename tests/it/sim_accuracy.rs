@@ -1,5 +1,6 @@
-//! The accuracy benchmark on simulated buildings as a regression guard: 200
-//! buildings (seeds 1..=50, each plain, furnished, cluttered and turned) are simulated,
+//! The accuracy benchmark on simulated buildings as a regression guard: 250
+//! buildings (seeds 1..=50, each plain, furnished, cluttered, turned and
+//! angled) are simulated,
 //! extracted and scored, and the means must stay at or above floors set a
 //! little under the figures measured on 2026-11-23 (`cargo run --release
 //! --example sim_accuracy -- --count 50` prints the same table):
@@ -39,6 +40,14 @@
 //! 27 rooms labelled corridor. Now 97.56 / 99.98, doors 100 / 99.83,
 //! connections 100 / 100, as plain.
 //!
+//! The angled group (2026-12-05) is the plain buildings with wings at
+//! 25°–65° to the first (`FloorPlanParams::non_manhattan`). A piece of
+//! wall between two doors in such a wing lies off the building's two
+//! directions; before it was followed along its own axis as well, the
+//! group measured rooms 97.33 / 99.10, doors 92.78 / 99.49, connections
+//! 94.51 / 99.92 and 29 rooms labelled corridor; now 97.26 / 99.59,
+//! 97.85 / 99.53, 97.54 / 99.93 and 8.
+//!
 //! Everything is deterministic in the seeds, so a drop below a floor is a
 //! real change of behaviour, not noise. Needs no shared data.
 
@@ -50,17 +59,18 @@ use nrgdb::sim::{SimParams, spread_heading_deg};
 
 const SEEDS: u64 = 50;
 
-/// A group of buildings: (furnished, cluttered, turned).
-type Group = (bool, bool, bool);
+/// A group of buildings: (furnished, cluttered, turned, angled).
+type Group = (bool, bool, bool, bool);
 
-const PLAIN: Group = (false, false, false);
-const FURNISHED: Group = (true, false, false);
-const CLUTTERED: Group = (false, true, false);
-const TURNED: Group = (false, false, true);
+const PLAIN: Group = (false, false, false, false);
+const FURNISHED: Group = (true, false, false, false);
+const CLUTTERED: Group = (false, true, false, false);
+const TURNED: Group = (false, false, true, false);
+const ANGLED: Group = (false, false, false, true);
 
 fn run_all() -> Vec<SimulatedScore> {
     let jobs: Vec<(u64, Group)> = (1..=SEEDS)
-        .flat_map(|seed| [PLAIN, FURNISHED, CLUTTERED, TURNED].map(|g| (seed, g)))
+        .flat_map(|seed| [PLAIN, FURNISHED, CLUTTERED, TURNED, ANGLED].map(|g| (seed, g)))
         .collect();
     let next = Mutex::new(0usize);
     let results = Mutex::new(Vec::new());
@@ -76,10 +86,11 @@ fn run_all() -> Vec<SimulatedScore> {
                         jobs.get(*n - 1).copied()
                     };
                     let Some((seed, group)) = job else { break };
-                    let (furnished, cluttered, turned) = group;
+                    let (furnished, cluttered, turned, angled) = group;
                     let mut sim = SimParams::new(seed);
                     sim.plan.furniture = furnished;
                     sim.plan.clutter = cluttered;
+                    sim.plan.non_manhattan = angled;
                     if turned {
                         sim.plan.heading_deg = spread_heading_deg(seed);
                     }
@@ -98,9 +109,9 @@ fn mean(scores: &[&SimulatedScore], f: impl Fn(&SimulatedScore) -> f64) -> f64 {
 }
 
 #[test]
-fn simulated_buildings_plain_furnished_cluttered_and_turned_stay_above_the_floors() {
+fn simulated_buildings_plain_furnished_cluttered_turned_and_angled_stay_above_the_floors() {
     let all = run_all();
-    assert_eq!(all.len(), 4 * SEEDS as usize);
+    assert_eq!(all.len(), 5 * SEEDS as usize);
     // (group, room recall, room precision, door recall, door precision,
     // connection recall, connection precision)
     let floors = [
@@ -108,11 +119,18 @@ fn simulated_buildings_plain_furnished_cluttered_and_turned_stay_above_the_floor
         (FURNISHED, 88.9, 99.5, 99.5, 97.0, 99.5, 99.5),
         (CLUTTERED, 85.5, 99.5, 99.5, 98.8, 99.5, 99.5),
         (TURNED, 97.3, 99.5, 99.5, 99.5, 99.5, 99.5),
+        (ANGLED, 97.0, 99.3, 97.5, 99.2, 97.2, 99.5),
     ];
     let mut report = String::new();
     let mut failed = false;
-    let in_group =
-        |s: &SimulatedScore, g: Group| (s.furnished, s.cluttered, s.heading_deg != 0.0) == g;
+    let in_group = |s: &SimulatedScore, g: Group| {
+        (
+            s.furnished,
+            s.cluttered,
+            s.heading_deg != 0.0,
+            s.non_manhattan,
+        ) == g
+    };
     for (g, r, p, dr, dp, cr, cp) in floors {
         let group: Vec<&SimulatedScore> = all.iter().filter(|s| in_group(s, g)).collect();
         let got = [
@@ -124,8 +142,9 @@ fn simulated_buildings_plain_furnished_cluttered_and_turned_stay_above_the_floor
             mean(&group, |s| s.evaluation.connections.precision),
         ];
         let want = [r, p, dr, dp, cr, cp];
-        report +=
-            &format!("(furnished, cluttered, turned)={g:?}: got {got:.2?}, floors {want:?}\n");
+        report += &format!(
+            "(furnished, cluttered, turned, angled)={g:?}: got {got:.2?}, floors {want:?}\n"
+        );
         failed |= got.iter().zip(&want).any(|(g, w)| g < w);
     }
     // Room and corridor labels against the plan's (issue 20, mode 6),
@@ -134,21 +153,26 @@ fn simulated_buildings_plain_furnished_cluttered_and_turned_stay_above_the_floor
     // 1 and 2 once widths were taken with the clutter filled
     // (`extract/filled.rs`). Labelling everything a room would make about
     // 50 corridors rooms.
+    // (group, most corridors labelled room, most rooms labelled corridor,
+    // fewest corridors labelled corridor). Spaces whose anchor lies in no
+    // plan space are not counted; in the angled group 44 corridors of 50
+    // buildings were counted on 2026-12-05.
     let label_bounds = [
-        (PLAIN, 2, 2),
-        (FURNISHED, 2, 4),
-        (CLUTTERED, 2, 14),
-        (TURNED, 2, 2),
+        (PLAIN, 2, 2, 50),
+        (FURNISHED, 2, 4, 50),
+        (CLUTTERED, 2, 14, 50),
+        (TURNED, 2, 2, 50),
+        (ANGLED, 2, 10, 42),
     ];
-    for (g, corridors_as_rooms, rooms_as_corridors) in label_bounds {
+    for (g, corridors_as_rooms, rooms_as_corridors, corridors) in label_bounds {
         let mut kinds = nrgdb::eval::KindScore::default();
         for s in all.iter().filter(|s| in_group(s, g)) {
             kinds.add(&s.kinds);
         }
-        report += &format!("(furnished, cluttered, turned)={g:?}: labels {kinds:?}\n");
+        report += &format!("(furnished, cluttered, turned, angled)={g:?}: labels {kinds:?}\n");
         failed |= kinds.corridor_as_room > corridors_as_rooms
             || kinds.room_as_corridor > rooms_as_corridors
-            || kinds.corridor_as_corridor < SEEDS as usize;
+            || kinds.corridor_as_corridor < corridors;
     }
     println!("{report}");
     assert!(!failed, "accuracy fell below a floor:\n{report}");
