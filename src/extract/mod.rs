@@ -27,6 +27,7 @@
 //! arcs between junctions from `boundaries`, each simplified once by
 //! `simplify`, topology kept by `conflicts`).
 
+mod along_wall;
 mod boundaries;
 mod build;
 mod ccl;
