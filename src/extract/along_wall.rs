@@ -13,8 +13,10 @@ use super::doorway::{Pixel, SpanLimits, chord};
 /// looks long there, on the side away from the opening); both ends must show a wall (elongated, the
 /// two axes within 10° of each other) at 3°–35° from `line`. Then the line
 /// is the chord through `line`'s middle along their mean, if it is no
-/// shorter than `line`, within `limits`, and runs into both walls (within
-/// half a wall's thickness and a pixel of its middle). None otherwise.
+/// shorter than `line`, within `limits`, runs into both walls (within
+/// half a wall's thickness and a pixel of its middle) and ends on the same
+/// jambs (each end within a wall's thickness and two pixels of the end it
+/// replaces). None otherwise.
 pub(super) fn along_wall(
     pixel: &impl Fn(i64, i64) -> Pixel,
     line: [[f64; 2]; 2],
@@ -108,7 +110,18 @@ pub(super) fn along_wall(
         let q = [wall.centre[0] - mid[0], wall.centre[1] - mid[1]];
         (q[0] * w[1] - q[1] * w[0]).abs() <= wall.half_thickness + 1.0
     };
-    (b - a >= length && into(&lo) && into(&hi)).then_some(along)
+    // On the same jambs: each end stays within a wall's thickness (and two
+    // pixels) of the end it replaces; a chord that runs on past a jamb's
+    // tip to the wall behind it measures another opening.
+    let near = |old: [f64; 2], new: [f64; 2], wall: &Wall| {
+        (new[0] - old[0]).hypot(new[1] - old[1]) <= 2.0 * wall.half_thickness + 2.0
+    };
+    let kept = b - a >= length
+        && into(&lo)
+        && into(&hi)
+        && near(line[0], along[0], &lo)
+        && near(line[1], along[1], &hi);
+    kept.then_some(along)
 }
 
 #[cfg(test)]
@@ -192,5 +205,49 @@ mod tests {
         // along the walls would run the image's height, 36 pixels.
         let truth = 4f64.hypot(10.0);
         assert!((len - truth).abs() < 1.5, "{len} vs {truth}: {span:?}");
+    }
+
+    /// A jamb that ends in a thin tail (two pixels thick, under a thicker
+    /// block; the wall pieces of a scanned lab map) facing a square jamb
+    /// across a doorway 25 pixels wide, and the doorway line found there
+    /// between the tail's tip and the other jamb's face, a little aslant.
+    /// The wall by the tail leans a few degrees off that line, but a chord
+    /// along it runs on over the tail to the block behind (40 pixels):
+    /// the line stays as it is.
+    #[test]
+    fn a_thin_tail_on_a_jamb_keeps_the_doorway_at_its_tip() {
+        let picture = [
+            "#.##################..########",
+            "####################..########.........................................##################.#",
+            "##################....########........................................########################",
+            "####################..########........................................########################",
+            "###################...########........................................########################...........#",
+            "####################...#######........................................########################...........#",
+            "###################...##################..............................########################...........#",
+            "####################..#######################.........................########################...........#",
+            "###################..........################.........................########################...........#",
+            "###################...................................................########################...........#",
+            "###################...................................................########################...........#",
+            "......................................................................########################...........#",
+        ];
+        // The wall pieces 30 pixels in from the picture's edges.
+        let pixel = |x: i64, y: i64| {
+            let row = usize::try_from(y - 30).ok().and_then(|y| picture.get(y));
+            let cell = usize::try_from(x - 30)
+                .ok()
+                .and_then(|x| row?.as_bytes().get(x));
+            if cell == Some(&b'#') {
+                Pixel::Wall
+            } else {
+                Pixel::Free
+            }
+        };
+        let limits = SpanLimits {
+            max_width: 54.0,
+            max_depth: 14.0,
+            ..LIMITS
+        };
+        let line = [[100.0, 34.4], [75.0, 38.0]];
+        assert_eq!(along_wall(&pixel, line, &limits), None);
     }
 }
