@@ -385,3 +385,30 @@ fn shared_freiburg79_scores() {
     );
     assert!(e.doors.recall > 0.9 && e.doors.precision > 0.9, "{e:?}");
 }
+
+/// Issue 19's width target on the shared IPA maps (plain): each door's
+/// reported width against the GT doorway line it sits on, median error
+/// ≤ 0.10 m and p90 ≤ 0.25 m on every map. The truth is the GT picture,
+/// not our extraction.
+#[test]
+fn shared_ipa_door_widths_match_the_gt_doorways() {
+    let Some(maps) = shared() else { return };
+    let mut names: Vec<String> = std::fs::read_dir(&maps)
+        .unwrap()
+        .filter_map(|e| e.ok()?.file_name().into_string().ok())
+        .filter_map(|n| n.strip_suffix("_gt.png").map(str::to_owned))
+        .filter(|n| !n.starts_with("rose2_") && !n.ends_with("_furnitures"))
+        .collect();
+    names.sort();
+    assert!(names.len() >= 10, "{names:?}");
+    for name in names {
+        let grid = load_map(&maps.join(format!("{name}.yaml")), &LoadOptions::default()).unwrap();
+        let gt =
+            nrgdb::eval::load_ground_truth(&maps.join(format!("{name}_gt.png")), &grid).unwrap();
+        let x = extract(&grid, &ExtractParams::default()).unwrap();
+        let w = nrgdb::eval::evaluate(&gt, &x, grid.resolution).widths;
+        assert!(w.matched >= 5, "{name}: {w:?}");
+        let (median, p90) = (w.median_m.unwrap(), w.p90_m.unwrap());
+        assert!(median <= 0.10 && p90 <= 0.25, "{name}: {w:?}");
+    }
+}
