@@ -3,6 +3,7 @@
 //! to the shortest chord between the jambs.
 
 use super::doorway::{Pixel, SpanLimits, chord};
+use crate::imaging::Moments;
 
 /// The doorway line measured along the wall it is in, where the wall by
 /// the jambs runs off the line's direction: a wall at a slant to the image
@@ -37,7 +38,7 @@ pub(super) fn along_wall(
     let axis = |end: [f64; 2], out: [f64; 2]| -> Option<Wall> {
         let r = reach.ceil() as i64;
         let (cx, cy) = (end[0].floor() as i64, end[1].floor() as i64);
-        let mut s = [0.0f64; 6];
+        let mut sums = Moments::default();
         for y in cy - r..=cy + r {
             for x in cx - r..=cx + r {
                 let q = [x as f64 + 0.5 - end[0], y as f64 + 0.5 - end[1]];
@@ -47,39 +48,27 @@ pub(super) fn along_wall(
                 {
                     continue;
                 }
-                s[0] += 1.0;
-                s[1] += q[0];
-                s[2] += q[1];
-                s[3] += q[0] * q[0];
-                s[4] += q[1] * q[1];
-                s[5] += q[0] * q[1];
+                sums.add(q);
             }
         }
-        if s[0] < reach {
+        if sums.count() < reach {
             return None;
         }
-        let n = s[0];
-        let (mx, my) = (s[1] / n, s[2] / n);
-        let cxx = s[3] / n - mx * mx;
-        let cyy = s[4] / n - my * my;
-        let cxy = s[5] / n - mx * my;
-        let half = (cxx + cyy) / 2.0;
-        let spread = (((cxx - cyy) / 2.0).powi(2) + cxy * cxy).sqrt();
+        let p = sums.principal()?;
         // Elongated: the long axis's variance at least four times the short's.
-        if half + spread < 4.0 * (half - spread).max(1e-9) {
+        if p.major < 4.0 * p.minor.max(1e-9) {
             return None;
         }
-        let angle = 0.5 * (2.0 * cxy).atan2(cxx - cyy);
-        let a = [angle.cos(), angle.sin()];
+        let a = [p.angle.cos(), p.angle.sin()];
         Some(Wall {
             along: if a[0] * u[0] + a[1] * u[1] < 0.0 {
                 [-a[0], -a[1]]
             } else {
                 a
             },
-            centre: [end[0] + mx, end[1] + my],
+            centre: [end[0] + p.centroid[0], end[1] + p.centroid[1]],
             // A band t wide spreads t² / 12 across.
-            half_thickness: (3.0 * (half - spread).max(0.0)).sqrt(),
+            half_thickness: (3.0 * p.minor).sqrt(),
         })
     };
     let lo = axis(line[0], [-u[0], -u[1]])?;

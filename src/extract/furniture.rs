@@ -10,7 +10,7 @@
 
 use super::clutter::{LineLimits, WallLines, is_wall_piece};
 use crate::grid::{Cell, OccupancyGrid};
-use crate::imaging::{Mask, Run, RunLabels, dominant_orientation, label_runs};
+use crate::imaging::{Mask, Moments, Principal, Run, RunLabels, dominant_orientation, label_runs};
 
 /// Which islands are treated as free, in pixels.
 #[derive(Debug, Clone, Copy)]
@@ -175,53 +175,24 @@ pub(crate) fn clutter_pixels(isl: &Islands, max_px: f64, wall_elongation: f64) -
 }
 
 /// Per label of `pieces` (index 0 unused): how many times longer than
-/// thick the piece is, the square root of the ratio of its principal
-/// second moments (each pixel a unit square, so a single row of pixels is
-/// finite).
+/// thick the piece is (see [`elongation`]).
 fn elongations(pieces: &RunLabels) -> Vec<f64> {
-    let mut sums = vec![[0f64; 6]; pieces.count as usize + 1];
+    let mut sums = vec![Moments::default(); pieces.count as usize + 1];
     for r in &pieces.runs {
-        add_run(&mut sums[r.label as usize], r);
+        sums[r.label as usize].add_row(r.y, r.x0, r.x1);
     }
     sums.iter()
-        .map(|s| principal(s).map_or(1.0, |(_, elongation)| elongation))
+        .map(|s| s.principal().map_or(1.0, |p| elongation(&p)))
         .collect()
 }
 
-/// Adds run `r` to second-moment sums: n, Σx, Σy, Σx², Σy², Σxy over
-/// pixel centres.
-fn add_run(s: &mut [f64; 6], r: &Run) {
-    let (a, b) = (f64::from(r.x0), f64::from(r.x1));
-    let n = b - a;
-    let sx = (a + b - 1.0) * n / 2.0;
-    // Σ x² for x in a..b.
-    let sq = |m: f64| (m - 1.0) * m * (2.0 * m - 1.0) / 6.0;
-    let y = f64::from(r.y);
-    s[0] += n;
-    s[1] += sx;
-    s[2] += y * n;
-    s[3] += sq(b) - sq(a);
-    s[4] += y * y * n;
-    s[5] += y * sx;
-}
-
-/// From second-moment sums ([`add_run`]): the principal axis's angle
-/// (radians, image coordinates) and the square root of the ratio of the
-/// principal second moments, a pixel's own spread (1/12 on each axis)
-/// keeping thin pieces finite. None for no pixels.
-fn principal(s: &[f64; 6]) -> Option<(f64, f64)> {
-    if s[0] <= 0.0 {
-        return None;
-    }
-    let n = s[0];
-    let (mx, my) = (s[1] / n, s[2] / n);
-    let cxx = s[3] / n - mx * mx + 1.0 / 12.0;
-    let cyy = s[4] / n - my * my + 1.0 / 12.0;
-    let cxy = s[5] / n - mx * my;
-    let half = (cxx + cyy) / 2.0;
-    let d = (((cxx - cyy) / 2.0).powi(2) + cxy * cxy).sqrt();
-    let angle = 0.5 * (2.0 * cxy).atan2(cxx - cyy);
-    Some((angle, ((half + d) / (half - d).max(1e-9)).sqrt()))
+/// How many times longer than thick pixels with principal axes `p` are:
+/// the square root of the ratio of the principal second moments, each
+/// pixel a unit square (its own spread, 1/12 on each axis, keeps a single
+/// row of pixels finite).
+fn elongation(p: &Principal) -> f64 {
+    let pixel = 1.0 / 12.0;
+    ((p.major + pixel) / (p.minor + pixel)).sqrt()
 }
 
 /// Which of the `candidate` islands (by label; larger than furniture and
@@ -283,13 +254,14 @@ fn directions(deg: f64) -> [[f64; 2]; 2] {
 
 /// The principal axis of the island made of `runs` and the one across it
 /// (unit vectors), and how many times longer than thick it is (see
-/// [`principal`]). None for no pixels.
+/// [`elongation`]). None for no pixels.
 fn principal_axis(runs: &[&Run]) -> Option<([[f64; 2]; 2], f64)> {
-    let mut sums = [0f64; 6];
+    let mut sums = Moments::default();
     for r in runs {
-        add_run(&mut sums, r);
+        sums.add_row(r.y, r.x0, r.x1);
     }
-    principal(&sums).map(|(angle, elongation)| (directions(angle.to_degrees()), elongation))
+    let p = sums.principal()?;
+    Some((directions(p.angle.to_degrees()), elongation(&p)))
 }
 
 /// Whether the island made of `runs` lies in a wall line of `walls`

@@ -11,6 +11,7 @@ mod adjacency;
 mod binarize;
 mod distance;
 mod label;
+mod moments;
 mod morphology;
 mod orientation;
 mod skeleton;
@@ -25,6 +26,7 @@ pub use distance::{
     squared_distance_to_foreground,
 };
 pub use label::{Labels, Run, RunLabels, label_components, label_runs};
+pub(crate) use moments::{Moments, Principal};
 pub use morphology::{close, dilate, erode, open};
 pub use orientation::dominant_orientation;
 pub use skeleton::skeletonize;
