@@ -14,10 +14,9 @@ use crate::imaging::Moments;
 /// looks long there, on the side away from the opening); both ends must show a wall (elongated, the
 /// two axes within 10° of each other) at 3°–35° from `line`. Then the line
 /// is the chord through `line`'s middle along their mean, if it is no
-/// shorter than `line`, within `limits`, runs into both walls (within
-/// half a wall's thickness and a pixel of its middle) and ends on the same
-/// jambs (each end within a wall's thickness and two pixels of the end it
-/// replaces). None otherwise.
+/// shorter than `line`, within `limits`, and ends on the same jambs (each
+/// end within a wall's thickness and two pixels of the end it replaces).
+/// None otherwise.
 pub(super) fn along_wall(
     pixel: &impl Fn(i64, i64) -> Pixel,
     line: [[f64; 2]; 2],
@@ -32,7 +31,6 @@ pub(super) fn along_wall(
     let reach = 2.0 * limits.max_depth;
     struct Wall {
         along: [f64; 2],
-        centre: [f64; 2],
         half_thickness: f64,
     }
     let axis = |end: [f64; 2], out: [f64; 2]| -> Option<Wall> {
@@ -66,7 +64,6 @@ pub(super) fn along_wall(
             } else {
                 a
             },
-            centre: [end[0] + p.centroid[0], end[1] + p.centroid[1]],
             // A band t wide spreads t² / 12 across.
             half_thickness: (3.0 * p.minor).sqrt(),
         })
@@ -93,23 +90,14 @@ pub(super) fn along_wall(
         [mid[0] + a * w[0], mid[1] + a * w[1]],
         [mid[0] + b * w[0], mid[1] + b * w[1]],
     ];
-    // Into both walls: the chord's line runs through each wall's band (past
-    // wall ends staggered sideways it runs on beside them).
-    let into = |wall: &Wall| {
-        let q = [wall.centre[0] - mid[0], wall.centre[1] - mid[1]];
-        (q[0] * w[1] - q[1] * w[0]).abs() <= wall.half_thickness + 1.0
-    };
     // On the same jambs: each end stays within a wall's thickness (and two
     // pixels) of the end it replaces; a chord that runs on past a jamb's
-    // tip to the wall behind it measures another opening.
+    // tip to the wall behind it, or on beside wall ends staggered sideways,
+    // measures another opening.
     let near = |old: [f64; 2], new: [f64; 2], wall: &Wall| {
         (new[0] - old[0]).hypot(new[1] - old[1]) <= 2.0 * wall.half_thickness + 2.0
     };
-    let kept = b - a >= length
-        && into(&lo)
-        && into(&hi)
-        && near(line[0], along[0], &lo)
-        && near(line[1], along[1], &hi);
+    let kept = b - a >= length && near(line[0], along[0], &lo) && near(line[1], along[1], &hi);
     kept.then_some(along)
 }
 
