@@ -10,9 +10,10 @@ use crate::imaging::Moments;
 /// ends in jambs cut square to the image, so the shortest chord between
 /// them leans across the opening and is short of the doorway. The wall's
 /// direction is the principal axis of the wall pixels beyond each end of
-/// `line` (within twice the thickest wall's depth, so that any wall
-/// looks long there, on the side away from the opening); both ends must show a wall (elongated, the
-/// two axes within 10° of each other) at 3°–35° from `line`. Then the line
+/// `line` (within twice the thickest wall's depth, so that any wall looks
+/// long there, on the side away from the opening); both ends must show a
+/// wall (elongated, the two axes within 10° of each other) at 3°–35° from
+/// `line`. Then the line
 /// is the chord through `line`'s middle along their mean, if it is no
 /// shorter than `line`, within `limits`, and ends on the same jambs (each
 /// end within a wall's thickness and two pixels of the end it replaces).
@@ -49,6 +50,8 @@ pub(super) fn along_wall(
                 sums.add(q);
             }
         }
+        // Too few wall pixels to have a direction: fewer than the reach is
+        // long (a speck, the tip of a thin wall).
         if sums.count() < reach {
             return None;
         }

@@ -1,5 +1,5 @@
-//! Second moments of a set of pixels ([`Moments`]): where the pixels lie,
-//! which way they run and how long against how thick they are. One
+//! Second moments of a set of pixels ([`Moments`]): which way they run
+//! and how long against how thick they are. One
 //! definition for the extraction's shape tests (furniture pieces, the wall
 //! by a doorway's jambs).
 
@@ -10,8 +10,6 @@ pub(crate) struct Moments([f64; 6]);
 /// The principal axes of a set of pixel centres.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Principal {
-    /// The mean of the centres.
-    pub centroid: [f64; 2],
     /// The major axis's angle, radians, in the coordinates the pixels were
     /// given in (image coordinates: x right, y down), in (-π/2, π/2].
     pub angle: f64,
@@ -70,7 +68,6 @@ impl Moments {
         let half = (cxx + cyy) / 2.0;
         let d = (((cxx - cyy) / 2.0).powi(2) + cxy * cxy).sqrt();
         Some(Principal {
-            centroid: [mx, my],
             angle: 0.5 * (2.0 * cxy).atan2(cxx - cyy),
             major: half + d,
             minor: (half - d).max(0.0),
@@ -111,8 +108,6 @@ mod tests {
         // Along: 0..40 spread as (40² - 1) / 12; across: -1, 0, 1 as 2/3.
         assert!((p.major - (1600.0 - 1.0) / 12.0).abs() < 1e-6, "{p:?}");
         assert!((p.minor - 2.0 / 3.0).abs() < 1e-6, "{p:?}");
-        let mid = [10.0 + 19.5 * c, 5.0 + 19.5 * s];
-        assert!((p.centroid[0] - mid[0]).abs() < 1e-9 && (p.centroid[1] - mid[1]).abs() < 1e-9);
     }
 
     #[test]
