@@ -24,12 +24,14 @@ use super::resample::{coarsen, pixel_centroids, refine};
 use super::segment::segment_basins;
 use super::skeleton_doors::skeleton_doorways;
 use super::tidy::tidy_labels;
-use super::wall_gaps::{GapIndex, WallGap, close_gaps, reopen_gaps, wall_gaps};
+use super::wall_gaps::{GapIndex, GapLimits, WallGap, close_gaps, reopen_gaps, wall_gaps};
 use super::wall_stubs::wall_stub_openings;
 use super::wall_support::WallSupport;
 use super::{ExtractError, ExtractParams};
 use crate::grid::OccupancyGrid;
-use crate::imaging::{Labels, distance_to_background, dominant_orientation};
+use crate::imaging::{
+    Labels, Mask, distance_to_background, dominant_orientation, further_wall_directions,
+};
 use crate::model::{Nrg, SpaceId};
 
 /// The result of [`extract`].
@@ -107,9 +109,11 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     let mut free = clean(grid, &islands, params, &px)?;
     // The building's two directions, from the free space without noise.
     let deg = dominant_orientation(&free.clean);
-    let support = WallSupport::new(grid, &islands, deg, px.support);
+    // Those of wings built at other angles.
+    let further = further_wall_directions(&free.clean, deg);
+    let support = WallSupport::new(grid, &islands, deg, &further, px.support);
     let mut gaps = match &px.gaps {
-        Some(limits) => wall_gaps(&free.clean, deg, *limits),
+        Some(limits) => doorway_gaps(&free.clean, deg, &further, *limits, &support),
         None => Vec::new(),
     };
     let openings = openings(&free, deg, &support, &px, &gaps);
@@ -217,6 +221,30 @@ fn clean(
         });
     }
     Ok(free)
+}
+
+/// Doorway gaps (`wall_gaps`) along the building's dominant directions
+/// `deg`, then along the further directions of wings built at other
+/// angles (`imaging::further_wall_directions`) where they pass no gap
+/// already found within the jamb length.
+fn doorway_gaps(
+    free: &Mask,
+    deg: f64,
+    further: &[f64],
+    limits: GapLimits,
+    support: &WallSupport,
+) -> Vec<WallGap> {
+    let mut gaps = wall_gaps(free, deg, limits);
+    for &further in further {
+        let near = near_lines(gaps.iter(), free.width(), limits.jamb);
+        let found = wall_gaps(free, further, limits);
+        gaps.extend(
+            found
+                .into_iter()
+                .filter(|g| !g.line.iter().any(|p| near.contains(p)) && support.backs_gap(&g.line)),
+        );
+    }
+    gaps
 }
 
 /// Openings in walls wider than doorway gaps (see `opening_width_max_m`)
@@ -373,6 +401,40 @@ mod tests {
         params.building.opening_width_max_m = 0.0;
         let one = extract(&grid, &params).unwrap();
         assert_eq!(one.nrg.spaces().len(), 1);
+    }
+
+    #[test]
+    fn a_doorway_in_a_wing_built_at_another_angle_is_found() {
+        // At 0.1 m/px: a 10 x 16 m hall along the grid (x < 100) and,
+        // beyond its east wall, a 12 x 5 m wing turned by 40 degrees: a
+        // 1.6 m corridor and a 3.2 m room side by side, the partition
+        // between them (0.2 m) open over 1.6 m in its middle. That doorway
+        // is as wide as the corridor, so the distance transform shows no
+        // constriction: only a doorway gap along the wing's walls
+        // separates the room from the corridor.
+        let (s, c) = 40f64.to_radians().sin_cos();
+        let grid = walled(240, 160, 0.1, |x, y| {
+            let (dx, dy) = (x as f64 + 0.5 - 170.0, y as f64 + 0.5 - 80.0);
+            let (u, v) = (dx * c + dy * s, -dx * s + dy * c);
+            let in_wing = u.abs() < 60.0 && v.abs() < 25.0;
+            let partition = (-9.0..-7.0).contains(&v) && u.abs() >= 8.0;
+            if x < 100 {
+                x == 99
+            } else {
+                !in_wing || partition
+            }
+        });
+        let x = extract(&grid, &ExtractParams::default()).unwrap();
+        let doors: Vec<f64> = x
+            .nrg
+            .spaces()
+            .iter()
+            .filter_map(crate::model::doorway)
+            .map(|d| d.width_m)
+            .collect();
+        assert_eq!(x.nrg.spaces().len() - doors.len(), 3, "{doors:?}");
+        assert_eq!(doors.len(), 1, "{doors:?}");
+        assert!((doors[0] - 1.6).abs() <= 0.15, "{doors:?}");
     }
 
     #[test]

@@ -102,7 +102,8 @@ enum Ground {
 
 /// The wall runs of one map, ready to judge doorway gaps and borders.
 pub(crate) struct WallSupport {
-    runs: WallRuns,
+    /// The runs along the dominant directions, then along each further one.
+    runs: Vec<WallRuns>,
     /// Per pixel: what a border's end may lie on.
     ground: Vec<Ground>,
     width: u32,
@@ -113,11 +114,14 @@ pub(crate) struct WallSupport {
 impl WallSupport {
     /// The runs of wall face (cells that are not free next to a free one)
     /// of `grid`, along its dominant directions `deg` and a quarter turn
-    /// from it (degrees, see `imaging::dominant_orientation`).
+    /// from it (degrees, see `imaging::dominant_orientation`). Clutter lies
+    /// on wall lines along those directions or along the `further` ones of
+    /// wings built at other angles (see `imaging::further_wall_directions`).
     pub(crate) fn new(
         grid: &OccupancyGrid,
         islands: &Islands,
         deg: f64,
+        further: &[f64],
         limits: SupportLimits,
     ) -> WallSupport {
         let (w, h) = (grid.width as usize, grid.height as usize);
@@ -150,9 +154,14 @@ impl WallSupport {
                 _ => Ground::Wall,
             })
             .collect();
-        mark_lined_clutter(&mut ground, grid, islands, &face, deg, &limits.lines);
+        for &d in std::iter::once(&deg).chain(further) {
+            mark_lined_clutter(&mut ground, grid, islands, &face, d, &limits.lines);
+        }
         WallSupport {
-            runs: WallRuns::new(&face, deg, min_run, limits.gap),
+            runs: std::iter::once(deg)
+                .chain(further.iter().copied())
+                .map(|d| WallRuns::new(&face, d, min_run, limits.gap))
+                .collect(),
             ground,
             width: grid.width,
             height: grid.height,
@@ -207,6 +216,15 @@ impl WallSupport {
         })
     }
 
+    /// Whether the doorway gap whose line is `pixels` has wall support
+    /// (not merely no finding against it): what a gap along a further wall
+    /// direction needs, where the rule would abstain on a line across a
+    /// corridor of the main wing.
+    pub(crate) fn backs_gap(&self, pixels: &[u32]) -> bool {
+        border_ends(self.width, pixels)
+            .is_some_and(|(a, b)| self.supported(a, b, true) == Some(true))
+    }
+
     /// Whether the opening whose line is `pixels` crosses a passage: at one
     /// of its ends a wall line across (runs of at least `tie_run`, a jamb,
     /// within `tolerance` of the end's line) goes on more than `reach` past
@@ -220,16 +238,16 @@ impl WallSupport {
         let Some((a, b)) = border_ends(self.width, pixels) else {
             return false;
         };
-        let Some(k) = self.direction(a, b) else {
+        let Some((judge, k)) = self.judge(a, b) else {
             return false;
         };
         let l = &self.limits;
         let j = 1 - k;
-        let across = self.runs.across(j);
+        let across = judge.runs.across(j);
         let window = 2.0 * l.long_run;
         let both = |p: [f64; 2]| {
             let t = project(p, along(across));
-            let runs: Vec<Run> = self
+            let runs: Vec<Run> = judge
                 .runs
                 .near(j, project(p, across), l.tolerance)
                 .filter(|&r| length(r) >= l.tie_run)
@@ -245,11 +263,39 @@ impl WallSupport {
         both(a) || both(b)
     }
 
+    /// Whether the doorway `a`–`b` (pixels) has wall support, judged
+    /// along the wall directions it runs along; `None` where the rule
+    /// abstains (see [`Judge::supported`]).
+    fn supported(&self, a: [f64; 2], b: [f64; 2], ties: bool) -> Option<bool> {
+        self.judge(a, b)?.0.supported(a, b, ties)
+    }
+
+    /// The runs of the first wall directions (the dominant ones, then the
+    /// further ones) that line `a`–`b` runs along, within [`MIN_COS`], and
+    /// which of their two directions (0 or 1) it is.
+    fn judge(&self, a: [f64; 2], b: [f64; 2]) -> Option<(Judge<'_>, usize)> {
+        self.runs.iter().find_map(|runs| {
+            let judge = Judge {
+                runs,
+                limits: &self.limits,
+            };
+            judge.direction(a, b).map(|k| (judge, k))
+        })
+    }
+}
+
+/// The wall support rule along one pair of wall directions.
+struct Judge<'a> {
+    runs: &'a WallRuns,
+    limits: &'a SupportLimits,
+}
+
+impl Judge<'_> {
     /// Whether the doorway `a`–`b` (pixels) has wall support; `None` where
     /// the rule abstains. With `ties`, both ends anchored support it
     /// ([`Self::tied`], [`Self::walled_line`]).
     fn supported(&self, a: [f64; 2], b: [f64; 2], ties: bool) -> Option<bool> {
-        let l = &self.limits;
+        let l = self.limits;
         let k = self.direction(a, b)?;
         let middle = [(a[0] + b[0]) / 2.0, (a[1] + b[1]) / 2.0];
         if !self.walls_near(middle) {
@@ -271,7 +317,7 @@ impl WallSupport {
         Some(pair.0 && pair.1)
     }
 
-    /// The dominant direction (0 or 1) line `a`–`b` runs along, within
+    /// The direction (0 or 1) line `a`–`b` runs along, within
     /// [`MIN_COS`].
     fn direction(&self, a: [f64; 2], b: [f64; 2]) -> Option<usize> {
         let d = [b[0] - a[0], b[1] - a[1]];
@@ -320,7 +366,7 @@ impl WallSupport {
         let (across, [lo, hi]) = self.frame(k, a, b);
         let u = along(across);
         let t = |p| project(p, u);
-        let l = &self.limits;
+        let l = self.limits;
         let window = 2.0 * l.long_run;
         let covered = |p: [f64; 2], outward: f64| {
             let tp = t(p);
@@ -378,7 +424,7 @@ impl WallSupport {
         let (across, [lo, hi]) = self.frame(k, a, b);
         let u = along(across);
         let t = |p| project(p, u);
-        let l = &self.limits;
+        let l = self.limits;
         let beyond = |p: [f64; 2], outward: f64| {
             let tp = t(p);
             self.runs
@@ -400,7 +446,7 @@ impl WallSupport {
     /// Whether a long run along direction `k` (across the doorway) passes
     /// end `p` or ends near it.
     fn across_end(&self, k: usize, p: [f64; 2]) -> bool {
-        let l = &self.limits;
+        let l = self.limits;
         let across = self.runs.across(k);
         let t = project(p, along(across));
         self.runs.near(k, project(p, across), l.tolerance).any(|r| {
@@ -531,7 +577,7 @@ mod tests {
             })
             .collect();
         let g = OccupancyGrid::from_ascii(&rows.join("\n"), 0.1);
-        WallSupport::new(&g, &islands(&g), 0.0, AT_10_CM)
+        WallSupport::new(&g, &islands(&g), 0.0, &[], AT_10_CM)
     }
 
     #[test]
@@ -661,6 +707,32 @@ mod tests {
         let off = grid(80, 40, desk);
         let to_desk: Vec<u32> = (30..38).map(|x| 29 * 80 + x).collect();
         assert!(off.lacks_gap(&to_desk));
+    }
+
+    #[test]
+    fn a_doorway_in_a_wall_along_a_further_direction_is_judged_along_it() {
+        // A diagonal wall (45 degrees, 2 px thick) across an 8 m room, with
+        // a doorway 0.8 m along it.
+        let rows: Vec<String> = (0..81)
+            .map(|y| {
+                (0..81)
+                    .map(|x| {
+                        let edge = x == 0 || y == 0 || x == 80 || y == 80;
+                        let diagonal = (x == y || x == y + 1) && !(30..38).contains(&y);
+                        if edge || diagonal { '#' } else { '.' }
+                    })
+                    .collect()
+            })
+            .collect();
+        let g = OccupancyGrid::from_ascii(&rows.join("\n"), 0.1);
+        let (a, b) = ([30.0, 30.0], [37.0, 37.0]);
+        // Along the dominant directions only, the rule abstains…
+        let along_axes = WallSupport::new(&g, &islands(&g), 0.0, &[], AT_10_CM);
+        assert_eq!(along_axes.supported(a, b, true), None);
+        // …with the wall's own direction, the wall going on beyond both
+        // ends supports the doorway.
+        let along_wall = WallSupport::new(&g, &islands(&g), 0.0, &[45.0], AT_10_CM);
+        assert_eq!(along_wall.supported(a, b, true), Some(true));
     }
 
     #[test]

@@ -17,6 +17,7 @@ mod orientation;
 mod skeleton;
 mod threshold_tree;
 mod turn;
+mod wall_directions;
 mod watershed;
 
 pub use adjacency::{Adjacency, region_adjacency};
@@ -32,6 +33,7 @@ pub use orientation::dominant_orientation;
 pub use skeleton::skeletonize;
 pub use threshold_tree::{NO_PARENT, ThresholdTree, threshold_tree};
 pub use turn::{Turn, line_pixels, turn_mask};
+pub use wall_directions::further_wall_directions;
 pub use watershed::watershed;
 
 /// A binary image: non-zero pixels are the foreground (255 by convention).

@@ -56,13 +56,13 @@ pub fn dominant_orientation(mask: &Mask) -> f64 {
 }
 
 /// Every `k`-th point, so at most `max` remain.
-fn subsample(points: Vec<[f64; 2]>, max: usize) -> Vec<[f64; 2]> {
+pub(super) fn subsample(points: Vec<[f64; 2]>, max: usize) -> Vec<[f64; 2]> {
     let step = points.len().div_ceil(max).max(1);
     points.into_iter().step_by(step).collect()
 }
 
 /// Foreground pixels with a background 4-neighbour.
-fn boundary_points(mask: &Mask) -> Vec<[f64; 2]> {
+pub(super) fn boundary_points(mask: &Mask) -> Vec<[f64; 2]> {
     let (w, h) = (mask.width() as usize, mask.height() as usize);
     let d = mask.as_raw();
     let on = |x: usize, y: usize| d[y * w + x] != 0;
@@ -102,12 +102,12 @@ fn sharpness(points: &[[f64; 2]], a: f64, bins: &mut Vec<u32>) -> f64 {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
     /// A filled rectangle of `w` × `h` pixels turned by `deg` about the
     /// image centre.
-    fn turned_rectangle(deg: f64) -> Mask {
+    pub(in crate::imaging) fn turned_rectangle(deg: f64) -> Mask {
         let (s, c) = deg.to_radians().sin_cos();
         Mask::from_fn(200, 200, |x, y| {
             let (dx, dy) = (f64::from(x) - 100.0, f64::from(y) - 100.0);
