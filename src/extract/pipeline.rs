@@ -226,7 +226,11 @@ fn clean(
 /// Doorway gaps (`wall_gaps`) along the building's dominant directions
 /// `deg`, then along the further directions of wings built at other
 /// angles (`imaging::further_wall_directions`) where they pass no gap
-/// already found within the jamb length.
+/// already found within the jamb length. In a building with such wings
+/// every gap needs wall support along its own direction
+/// (`WallSupport::backs_gap`): elsewhere the rule abstains on a line
+/// along one pair of directions drawn in a wing of another (across a
+/// slanted corridor, between the ends of its partitions).
 fn doorway_gaps(
     free: &Mask,
     deg: f64,
@@ -235,6 +239,9 @@ fn doorway_gaps(
     support: &WallSupport,
 ) -> Vec<WallGap> {
     let mut gaps = wall_gaps(free, deg, limits);
+    if !further.is_empty() {
+        gaps.retain(|g| support.backs_gap(&g.line));
+    }
     for &further in further {
         let near = near_lines(gaps.iter(), free.width(), limits.jamb);
         let found = wall_gaps(free, further, limits);

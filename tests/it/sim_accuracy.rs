@@ -45,8 +45,12 @@
 //! wall between two doors in such a wing lies off the building's two
 //! directions; before it was followed along its own axis as well, the
 //! group measured rooms 97.33 / 99.10, doors 92.78 / 99.49, connections
-//! 94.51 / 99.92 and 29 rooms labelled corridor; now 97.26 / 99.59,
-//! 97.85 / 99.53, 97.54 / 99.93 and 8.
+//! 94.51 / 99.92 and 29 rooms labelled corridor; then 97.26 / 99.59,
+//! 97.85 / 99.53, 97.54 / 99.93 and 8. Since 2026-12-06 doorway gaps are
+//! also scanned along the wings' own wall directions
+//! (`imaging::further_wall_directions`), and in a building with such
+//! wings a gap needs wall support along its own direction: 97.45 / 99.94,
+//! 99.62 / 99.88, 99.66 / 100 and 2.
 //!
 //! Everything is deterministic in the seeds, so a drop below a floor is a
 //! real change of behaviour, not noise. Needs no shared data.
@@ -119,7 +123,7 @@ fn simulated_buildings_plain_furnished_cluttered_turned_and_angled_stay_above_th
         (FURNISHED, 88.9, 99.5, 99.5, 97.0, 99.5, 99.5),
         (CLUTTERED, 85.5, 99.5, 99.5, 98.8, 99.5, 99.5),
         (TURNED, 97.3, 99.5, 99.5, 99.5, 99.5, 99.5),
-        (ANGLED, 97.0, 99.3, 97.5, 99.2, 97.2, 99.5),
+        (ANGLED, 97.2, 99.8, 99.4, 99.7, 99.4, 99.5),
     ];
     let mut report = String::new();
     let mut failed = false;
@@ -162,7 +166,7 @@ fn simulated_buildings_plain_furnished_cluttered_turned_and_angled_stay_above_th
         (FURNISHED, 2, 4, 50),
         (CLUTTERED, 2, 14, 50),
         (TURNED, 2, 2, 50),
-        (ANGLED, 2, 10, 42),
+        (ANGLED, 2, 4, 42),
     ];
     for (g, corridors_as_rooms, rooms_as_corridors, corridors) in label_bounds {
         let mut kinds = nrgdb::eval::KindScore::default();
