@@ -382,6 +382,18 @@ mod tests {
         OccupancyGrid::from_ascii(&rows.join("\n"), resolution)
     }
 
+    /// How many spaces of `x` are no doors, and the doors' widths (m).
+    fn spaces_and_door_widths(x: &Extraction) -> (usize, Vec<f64>) {
+        let doors: Vec<f64> = x
+            .nrg
+            .spaces()
+            .iter()
+            .filter_map(crate::model::doorway)
+            .map(|d| d.width_m)
+            .collect();
+        (x.nrg.spaces().len() - doors.len(), doors)
+    }
+
     #[test]
     fn a_partition_short_of_the_wall_across_leaves_a_door_along_its_line() {
         // At 0.05 m/px: a 10 x 6 m hall (x 1..199, y 1..119) divided by a
@@ -431,15 +443,9 @@ mod tests {
                 !in_wing || partition
             }
         });
-        let x = extract(&grid, &ExtractParams::default()).unwrap();
-        let doors: Vec<f64> = x
-            .nrg
-            .spaces()
-            .iter()
-            .filter_map(crate::model::doorway)
-            .map(|d| d.width_m)
-            .collect();
-        assert_eq!(x.nrg.spaces().len() - doors.len(), 3, "{doors:?}");
+        let (others, doors) =
+            spaces_and_door_widths(&extract(&grid, &ExtractParams::default()).unwrap());
+        assert_eq!(others, 3, "{doors:?}");
         assert_eq!(doors.len(), 1, "{doors:?}");
         assert!((doors[0] - 1.6).abs() <= 0.15, "{doors:?}");
     }
@@ -455,17 +461,8 @@ mod tests {
             let front = (40..42).contains(&y) && !(15..45).contains(&x) && !(85..94).contains(&x);
             divider || front
         });
-        let spaces = |params: &ExtractParams| {
-            let x = extract(&grid, params).unwrap();
-            let doors: Vec<f64> = x
-                .nrg
-                .spaces()
-                .iter()
-                .filter_map(crate::model::doorway)
-                .map(|d| d.width_m)
-                .collect();
-            (x.nrg.spaces().len() - doors.len(), doors)
-        };
+        let spaces =
+            |params: &ExtractParams| spaces_and_door_widths(&extract(&grid, params).unwrap());
         let (others, mut widths) = spaces(&ExtractParams::default());
         widths.sort_by(f64::total_cmp);
         assert_eq!(others, 3, "{widths:?}");
