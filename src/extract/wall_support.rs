@@ -8,9 +8,11 @@
 //! (an unsupported one is dropped: a gap between pieces of clutter) and
 //! the borders the watershed draws at door-wide constrictions that no
 //! kept gap marks. Such a line is **unsupported**, and the regions on
-//! either side are one, when it runs along a dominant direction
-//! (within [`MIN_COS`]) where the walls follow those directions (a long run
-//! within [`SupportLimits::near`] of its middle), and
+//! either side are one, when it runs along a dominant direction, or along
+//! a further one of a wing built at another angle
+//! (`imaging::further_wall_directions`; each pair of directions has its
+//! own runs), within [`MIN_COS`], where the walls follow those directions
+//! (a long run within [`SupportLimits::near`] of its middle), and
 //! - no long run of wall face ([`SupportLimits::long_run`]) goes on in line
 //!   beyond either end (the wall the doorway is cut in);
 //! - no long run across the line passes either end (a reveal, or the wall
@@ -217,9 +219,10 @@ impl WallSupport {
     }
 
     /// Whether the doorway gap whose line is `pixels` has wall support
-    /// (not merely no finding against it): what a gap along a further wall
-    /// direction needs, where the rule would abstain on a line across a
-    /// corridor of the main wing.
+    /// (not merely no finding against it): what every gap needs in a
+    /// building with wings at other angles, where a line drawn along one
+    /// pair of directions in a wing of another (across its corridor) gets
+    /// no finding either way.
     pub(crate) fn backs_gap(&self, pixels: &[u32]) -> bool {
         border_ends(self.width, pixels)
             .is_some_and(|(a, b)| self.supported(a, b, true) == Some(true))
