@@ -13,11 +13,10 @@ use crate::imaging::Moments;
 /// `line` (within twice the thickest wall's depth, so that any wall looks
 /// long there, on the side away from the opening); both ends must show a
 /// wall (elongated, the two axes within 10° of each other) at 3°–35° from
-/// `line`. Then the line
-/// is the chord through `line`'s middle along their mean, if it is no
-/// shorter than `line`, within `limits`, and ends on the same jambs (each
-/// end within a wall's thickness and two pixels of the end it replaces).
-/// None otherwise.
+/// `line`. Then the line is the chord through `line`'s middle along their
+/// mean, if it is no shorter than `line`, within `limits`, and ends on the
+/// same jambs (each end within a wall's thickness and two pixels of the end
+/// it replaces). None otherwise.
 pub(super) fn along_wall(
     pixel: &impl Fn(i64, i64) -> Pixel,
     line: [[f64; 2]; 2],

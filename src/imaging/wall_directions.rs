@@ -24,8 +24,9 @@ const FURTHER_MIN_APART: f64 = 5.0;
 /// other angles, each modulo a quarter turn, strongest first. Each
 /// boundary pixel's edge normal is taken over a disc of free pixels
 /// around it and weighed by how clear it is; a direction is a peak of
-/// their histogram (1° bins, summed over 5°) with a deep valley between
-/// it and the dominant direction (see `FURTHER_MAX_VALLEY`). Empty on
+/// their histogram (1° bins, summed over 5°), at least twice
+/// `FURTHER_MIN_APART` from the dominant direction, with a deep valley
+/// between the two (see `FURTHER_MAX_VALLEY`). Empty on
 /// maps built along one pair of axes, and on robot maps whose edges
 /// scatter round every angle.
 pub fn further_wall_directions(mask: &Mask, dominant: f64) -> Vec<f64> {
@@ -43,7 +44,8 @@ pub fn further_wall_directions(mask: &Mask, dominant: f64) -> Vec<f64> {
         .filter(|&k| quarter_turn_apart(k as f64, dominant) >= 2.0 * FURTHER_MIN_APART)
         .filter(|&k| at(k) >= FURTHER_MIN_SHARE * top)
         .filter(|&k| {
-            // The lower of the two valleys' floors, going either way round.
+            // The histogram must dip both ways round from the dominant
+            // direction to the peak: the higher of the two floors.
             let floor = |step: i64| {
                 let mut j = home;
                 let mut low = f64::INFINITY;
