@@ -2,7 +2,8 @@
 //! wall ([`along_wall`]): the one correction the doorway span makes
 //! to the shortest chord between the jambs.
 
-use super::doorway::{Pixel, SpanLimits, chord};
+use super::chord_pixels::Pixel;
+use super::doorway::{SpanLimits, chord};
 use crate::imaging::Moments;
 
 /// The doorway line measured along the wall it is in, where the wall by

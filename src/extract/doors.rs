@@ -3,7 +3,8 @@
 
 use std::collections::{BTreeMap, HashSet, VecDeque};
 
-use super::doorway::{DoorSpan, Pixel, SpanLimits, border_line, door_span};
+use super::chord_pixels::Pixel;
+use super::doorway::{DoorSpan, SpanLimits, border_line, door_span};
 use super::wandering_doors::{DoorToCut, Scratch, cut_along};
 use crate::imaging::Labels;
 

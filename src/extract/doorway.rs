@@ -13,8 +13,8 @@
 //! speck (a stretch of uncertain pixels up to [`SpanLimits::noise_run`]
 //! long with free space after it, see [`Pixel`]); it ends at a wall.
 
-use super::furniture::Islands;
-use crate::grid::{Cell, OccupancyGrid};
+use super::chord_pixels::{Pixel, classifier};
+use super::clear_width::{clear_part, obstacle_in_regions};
 use crate::imaging::Labels;
 
 /// Limits of [`door_span`], in pixels.
@@ -56,6 +56,16 @@ pub(crate) struct DoorSpan {
 }
 
 impl DoorSpan {
+    /// The span with its doorway line cut to the line's clear part
+    /// between the obstacles `blocked` says stand in it (see
+    /// [`clear_part`]); its rectangle stays the opening's.
+    pub(super) fn clear_of(self, blocked: &impl Fn(i64, i64) -> bool) -> DoorSpan {
+        DoorSpan {
+            line: clear_part(blocked, self.line),
+            ..self
+        }
+    }
+
     /// The pixel `(x, y)`'s centre in the span's frame: `(s, t)`.
     fn frame(&self, x: i64, y: i64) -> (f64, f64) {
         let q = [
@@ -134,28 +144,8 @@ pub(crate) fn door_span(
     let pixel = classifier(labels, outside);
     let (centre, normal) = border_frame(labels, pair, pixels)?;
     let throat = throat(&pixel, centre, normal, limits)?;
-    Some(span(&pixel, &throat, limits))
-}
-
-/// What each pixel is to a chord: free where `labels` is non-zero,
-/// elsewhere what `outside` says (a wall with `None`), and a wall beyond
-/// the image (see [`door_span`]).
-pub(super) fn classifier<'a>(
-    labels: &'a Labels,
-    outside: Option<&'a [Pixel]>,
-) -> impl Fn(i64, i64) -> Pixel + 'a {
-    let (w, h) = (i64::from(labels.width), i64::from(labels.height));
-    move |x: i64, y: i64| {
-        if x < 0 || y < 0 || x >= w || y >= h {
-            return Pixel::Wall;
-        }
-        let i = (y * w + x) as usize;
-        if labels.data[i] != 0 {
-            Pixel::Free
-        } else {
-            outside.map_or(Pixel::Wall, |o| o.get(i).copied().unwrap_or(Pixel::Wall))
-        }
-    }
+    let span = span(&pixel, &throat, limits);
+    Some(span.clear_of(&obstacle_in_regions(labels, outside)))
 }
 
 /// The doorway line of a border that crosses no bounded opening: the
@@ -219,21 +209,6 @@ pub(super) fn border_frame(
     (k > 0.0 && len > 0.0).then(|| ([c[0] / k, c[1] / k], [n[0] / len, n[1] / len]))
 }
 
-/// What a chord meets at a pixel.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Pixel {
-    /// Free space of the map's regions, or a pixel outside them that a
-    /// chord passes through: a speck standing free, a free cell the noise
-    /// filter took (see [`outside_pixels`]).
-    Free,
-    /// Not free, but not surely a wall either: a speck of an unknown or
-    /// uncertain grey (JPEG artefacts, a stray ray).
-    Noise,
-    /// A wall pixel (an occupied cell or one next to it), or beyond the
-    /// map.
-    Wall,
-}
-
 /// Distance from `p` along the unit vector `d` to the edge of the first
 /// wall pixel, or to the start of a stretch of noise pixels longer than
 /// `noise_run` (pixels along `d`); None beyond `max` (0 when `p` is not
@@ -279,7 +254,7 @@ fn exit_distance(
         }
         match (pixel(ix, iy), noise) {
             (Pixel::Free, _) => noise = None,
-            (Pixel::Wall, run) => return Some(run.unwrap_or(t)),
+            (Pixel::Wall | Pixel::Obstacle, run) => return Some(run.unwrap_or(t)),
             (Pixel::Noise, None) => noise = Some(t),
             (Pixel::Noise, Some(at)) if t - at >= noise_run - 1e-9 => return Some(at),
             (Pixel::Noise, Some(_)) => {}
@@ -497,56 +472,9 @@ pub(super) fn span(
     }
 }
 
-/// What each pixel outside the regions is to a doorway chord:
-/// - [`Pixel::Wall`]: an occupied cell or a cell next to one (8-neighbours:
-///   the uncertain halo of a scanned wall, a blurred drawn wall; a 3 × 3
-///   dilation, by rows then by columns);
-/// - [`Pixel::Free`]: a cell of a **speck**, an 8-connected piece of
-///   non-free cells standing free (off the image's edge) and at most
-///   `speck_px` across on both sides (a stray return beside a jamb, a scan
-///   artefact in a doorway), or a free cell the noise filter took (round
-///   such a speck, in a jamb's corner): chords run through them, so they
-///   do not shorten the doorway;
-/// - [`Pixel::Noise`] otherwise (an uncertain grey).
-pub(crate) fn outside_pixels(grid: &OccupancyGrid, islands: &Islands, speck_px: f64) -> Vec<Pixel> {
-    let w = grid.width as usize;
-    let mut speck = vec![false; grid.cells.len()];
-    for r in &islands.pieces.runs {
-        if islands.extent[r.label as usize].is_some_and(|e| e <= speck_px) {
-            let i = r.y as usize * w;
-            speck[i + r.x0 as usize..i + r.x1 as usize].fill(true);
-        }
-    }
-    let occupied: Vec<bool> = grid
-        .cells
-        .iter()
-        .zip(&speck)
-        .map(|(c, &s)| *c == Cell::Occupied && !s)
-        .collect();
-    let mut rows = occupied.clone();
-    for (row, out) in occupied.chunks(w.max(1)).zip(rows.chunks_mut(w.max(1))) {
-        for x in 0..row.len() {
-            out[x] = row[x.saturating_sub(1)..(x + 2).min(row.len())].contains(&true);
-        }
-    }
-    (0..rows.len())
-        .map(|i| {
-            let wall = rows[i] || (i >= w && rows[i - w]) || rows.get(i + w).is_some_and(|&r| r);
-            if wall {
-                Pixel::Wall
-            } else if speck[i] || grid.cells[i] == Cell::Free {
-                Pixel::Free
-            } else {
-                Pixel::Noise
-            }
-        })
-        .collect()
-}
-
 #[cfg(test)]
 pub(super) mod tests {
     use super::*;
-    use crate::extract::furniture::islands;
     use crate::imaging::ascii_labels;
 
     pub(in crate::extract) fn border(l: &Labels) -> Vec<u32> {
@@ -723,60 +651,6 @@ pub(super) mod tests {
         // Columns 11..=17 only.
         let cut = length(2.0);
         assert!((cut - 7.0).abs() < 0.5, "{cut}");
-    }
-
-    /// A 3-pixel speck standing a pixel off a jamb, and the free cells the
-    /// noise filter took round it, are no jamb: the doorway is measured
-    /// from wall to wall. A speck touching the wall is part of it.
-    #[test]
-    fn a_speck_beside_a_jamb_does_not_narrow_the_doorway() {
-        // Room above, room below, a wall 2 rows thick with a 14-pixel
-        // doorway (columns 8..=21); a speck at columns 10..=12 of the
-        // first wall row, two columns off the left jamb.
-        let mut map = vec![".".repeat(30); 8];
-        map.push(format!("{}..###.........{}", "#".repeat(8), "#".repeat(8)));
-        map.push(format!("{}..............{}", "#".repeat(8), "#".repeat(8)));
-        map.extend(vec![".".repeat(30); 8]);
-        let grid = OccupancyGrid::from_ascii(&map.join("\n"), 0.05);
-        let outside = outside_pixels(&grid, &islands(&grid), 4.0);
-        let at = |x: usize, y: usize| outside[y * 30 + x];
-        assert_eq!(at(11, 8), Pixel::Free, "speck");
-        assert_eq!(at(3, 8), Pixel::Wall, "wall");
-        assert_eq!(at(8, 8), Pixel::Wall, "halo of the jamb");
-        // The regions: every free cell but the one between the jamb's halo
-        // and the speck (taken by a noise filter).
-        let regions = |map: &[String]| -> Vec<String> {
-            map.iter()
-                .enumerate()
-                .map(|(y, r)| {
-                    r.chars()
-                        .enumerate()
-                        .map(|(x, c)| match c {
-                            '.' if y == 8 && x == 9 => '#',
-                            '.' if y < 9 => 'a',
-                            '.' => 'b',
-                            _ => '#',
-                        })
-                        .collect()
-                })
-                .collect()
-        };
-        let length = |map: &[String]| {
-            let grid = OccupancyGrid::from_ascii(&map.join("\n"), 0.05);
-            let rows = regions(map);
-            let refs: Vec<&str> = rows.iter().map(String::as_str).collect();
-            let l = ascii_labels(&refs);
-            let outside = outside_pixels(&grid, &islands(&grid), 4.0);
-            line_length(&door_span(&l, Some(&outside), (1, 2), &border(&l), &LIMITS).unwrap())
-        };
-        // The whole opening, columns 8..=21.
-        let measured = length(&map);
-        assert!((measured - 14.0).abs() < 0.6, "{measured}");
-        // The same speck joined to the wall is a jamb.
-        let mut joined = map.clone();
-        joined[8] = format!("{}#####.........{}", "#".repeat(8), "#".repeat(8));
-        let short = length(&joined);
-        assert!(short < 10.5, "{short}");
     }
 
     #[test]

@@ -6,7 +6,7 @@
 //! islands are labelled once per extraction ([`islands`]); the larger
 //! ones that are no pieces of wall are the clutter a doorway's jamb cannot
 //! be ([`clutter_pixels`]), and the smallest are specks doorway chords
-//! cross (`doorway::outside_pixels`).
+//! cross (`chord_pixels::outside_pixels`).
 
 use super::clutter::{LineLimits, WallLines, is_wall_piece};
 use crate::grid::{Cell, OccupancyGrid};

@@ -9,10 +9,10 @@ use std::time::{Duration, Instant};
 
 use super::build::{DoorLines, build};
 use super::ccl::segment_ccl;
+use super::chord_pixels::outside_pixels;
 use super::clean::{FreeSpace, clean_free};
 use super::door_choice::{DoorCues, choose_doors};
 use super::doors::{Border, cut_doors};
-use super::doorway::outside_pixels;
 use super::filled::filled_diameters;
 use super::furniture::{Islands, islands};
 use super::graph::topology;
@@ -336,8 +336,8 @@ fn span_doors(
     px: &PixelConfig,
 ) -> (Labels, Vec<Option<[[f64; 2]; 2]>>) {
     // Doorway chords end at the map's walls; other pixels outside the
-    // regions may be noise or specks they cross (see `doorway::Pixel`).
-    let outside = outside_pixels(grid, islands, px.chord_speck_max);
+    // regions may be noise or specks they cross (see `chord_pixels::Pixel`).
+    let outside = outside_pixels(grid, islands, px.chord_speck_max, px.obstacle_min);
     let (mut labels, door_lines) = cut_doors(
         &regions.labels,
         Some(&outside),

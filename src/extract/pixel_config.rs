@@ -132,11 +132,19 @@ const PASSAGE_DISK_MARGIN_PX: f64 = 1.0;
 const SPECK_MAX_M2: f64 = 0.25;
 
 /// Obstacle pieces standing free and at most this long (m) on both sides
-/// are specks a doorway chord runs through (see `doorway::outside_pixels`).
+/// are specks a doorway chord runs through (see `chord_pixels::outside_pixels`).
 /// Measured on the shared maps (2026-12-05): only umic's door widths move
 /// (error median 0.131 -> 0.106 m, p90 0.336 -> 0.256 m, with the free
 /// cells the noise filter took passed too); no door is found or lost.
 const CHORD_SPECK_MAX_M: f64 = 0.2;
+
+/// Occupied pieces inside the spaces (obstacles the furniture filter let
+/// them take in) narrow a doorway line to its clear part (see
+/// `clear_width`) when they hold at least this much occupied area (m²):
+/// a 10 cm square. A dot of one or two occupied cells in a grey halo is
+/// scan noise. Measured on the shared maps (2026-12-06): see
+/// `benches/README.md`, "A doorway's width is its clear part".
+const OBSTACLE_MIN_M2: f64 = 0.01;
 
 /// Unknown pockets no thicker than this (m) bordered mostly by obstacles
 /// are the insides of walls, not of furniture: they stay out of spaces.
@@ -232,6 +240,8 @@ pub(crate) struct PixelConfig {
     pub speck_max: usize,
     /// Obstacle pieces this small (px across) are no jambs to a chord.
     pub chord_speck_max: f64,
+    /// Occupied pieces with fewer cells than this do not narrow a doorway.
+    pub obstacle_min: usize,
     /// `corridor_min_elongation` (a ratio).
     pub corridor_min_elongation: f64,
     /// The widest hole in a space that is clutter standing in it.
@@ -368,6 +378,7 @@ impl PixelConfig {
             wall_inside_max: px(WALL_INSIDE_MAX_M).ceil() as usize,
             speck_max: (SPECK_MAX_M2 / (resolution * resolution)).floor() as usize,
             chord_speck_max: px(CHORD_SPECK_MAX_M),
+            obstacle_min: (OBSTACLE_MIN_M2 / (resolution * resolution)).ceil() as usize,
             corridor_min_elongation: i.corridor_min_elongation,
             clutter_max_width: px(CLUTTER_MAX_WIDTH_M),
             open_min: px(b.door_width_max_m).ceil() as usize,

@@ -12,8 +12,10 @@
 
 use std::collections::VecDeque;
 
+use super::chord_pixels::{Pixel, classifier};
+use super::clear_width::obstacle_in_regions;
 use super::doors::Border;
-use super::doorway::{DoorSpan, Pixel, SpanLimits, Throat, border_frame, classifier, span, throat};
+use super::doorway::{DoorSpan, SpanLimits, Throat, border_frame, span, throat};
 use crate::imaging::Labels;
 
 /// Most places along one border where a throat is sought.
@@ -142,7 +144,11 @@ fn spans_along(
             }
         }
     }
-    distinct.iter().map(|th| span(&pixel, th, limits)).collect()
+    let blocked = obstacle_in_regions(labels, outside);
+    distinct
+        .iter()
+        .map(|th| span(&pixel, th, limits).clear_of(&blocked))
+        .collect()
 }
 
 /// Whether a door at `span` parts `door`'s two regions in `out` (whose

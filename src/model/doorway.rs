@@ -4,7 +4,9 @@
 //!
 //! A door space is the piece of floor in a doorway, from one face of the
 //! wall to the other. Its **doorway line** runs across the opening, through
-//! the middle of the wall's thickness, and ends at the jambs; its **width**
+//! the middle of the wall's thickness, and ends at the jambs (where an
+//! obstacle stands in the opening, it is the longest stretch left clear,
+//! the width one can pass); its **width**
 //! is that line's length, unless the space declares a `width_m` attribute
 //! (a door leaf narrower than its frame, a width taken from a plan). The
 //! extractor measures the line from the map and stores it in
