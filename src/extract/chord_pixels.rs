@@ -1,7 +1,8 @@
 //! What a doorway chord meets at each pixel ([`Pixel`]): the regions'
 //! free space, the map's walls and obstacles, and the specks and noise
 //! between them that a chord crosses ([`outside_pixels`],
-//! [`classifier`]).
+//! [`classifier`]), and the obstacles the regions took in that narrow a
+//! doorway line to its clear part ([`obstacle_in_regions`]).
 
 use super::furniture::Islands;
 use crate::grid::{Cell, OccupancyGrid};
@@ -31,17 +32,15 @@ pub(crate) enum Pixel {
 
 /// What each pixel is to a chord: free where `labels` is non-zero,
 /// elsewhere what `outside` says (a wall with `None`), and a wall beyond
-/// the image (see [`door_span`]).
+/// the image (see [`door_span`](super::doorway::door_span)).
 pub(super) fn classifier<'a>(
     labels: &'a Labels,
     outside: Option<&'a [Pixel]>,
 ) -> impl Fn(i64, i64) -> Pixel + 'a {
-    let (w, h) = (i64::from(labels.width), i64::from(labels.height));
     move |x: i64, y: i64| {
-        if x < 0 || y < 0 || x >= w || y >= h {
+        let Some(i) = index_in(labels, x, y) else {
             return Pixel::Wall;
-        }
-        let i = (y * w + x) as usize;
+        };
         if labels.data[i] != 0 {
             return Pixel::Free;
         }
@@ -50,6 +49,28 @@ pub(super) fn classifier<'a>(
             Some(told) => told,
         }
     }
+}
+
+/// Whether pixel `(x, y)` is an obstacle the regions took in: labelled in
+/// `labels`, yet an occupied cell that is no speck in `outside` (see
+/// [`Pixel::Obstacle`]). False without `outside` and beyond the image.
+pub(super) fn obstacle_in_regions<'a>(
+    labels: &'a Labels,
+    outside: Option<&'a [Pixel]>,
+) -> impl Fn(i64, i64) -> bool + 'a {
+    move |x: i64, y: i64| {
+        index_in(labels, x, y).is_some_and(|i| {
+            labels.data[i] != 0
+                && outside.is_some_and(|o| o.get(i).copied() == Some(Pixel::Obstacle))
+        })
+    }
+}
+
+/// The row-major index of pixel `(x, y)` in `labels`; None beyond the
+/// image.
+fn index_in(labels: &Labels, x: i64, y: i64) -> Option<usize> {
+    let (w, h) = (i64::from(labels.width), i64::from(labels.height));
+    (x >= 0 && y >= 0 && x < w && y < h).then(|| (y * w + x) as usize)
 }
 
 /// What each pixel outside the regions is to a doorway chord:
@@ -233,5 +254,23 @@ mod tests {
         // Six occupied cells are fewer than seven: noise, crossed.
         let whole = span(7);
         assert!((line_length(&whole) - 14.0).abs() < 0.6, "{whole:?}");
+    }
+
+    #[test]
+    fn only_obstacles_inside_the_regions_block() {
+        // Labels 3 × 1: labelled, labelled, unlabelled; all occupied.
+        let labels = Labels {
+            width: 3,
+            height: 1,
+            data: vec![1, 1, 0],
+            count: 1,
+        };
+        let outside = [Pixel::Obstacle, Pixel::Wall, Pixel::Obstacle];
+        let blocked = obstacle_in_regions(&labels, Some(&outside));
+        assert!(blocked(0, 0), "an obstacle the regions took in");
+        assert!(!blocked(1, 0), "a wall's halo inside the regions");
+        assert!(!blocked(2, 0), "outside the regions the chord decides");
+        assert!(!blocked(-1, 0) && !blocked(3, 0));
+        assert!(!obstacle_in_regions(&labels, None)(0, 0));
     }
 }

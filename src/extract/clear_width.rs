@@ -8,30 +8,11 @@
 //! from jamb to jamb. The opening is where the chords say; its width is
 //! what is left of the line between the obstacles (occupied cells no
 //! bigger than a speck are crossed, see
-//! [`outside_pixels`](super::chord_pixels::outside_pixels)).
-
-use super::chord_pixels::Pixel;
-use crate::imaging::Labels;
+//! [`outside_pixels`](super::chord_pixels::outside_pixels); the obstacles
+//! are [`obstacle_in_regions`](super::chord_pixels::obstacle_in_regions)).
 
 /// Sampling step along the line, pixels.
 const STEP: f64 = 0.25;
-
-/// Whether pixel `(x, y)` is an obstacle the regions took in: labelled in
-/// `labels`, yet an occupied cell that is no speck in `outside` (see
-/// [`Pixel::Obstacle`]). False without `outside` and beyond the image.
-pub(super) fn obstacle_in_regions<'a>(
-    labels: &'a Labels,
-    outside: Option<&'a [Pixel]>,
-) -> impl Fn(i64, i64) -> bool + 'a {
-    let (w, h) = (i64::from(labels.width), i64::from(labels.height));
-    move |x: i64, y: i64| {
-        if x < 0 || y < 0 || x >= w || y >= h {
-            return false;
-        }
-        let i = (y * w + x) as usize;
-        labels.data[i] != 0 && outside.is_some_and(|o| o.get(i).copied() == Some(Pixel::Obstacle))
-    }
-}
 
 /// The longest stretch of `line` (pixel coordinates) that no pixel
 /// `blocked` says is an obstacle touches, sampled every quarter pixel:
@@ -120,23 +101,5 @@ mod tests {
         let part = clear_part(&|x, _| x < 5, line);
         let expected = 25.0 * (17.0 - 5.0) / 15.0;
         assert!((length(part) - expected).abs() <= 0.5, "{part:?}");
-    }
-
-    #[test]
-    fn only_obstacles_inside_the_regions_block() {
-        // Labels 3 × 1: labelled, labelled, unlabelled; all occupied.
-        let labels = Labels {
-            width: 3,
-            height: 1,
-            data: vec![1, 1, 0],
-            count: 1,
-        };
-        let outside = [Pixel::Obstacle, Pixel::Wall, Pixel::Obstacle];
-        let blocked = obstacle_in_regions(&labels, Some(&outside));
-        assert!(blocked(0, 0), "an obstacle the regions took in");
-        assert!(!blocked(1, 0), "a wall's halo inside the regions");
-        assert!(!blocked(2, 0), "outside the regions the chord decides");
-        assert!(!blocked(-1, 0) && !blocked(3, 0));
-        assert!(!obstacle_in_regions(&labels, None)(0, 0));
     }
 }

@@ -13,8 +13,9 @@
 //! speck (a stretch of uncertain pixels up to [`SpanLimits::noise_run`]
 //! long with free space after it, see [`Pixel`]); it ends at a wall.
 
+use super::chord_pixels::obstacle_in_regions;
 use super::chord_pixels::{Pixel, classifier};
-use super::clear_width::{clear_part, obstacle_in_regions};
+use super::clear_width::clear_part;
 use crate::imaging::Labels;
 
 /// Limits of [`door_span`], in pixels.
@@ -131,7 +132,7 @@ impl DoorSpan {
 /// (on both sides) are `pixels`, in the free space of `labels` (non-zero
 /// = free): the throat nearest the border's centre and the opening
 /// through the wall around it. `outside` says what each pixel outside
-/// `labels` is to a chord (see [`outside_pixels`]); with `None` every
+/// `labels` is to a chord (see [`outside_pixels`](super::chord_pixels::outside_pixels)); with `None` every
 /// pixel outside `labels` is a wall. None when the border crosses no
 /// bounded opening (no chord through its centre shorter than `max_width`).
 pub(crate) fn door_span(
