@@ -1,8 +1,8 @@
 //! What a doorway chord meets at each pixel ([`Pixel`]): the regions'
-//! free space, the map's walls and obstacles, and the specks and noise
-//! between them that a chord crosses ([`outside_pixels`],
-//! [`classifier`]), and the obstacles the regions took in that narrow a
-//! doorway line to its clear part ([`obstacle_in_regions`]).
+//! free space, the map's walls, and the specks and noise between them
+//! that a chord crosses ([`outside_pixels`], [`classifier`]); and which
+//! obstacles inside the regions narrow a doorway line to its clear part
+//! ([`obstacle_in_regions`]).
 
 use super::furniture::Islands;
 use crate::grid::{Cell, OccupancyGrid};
@@ -22,7 +22,8 @@ pub(crate) enum Pixel {
     /// map.
     Wall,
     /// Only in [`outside_pixels`]' answer: an occupied cell that is no
-    /// speck. Outside the regions the classifier calls it a
+    /// speck, in a piece of at least `obstacle_min` occupied cells.
+    /// Outside the regions the classifier calls it a
     /// [`Pixel::Wall`]; inside them (an obstacle the furniture filter let
     /// the spaces take in) chords run through it, and it narrows the
     /// doorway line to its clear part
@@ -73,12 +74,13 @@ fn index_in(labels: &Labels, x: i64, y: i64) -> Option<usize> {
     (x >= 0 && y >= 0 && x < w && y < h).then(|| (y * w + x) as usize)
 }
 
-/// What each pixel outside the regions is to a doorway chord:
+/// What each pixel outside the regions is to a doorway chord (and, for
+/// [`Pixel::Obstacle`], inside them):
 /// - [`Pixel::Obstacle`]: an occupied cell of an 8-connected piece of
 ///   occupied cells with at least `obstacle_min` cells, but for a speck's;
-/// - [`Pixel::Wall`]: another occupied cell, or a cell next to one (8-neighbours:
-///   the uncertain halo of a scanned wall, a blurred drawn wall; a 3 × 3
-///   dilation, by rows then by columns);
+/// - [`Pixel::Wall`]: another occupied cell, or a cell next to an occupied
+///   one (8-neighbours: the uncertain halo of a scanned wall, a blurred
+///   drawn wall; a 3 × 3 dilation, by rows then by columns);
 /// - [`Pixel::Free`]: a cell of a **speck**, an 8-connected piece of
 ///   non-free cells standing free (off the image's edge) and at most
 ///   `speck_px` across on both sides (a stray return beside a jamb, a scan

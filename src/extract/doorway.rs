@@ -13,8 +13,7 @@
 //! speck (a stretch of uncertain pixels up to [`SpanLimits::noise_run`]
 //! long with free space after it, see [`Pixel`]); it ends at a wall.
 
-use super::chord_pixels::obstacle_in_regions;
-use super::chord_pixels::{Pixel, classifier};
+use super::chord_pixels::{Pixel, classifier, obstacle_in_regions};
 use super::clear_width::clear_part;
 use crate::imaging::Labels;
 
@@ -132,9 +131,12 @@ impl DoorSpan {
 /// (on both sides) are `pixels`, in the free space of `labels` (non-zero
 /// = free): the throat nearest the border's centre and the opening
 /// through the wall around it. `outside` says what each pixel outside
-/// `labels` is to a chord (see [`outside_pixels`](super::chord_pixels::outside_pixels)); with `None` every
-/// pixel outside `labels` is a wall. None when the border crosses no
-/// bounded opening (no chord through its centre shorter than `max_width`).
+/// `labels` is to a chord (see
+/// [`outside_pixels`](super::chord_pixels::outside_pixels)); with `None`
+/// every pixel outside `labels` is a wall. The doorway line is the clear
+/// part of the opening's (see [`DoorSpan::clear_of`]). None when the
+/// border crosses no bounded opening (no chord through its centre shorter
+/// than `max_width`).
 pub(crate) fn door_span(
     labels: &Labels,
     outside: Option<&[Pixel]>,
@@ -255,6 +257,8 @@ fn exit_distance(
         }
         match (pixel(ix, iy), noise) {
             (Pixel::Free, _) => noise = None,
+            // (The classifier calls an obstacle a wall; a hand-made
+            // classifier may not.)
             (Pixel::Wall | Pixel::Obstacle, run) => return Some(run.unwrap_or(t)),
             (Pixel::Noise, None) => noise = Some(t),
             (Pixel::Noise, Some(at)) if t - at >= noise_run - 1e-9 => return Some(at),
