@@ -12,8 +12,7 @@
 
 use std::collections::VecDeque;
 
-use super::chord_pixels::obstacle_in_regions;
-use super::chord_pixels::{Pixel, classifier};
+use super::chord_pixels::{Pixel, classifier, obstacle_in_regions};
 use super::doors::Border;
 use super::doorway::{DoorSpan, SpanLimits, Throat, border_frame, span, throat};
 use crate::imaging::Labels;
