@@ -4,7 +4,8 @@
 //! `FloorPlanParams::clutter`) and turned (the plain, furnished and
 //! cluttered buildings at a heading spread over 3°–87°:
 //! `sim::spread_heading_deg`) and angled (plain buildings with wings at
-//! 25°–65° to the first: `FloorPlanParams::non_manhattan`), and prints a line per building and
+//! 25°–65° to the first: `FloorPlanParams::non_manhattan`) and houses (an
+//! open-plan living area with bedrooms off it: `FloorPlanParams::house`), and prints a line per building and
 //! the means per group. `kinds` is corridors and rooms labelled as the plan
 //! has them / corridors labelled room and rooms labelled corridor. The regression guard over the same figures is the
 //! integration test `sim_accuracy` (tests/it/sim_accuracy.rs).
@@ -17,7 +18,7 @@ use std::time::Instant;
 
 use nrgdb::eval::{SimulatedScore, evaluate_simulated};
 use nrgdb::extract::ExtractParams;
-use nrgdb::sim::SimParams;
+use nrgdb::sim::{FloorPlanParams, SimParams};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
@@ -40,19 +41,23 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "building", "R", "P", "doorR", "doorP", "connR", "connP", "rooms", "kinds", "ms"
     );
     // (group, prefix of its buildings' lines, furnished, cluttered, turned,
-    // wings at other angles)
-    for (group, prefix, furnished, cluttered, turned, angled) in [
-        ("plain", "P", false, false, false, false),
-        ("furnished", "F", true, false, false, false),
-        ("cluttered", "C", false, true, false, false),
-        ("turned", "T", false, false, true, false),
-        ("furn-turned", "FT", true, false, true, false),
-        ("clut-turned", "CT", false, true, true, false),
-        ("angled", "A", false, false, false, true),
+    // wings at other angles, a house)
+    for (group, prefix, furnished, cluttered, turned, angled, house) in [
+        ("plain", "P", false, false, false, false, false),
+        ("furnished", "F", true, false, false, false, false),
+        ("cluttered", "C", false, true, false, false, false),
+        ("turned", "T", false, false, true, false, false),
+        ("furn-turned", "FT", true, false, true, false, false),
+        ("clut-turned", "CT", false, true, true, false, false),
+        ("angled", "A", false, false, false, true, false),
+        ("house", "H", true, false, false, false, true),
     ] {
         let mut scores = Vec::new();
         for seed in 1..=count {
             let mut sim = SimParams::new(seed);
+            if house {
+                sim.plan = FloorPlanParams::house(seed);
+            }
             sim.plan.furniture = furnished;
             sim.plan.clutter = cluttered;
             sim.plan.non_manhattan = angled;

@@ -34,6 +34,11 @@ pub struct Args {
     /// door-wide aisles, desk clusters with chairs, a counter and a table.
     #[arg(long)]
     pub clutter: bool,
+    /// A furnished house instead of an office floor: an open-plan living
+    /// area (sofa, kitchen counter, dining table) with bedrooms and
+    /// bathrooms opening off it.
+    #[arg(long)]
+    pub house: bool,
     /// Turn the whole building by this many degrees (counter-clockwise):
     /// a robot's map seldom lies square to the walls.
     #[arg(
@@ -53,7 +58,10 @@ pub struct Args {
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     let mut params = SimParams::new(args.seed);
     params.resolution_m = args.resolution;
-    params.plan.furniture = args.furniture;
+    if args.house {
+        params.plan = nrgdb::sim::FloorPlanParams::house(args.seed);
+    }
+    params.plan.furniture = args.furniture || args.house;
     params.plan.non_manhattan = args.non_manhattan;
     params.plan.clutter = args.clutter;
     params.plan.heading_deg = args.heading;
@@ -91,7 +99,11 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
         out,
         "simulated seed {}: {}, {}, {}, {}",
         args.seed,
-        count(p.corridors.len(), "corridor", "corridors"),
+        if p.open_plan {
+            count(p.corridors.len(), "living area", "living areas")
+        } else {
+            count(p.corridors.len(), "corridor", "corridors")
+        },
         count(p.rooms.len(), "room", "rooms"),
         count(p.doors.len(), "door", "doors"),
         count(p.furniture.len(), "furniture box", "furniture boxes")

@@ -27,6 +27,8 @@ pub struct SimulatedScore {
     /// Whether wings meet at other angles than a quarter turn
     /// (`FloorPlanParams::non_manhattan`).
     pub non_manhattan: bool,
+    /// Whether the building is a house (`FloorPlanParams::house`).
+    pub house: bool,
     /// Rooms in the true plan.
     pub true_rooms: usize,
     /// The scores against the plan's ground truth.
@@ -53,20 +55,30 @@ pub fn evaluate_simulated(
     scratch: &Path,
 ) -> Result<SimulatedScore, EvalError> {
     let building = simulate(sim)?;
-    let true_rooms = building.plan.rooms.len();
+    // A house's living area is one of its rooms.
+    let true_rooms = building.plan.rooms.len()
+        + usize::from(building.plan.open_plan) * building.plan.corridors.len();
     let files = write_simulation(scratch, &building)?;
     let grid = load_map(&files.yaml, &LoadOptions::default())?;
     let gt = load_ground_truth(&files.gt_png, &grid)?;
     let x = extract(&grid, params)?;
+    let plan = &building.plan;
+    let kinds = if plan.open_plan {
+        let rooms: Vec<_> = plan.corridors.iter().chain(&plan.rooms).cloned().collect();
+        kind_score(&x.nrg, &[], &rooms)
+    } else {
+        kind_score(&x.nrg, &plan.corridors, &plan.rooms)
+    };
     Ok(SimulatedScore {
         seed: sim.plan.seed,
         furnished: sim.plan.furniture,
         cluttered: sim.plan.clutter,
         heading_deg: sim.plan.heading_deg,
         non_manhattan: sim.plan.non_manhattan,
+        house: sim.plan.house,
         true_rooms,
         evaluation: evaluate(&gt, &x, grid.resolution),
-        kinds: kind_score(&x.nrg, &building.plan.corridors, &building.plan.rooms),
+        kinds,
     })
 }
 

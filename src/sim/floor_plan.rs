@@ -43,6 +43,12 @@ pub struct FloorPlanParams {
     /// lies square to the walls (0: walls along the map's axes). Only the
     /// geometry turns; the same seed gives the same building.
     pub heading_deg: f64,
+    /// A house instead of an office floor: one open-plan living area
+    /// (living room, kitchen and dining in one space, with a sofa, a
+    /// counter and a dining table with chairs; see `sim::house`) with the
+    /// bedrooms and bathrooms opening off it. The living area is a room in
+    /// the truth. [`FloorPlanParams::house`] sets the sizes of a house.
+    pub house: bool,
 }
 
 impl FloorPlanParams {
@@ -62,6 +68,33 @@ impl FloorPlanParams {
             non_manhattan: false,
             clutter: false,
             heading_deg: 0.0,
+            house: false,
+        }
+    }
+
+    /// A furnished house: one open-plan living area 8-12 m long and
+    /// 4.6-6 m deep, 2.8-4.5 m wide bedrooms and bathrooms 3-4.5 m deep on
+    /// both sides of it through 0.75-1 m doors, furniture boxes in them.
+    ///
+    /// ```
+    /// use nrgdb::sim::{FloorPlan, FloorPlanParams};
+    /// let plan = FloorPlan::generate(&FloorPlanParams::house(4))?;
+    /// assert_eq!(plan.corridors.len(), 1, "one living area");
+    /// assert!(plan.open_plan && plan.rooms.len() >= 4);
+    /// # Ok::<(), nrgdb::sim::SimError>(())
+    /// ```
+    pub fn house(seed: u64) -> FloorPlanParams {
+        FloorPlanParams {
+            wings: (1, 1),
+            corridor_length_m: (8.0, 12.0),
+            corridor_width_m: (4.6, 6.0),
+            room_width_m: (2.8, 4.5),
+            room_depth_m: (3.0, 4.5),
+            door_width_m: (0.75, 1.0),
+            second_door_probability: 0.15,
+            furniture: true,
+            house: true,
+            ..FloorPlanParams::new(seed)
         }
     }
 
@@ -200,6 +233,9 @@ pub struct FloorPlan {
     pub route: Vec<Point>,
     /// Wall thickness in metres.
     pub wall_thickness_m: f64,
+    /// Whether the corridors are a house's open-plan living area
+    /// ([`FloorPlanParams::house`]): rooms in the truth.
+    pub open_plan: bool,
 }
 
 impl FloorPlan {
@@ -274,7 +310,11 @@ impl FloorPlan {
         };
         let mut anchors = Vec::new();
         for (i, r) in self.corridors.iter().enumerate() {
-            anchors.push(push(SpaceKind::Corridor, format!("corridor {}", i + 1), r));
+            anchors.push(if self.open_plan {
+                push(SpaceKind::Room, format!("living area {}", i + 1), r)
+            } else {
+                push(SpaceKind::Corridor, format!("corridor {}", i + 1), r)
+            });
         }
         for (i, r) in self.rooms.iter().enumerate() {
             anchors.push(push(SpaceKind::Room, format!("room {}", i + 1), r));

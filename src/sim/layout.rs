@@ -1,7 +1,8 @@
 //! The floor-plan generator: corridor wings that turn left off each other,
 //! rooms packed along both sides of each corridor (rejected when they would
 //! come closer than a wall's thickness to anything), doors, second doors,
-//! furniture boxes and the robot's route.
+//! furniture boxes and the robot's route. A house is one such wing, its
+//! corridor a living area furnished by `house.rs`.
 
 use std::f64::consts::FRAC_PI_2;
 
@@ -48,7 +49,7 @@ impl Frame {
 /// A corridor wing: the corridor occupies local `x in [0, len]`, `y in [-w, 0]`.
 pub(super) struct Wing {
     pub(super) frame: Frame,
-    len: f64,
+    pub(super) len: f64,
 }
 
 /// A placed room in its wing's frame, for furniture and the route.
@@ -84,7 +85,9 @@ fn layout(p: &FloorPlanParams) -> FloorPlan {
     let t = p.wall_thickness_m;
     let w = rng.range(p.corridor_width_m.0, p.corridor_width_m.1);
     let mut n_wings = rng.int(p.wings.0, p.wings.1);
-    if p.non_manhattan {
+    if p.house {
+        n_wings = 1;
+    } else if p.non_manhattan {
         n_wings = n_wings.max(2);
     }
     let mut plan = FloorPlan {
@@ -95,6 +98,7 @@ fn layout(p: &FloorPlanParams) -> FloorPlan {
         furniture: Vec::new(),
         route: Vec::new(),
         wall_thickness_m: t,
+        open_plan: p.house,
     };
     let len0 = rng.range(p.corridor_length_m.0, p.corridor_length_m.1);
     let first = Frame::new([0.0, 0.0], p.heading_deg.to_radians());
@@ -238,7 +242,20 @@ fn layout(p: &FloorPlanParams) -> FloorPlan {
     } else {
         Vec::new()
     };
-    plan.route = route(&plan, &wings, &mut wing_doors, w, &detours);
+    // A house's living area: the robot drives its middle line between the
+    // sofa and the counter.
+    let span = if p.house {
+        Some(super::house::furnish_living(
+            &mut plan,
+            &wings[0],
+            w,
+            &wing_doors[0],
+            &mut rng,
+        ))
+    } else {
+        None
+    };
+    plan.route = route(&plan, &wings, &mut wing_doors, w, &detours, span);
     plan
 }
 
@@ -287,17 +304,29 @@ fn furnish(plan: &mut FloorPlan, wings: &[Wing], slots: &[Slot], rng: &mut Split
 /// The route: along each corridor's centre line, with a detour through
 /// every corridor door to its room's centre and back; from the centre of
 /// room `r` also through `detours[r]` (the aisles of its shelves) and back.
+/// With `span`, the only wing's middle line runs from `span.0` to `span.1`
+/// (a house's living area, clear of its furniture).
 fn route(
     plan: &FloorPlan,
     wings: &[Wing],
     wing_doors: &mut [Vec<(f64, usize)>],
     w: f64,
     detours: &[Vec<Point>],
+    span: Option<(f64, f64)>,
 ) -> Vec<Point> {
     let mut pts = Vec::new();
     let last = wings.len().saturating_sub(1);
     for (k, wing) in wings.iter().enumerate() {
-        let start = if k == 0 { 0.4 } else { 0.0 };
+        let start = match span {
+            Some((start, _)) => start,
+            None if k == 0 => 0.4,
+            None => 0.0,
+        };
+        let end = match span {
+            Some((_, end)) => end,
+            None if k == last => wing.len - 0.4,
+            None => wing.len,
+        };
         pts.push(wing.frame.at(start, -w / 2.0));
         wing_doors[k].sort_by(|a, b| a.0.total_cmp(&b.0));
         for &(dx, di) in &wing_doors[k] {
@@ -309,7 +338,9 @@ fn route(
                 continue;
             };
             let centre = crate::model::polygon_centroid(room).unwrap_or(room[0]);
-            let c = wing.frame.at(dx.clamp(start, wing.len), -w / 2.0);
+            let c = wing
+                .frame
+                .at(dx.clamp(start, span.map_or(wing.len, |s| s.1)), -w / 2.0);
             pts.extend([c, door.centre(), centre]);
             if let Some(detour) = detours.get(r).filter(|d| !d.is_empty()) {
                 pts.extend(detour.iter().copied());
@@ -317,7 +348,6 @@ fn route(
             }
             pts.extend([door.centre(), c]);
         }
-        let end = if k == last { wing.len - 0.4 } else { wing.len };
         pts.push(wing.frame.at(end, -w / 2.0));
     }
     pts

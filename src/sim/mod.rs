@@ -1,7 +1,8 @@
 //! Simulated buildings and occupancy mapping (the paper's data acquisition,
 //! Section 4.1 and Eq. 3), without ROS.
 //!
-//! Owns the floor-plan generator ([`FloorPlan`], exact ground truth as an
+//! Owns the floor-plan generator ([`FloorPlan`]: office floors, and houses
+//! with an open-plan living area, [`FloorPlanParams::house`]; exact ground truth as an
 //! [`Nrg`](crate::model::Nrg) and an IPA-style `_gt.png`), the LiDAR
 //! simulation ([`simulate_scans`]), the known-pose log-odds mapper
 //! ([`LogOddsMap`]), the CARMEN log reader ([`read_carmen`]) and the ROS map
@@ -15,6 +16,7 @@ mod clutter;
 mod error;
 mod floor_plan;
 mod ground_truth;
+mod house;
 mod layout;
 mod lidar;
 mod log_odds;

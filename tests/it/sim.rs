@@ -168,6 +168,39 @@ fn sim_cli_writes_and_names_its_files() {
     );
 }
 
+/// `--house`: one living area, a room in the truth, furnished, with the
+/// bedrooms off it through doors.
+#[test]
+fn sim_cli_house_is_a_living_area_with_rooms_off_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = nrgdb(
+        &["simulate", "--house", "--seed", "5", "--out", "h"],
+        dir.path(),
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("1 living area,"), "{text}");
+    let truth: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("h/truth.json")).unwrap())
+            .unwrap();
+    let spaces = truth["spaces"].as_array().unwrap();
+    let kind = |k: &str| spaces.iter().filter(|s| s["kind"] == k).count();
+    assert_eq!(kind("corridor"), 0, "{text}");
+    assert!(
+        kind("room") >= 5 && kind("door") >= kind("room") - 1,
+        "{text}"
+    );
+    let living = spaces
+        .iter()
+        .find(|s| s["name"] == "living area 1")
+        .expect("the living area");
+    assert_eq!(living["kind"], "room");
+}
+
 #[test]
 fn sim_cli_rejects_bad_resolution_without_output() {
     let dir = tempfile::tempdir().unwrap();

@@ -1,6 +1,6 @@
-//! The accuracy benchmark on simulated buildings as a regression guard: 250
-//! buildings (seeds 1..=50, each plain, furnished, cluttered, turned and
-//! angled) are simulated,
+//! The accuracy benchmark on simulated buildings as a regression guard: 300
+//! buildings (seeds 1..=50, each plain, furnished, cluttered, turned,
+//! angled and a house) are simulated,
 //! extracted and scored, and the means must stay at or above floors set a
 //! little under the figures measured on 2026-11-23 (`cargo run --release
 //! --example sim_accuracy -- --count 50` prints the same table):
@@ -52,6 +52,17 @@
 //! wings a gap needs wall support along its own direction: 97.45 / 99.94,
 //! 99.62 / 99.88, 99.66 / 100 and 2.
 //!
+//! The house group (2026-12-06, issue 20: "simulated furnished houses";
+//! `FloorPlanParams::house`) is an open-plan living area 8-12 m by
+//! 4.6-6 m with a sofa, a kitchen counter and a dining table with chairs,
+//! the bedrooms and bathrooms off it through 0.75-1 m doors, furniture
+//! boxes in them. It measured rooms 86.78 / 99.96, doors 99.00 / 97.93,
+//! connections 99.00 / 100 and 1 room (of about 280) labelled corridor;
+//! every living area was labelled a room. Room recall is the furnished
+//! group's fault, in a building of five or six rooms: the floor behind
+//! boxes near a back wall is left out of its room, and a box's shadow
+//! sometimes cuts a room with a door.
+//!
 //! Everything is deterministic in the seeds, so a drop below a floor is a
 //! real change of behaviour, not noise. Needs no shared data.
 
@@ -59,22 +70,24 @@ use std::sync::Mutex;
 
 use nrgdb::eval::{SimulatedScore, evaluate_simulated};
 use nrgdb::extract::ExtractParams;
-use nrgdb::sim::{SimParams, spread_heading_deg};
+use nrgdb::sim::{FloorPlanParams, SimParams, spread_heading_deg};
 
 const SEEDS: u64 = 50;
 
-/// A group of buildings: (furnished, cluttered, turned, angled).
-type Group = (bool, bool, bool, bool);
+/// A group of buildings: (furnished, cluttered, turned, angled, house).
+type Group = (bool, bool, bool, bool, bool);
 
-const PLAIN: Group = (false, false, false, false);
-const FURNISHED: Group = (true, false, false, false);
-const CLUTTERED: Group = (false, true, false, false);
-const TURNED: Group = (false, false, true, false);
-const ANGLED: Group = (false, false, false, true);
+const PLAIN: Group = (false, false, false, false, false);
+const FURNISHED: Group = (true, false, false, false, false);
+const CLUTTERED: Group = (false, true, false, false, false);
+const TURNED: Group = (false, false, true, false, false);
+const ANGLED: Group = (false, false, false, true, false);
+const HOUSE: Group = (true, false, false, false, true);
+const GROUPS: [Group; 6] = [PLAIN, FURNISHED, CLUTTERED, TURNED, ANGLED, HOUSE];
 
 fn run_all() -> Vec<SimulatedScore> {
     let jobs: Vec<(u64, Group)> = (1..=SEEDS)
-        .flat_map(|seed| [PLAIN, FURNISHED, CLUTTERED, TURNED, ANGLED].map(|g| (seed, g)))
+        .flat_map(|seed| GROUPS.map(|g| (seed, g)))
         .collect();
     let next = Mutex::new(0usize);
     let results = Mutex::new(Vec::new());
@@ -90,8 +103,11 @@ fn run_all() -> Vec<SimulatedScore> {
                         jobs.get(*n - 1).copied()
                     };
                     let Some((seed, group)) = job else { break };
-                    let (furnished, cluttered, turned, angled) = group;
+                    let (furnished, cluttered, turned, angled, house) = group;
                     let mut sim = SimParams::new(seed);
+                    if house {
+                        sim.plan = FloorPlanParams::house(seed);
+                    }
                     sim.plan.furniture = furnished;
                     sim.plan.clutter = cluttered;
                     sim.plan.non_manhattan = angled;
@@ -113,9 +129,9 @@ fn mean(scores: &[&SimulatedScore], f: impl Fn(&SimulatedScore) -> f64) -> f64 {
 }
 
 #[test]
-fn simulated_buildings_plain_furnished_cluttered_turned_and_angled_stay_above_the_floors() {
+fn simulated_buildings_plain_furnished_cluttered_turned_angled_and_houses_stay_above_the_floors() {
     let all = run_all();
-    assert_eq!(all.len(), 5 * SEEDS as usize);
+    assert_eq!(all.len(), GROUPS.len() * SEEDS as usize);
     // (group, room recall, room precision, door recall, door precision,
     // connection recall, connection precision)
     let floors = [
@@ -124,6 +140,7 @@ fn simulated_buildings_plain_furnished_cluttered_turned_and_angled_stay_above_th
         (CLUTTERED, 85.5, 99.5, 99.5, 98.8, 99.5, 99.5),
         (TURNED, 97.3, 99.5, 99.5, 99.5, 99.5, 99.5),
         (ANGLED, 97.2, 99.8, 99.4, 99.7, 99.4, 99.5),
+        (HOUSE, 86.5, 99.5, 98.5, 97.5, 98.5, 99.5),
     ];
     let mut report = String::new();
     let mut failed = false;
@@ -133,6 +150,7 @@ fn simulated_buildings_plain_furnished_cluttered_turned_and_angled_stay_above_th
             s.cluttered,
             s.heading_deg != 0.0,
             s.non_manhattan,
+            s.house,
         ) == g
     };
     for (g, r, p, dr, dp, cr, cp) in floors {
@@ -147,7 +165,7 @@ fn simulated_buildings_plain_furnished_cluttered_turned_and_angled_stay_above_th
         ];
         let want = [r, p, dr, dp, cr, cp];
         report += &format!(
-            "(furnished, cluttered, turned, angled)={g:?}: got {got:.2?}, floors {want:?}\n"
+            "(furnished, cluttered, turned, angled, house)={g:?}: got {got:.2?}, floors {want:?}\n"
         );
         failed |= got.iter().zip(&want).any(|(g, w)| g < w);
     }
@@ -167,13 +185,15 @@ fn simulated_buildings_plain_furnished_cluttered_turned_and_angled_stay_above_th
         (CLUTTERED, 2, 14, 50),
         (TURNED, 2, 2, 50),
         (ANGLED, 2, 4, 42),
+        (HOUSE, 0, 2, 0),
     ];
     for (g, corridors_as_rooms, rooms_as_corridors, corridors) in label_bounds {
         let mut kinds = nrgdb::eval::KindScore::default();
         for s in all.iter().filter(|s| in_group(s, g)) {
             kinds.add(&s.kinds);
         }
-        report += &format!("(furnished, cluttered, turned, angled)={g:?}: labels {kinds:?}\n");
+        report +=
+            &format!("(furnished, cluttered, turned, angled, house)={g:?}: labels {kinds:?}\n");
         failed |= kinds.corridor_as_room > corridors_as_rooms
             || kinds.room_as_corridor > rooms_as_corridors
             || kinds.corridor_as_corridor < corridors;
