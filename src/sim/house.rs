@@ -19,8 +19,9 @@ const DOOR_CLEARANCE_M: f64 = 0.8;
 const ROUTE_CLEARANCE_M: f64 = 0.45;
 /// Distance between two pieces of furniture.
 const PIECE_GAP_M: f64 = 0.3;
-/// Depth of the kitchen counter and of the sofa.
+/// Depth of the kitchen counter.
 const COUNTER_DEPTH_M: f64 = 0.6;
+/// Depth of the sofa.
 const SOFA_DEPTH_M: f64 = 0.9;
 
 /// Furnishes the living area of `wing` (local `x` in `0..len` along it,
