@@ -136,10 +136,21 @@ fn nrgdb(args: &[&str], cwd: &Path) -> std::process::Output {
         .unwrap()
 }
 
+/// Runs `nrgdb` in `cwd`, asserts it succeeded, and returns its stdout.
+fn nrgdb_ok(args: &[&str], cwd: &Path) -> String {
+    let out = nrgdb(args, cwd);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
 #[test]
 fn sim_cli_writes_and_names_its_files() {
     let dir = tempfile::tempdir().unwrap();
-    let out = nrgdb(
+    let text = nrgdb_ok(
         &[
             "simulate",
             "--seed",
@@ -151,12 +162,6 @@ fn sim_cli_writes_and_names_its_files() {
         ],
         dir.path(),
     );
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let text = String::from_utf8_lossy(&out.stdout);
     for f in ["map.yaml", "map.pgm", "map_gt.png", "truth.json"] {
         assert!(dir.path().join("o").join(f).is_file(), "{f}");
         assert!(text.contains(f), "{text}");
@@ -173,16 +178,10 @@ fn sim_cli_writes_and_names_its_files() {
 #[test]
 fn sim_cli_house_is_a_living_area_with_rooms_off_it() {
     let dir = tempfile::tempdir().unwrap();
-    let out = nrgdb(
+    let text = nrgdb_ok(
         &["simulate", "--house", "--seed", "5", "--out", "h"],
         dir.path(),
     );
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("1 living area,"), "{text}");
     let truth: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(dir.path().join("h/truth.json")).unwrap())
