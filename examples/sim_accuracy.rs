@@ -11,7 +11,7 @@
 //! integration test `sim_accuracy` (tests/it/sim_accuracy.rs).
 //!
 //! ```text
-//! cargo run --release --example sim_accuracy [-- --count 50 --params p.toml]
+//! cargo run --release --example sim_accuracy [-- --count 50 --params p.toml --group house]
 //! ```
 
 use std::time::Instant;
@@ -23,10 +23,12 @@ use nrgdb::sim::{FloorPlanParams, SimParams};
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
     let mut count = 50u64;
+    let mut only: Option<String> = None;
     let mut params = ExtractParams::default();
     while let Some(a) = args.next() {
         match a.as_str() {
             "--count" => count = args.next().unwrap_or_default().parse()?,
+            "--group" => only = args.next(),
             "--params" => {
                 params = ExtractParams::from_toml(&std::fs::read_to_string(
                     args.next().unwrap_or_default(),
@@ -52,6 +54,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         ("angled", "A", false, false, false, true, false),
         ("house", "H", true, false, false, false, true),
     ] {
+        if only.as_deref().is_some_and(|g| g != group) {
+            continue;
+        }
         let mut scores = Vec::new();
         for seed in 1..=count {
             let mut sim = SimParams::new(seed);

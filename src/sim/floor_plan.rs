@@ -30,6 +30,11 @@ pub struct FloorPlanParams {
     pub wall_thickness_m: f64,
     /// Probability that a room gets a second door.
     pub second_door_probability: f64,
+    /// Probability that a room's doorway onto the corridor (a house's
+    /// living area) is a wide opening instead of a door: 2-3.2 m, as far as
+    /// the room's width allows, as an alcove or a dining nook opens onto a
+    /// living room. 0 for office floors.
+    pub opening_probability: f64,
     /// Put boxes (furniture) into rooms, away from doors.
     pub furniture: bool,
     /// Turn wings by 25-65 degrees instead of 90 (non-Manhattan walls).
@@ -64,6 +69,7 @@ impl FloorPlanParams {
             door_width_m: (0.8, 1.6),
             wall_thickness_m: 0.2,
             second_door_probability: 0.3,
+            opening_probability: 0.0,
             furniture: false,
             non_manhattan: false,
             clutter: false,
@@ -74,7 +80,8 @@ impl FloorPlanParams {
 
     /// A furnished house: one open-plan living area 8-12 m long and
     /// 4.6-6 m deep, 2.8-4.5 m wide bedrooms and bathrooms 3-4.5 m deep on
-    /// both sides of it through 0.75-1 m doors, furniture boxes in them.
+    /// both sides of it through 0.75-1 m doors (one in five a 2-3.2 m
+    /// opening instead), furniture boxes in them.
     ///
     /// ```
     /// use nrgdb::sim::{FloorPlan, FloorPlanParams};
@@ -92,6 +99,7 @@ impl FloorPlanParams {
             room_depth_m: (3.0, 4.5),
             door_width_m: (0.75, 1.0),
             second_door_probability: 0.15,
+            opening_probability: 0.2,
             furniture: true,
             house: true,
             ..FloorPlanParams::new(seed)
@@ -114,6 +122,19 @@ impl FloorPlanParams {
                     value: format!("({lo}, {hi})"),
                     expected: "a finite range (min, max) with min <= max",
                     hint: "see FloorPlanParams::new for sensible values",
+                });
+            }
+        }
+        for (name, value) in [
+            ("second_door_probability", self.second_door_probability),
+            ("opening_probability", self.opening_probability),
+        ] {
+            if !(0.0..=1.0).contains(&value) {
+                return Err(SimError::BadParameter {
+                    name,
+                    value: value.to_string(),
+                    expected: "a probability in [0, 1]",
+                    hint: "0 never, 1 always",
                 });
             }
         }

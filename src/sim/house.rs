@@ -140,12 +140,14 @@ mod tests {
     use crate::sim::{FloorPlan, FloorPlanParams, separation_gap};
 
     /// Every house has its living area as a room of the truth, furniture
-    /// in it standing inside it, off the route and clear of the doors.
+    /// in it standing inside it, off the route and clear of the doors; some
+    /// rooms open onto it through openings.
     #[test]
     fn the_living_area_is_a_furnished_room_the_route_passes_clear_of() {
-        let mut tables = 0;
+        let (mut tables, mut openings) = (0, 0);
         for seed in 1..=20 {
             let plan = FloorPlan::generate(&FloorPlanParams::house(seed)).expect("plan");
+            openings += plan.doors.iter().filter(|d| d.width_m >= 2.0).count();
             let living = &plan.corridors[0];
             let truth = plan.truth().expect("truth");
             assert!(
@@ -177,5 +179,10 @@ mod tests {
             }
         }
         assert!(tables >= 10, "{tables} of 20 houses have a dining table");
+        // One room front in five opens through an opening, not a door.
+        assert!(
+            (5..=40).contains(&openings),
+            "{openings} openings in 20 houses"
+        );
     }
 }

@@ -12,6 +12,12 @@ use super::prng::SplitMix64;
 use super::separation::separation_gap;
 use crate::model::{Point, Ring};
 
+/// The narrowest opening in place of a door
+/// ([`FloorPlanParams::opening_probability`]).
+const OPENING_MIN_M: f64 = 2.0;
+/// The widest opening in place of a door.
+const OPENING_MAX_M: f64 = 3.2;
+
 /// A rigid local frame: `x` along the corridor, `y` to its left.
 #[derive(Debug, Clone, Copy)]
 pub(super) struct Frame {
@@ -185,10 +191,20 @@ fn layout(p: &FloorPlanParams) -> FloorPlan {
                 } else {
                     &[(x, x + rw)]
                 };
+                // An alcove open to the corridor along most of its width
+                // (asked for only when it may be, so that office floors
+                // draw the same numbers as before).
+                let open_front = !two_front
+                    && p.opening_probability > 0.0
+                    && rw - 0.6 >= OPENING_MIN_M
+                    && rng.chance(p.opening_probability);
                 for &(lo, hi) in halves {
-                    let dw = rng
-                        .range(p.door_width_m.0, p.door_width_m.1)
-                        .min(hi - lo - 0.6);
+                    let widths = if open_front {
+                        (OPENING_MIN_M, OPENING_MAX_M)
+                    } else {
+                        p.door_width_m
+                    };
+                    let dw = rng.range(widths.0, widths.1).min(hi - lo - 0.6);
                     let dx = rng.range(lo + 0.3 + dw / 2.0, hi - 0.3 - dw / 2.0);
                     let (a, b) = (dx - dw / 2.0, dx + dw / 2.0);
                     let corridor_face = if left { fy0 } else { fy1 };
@@ -376,6 +392,8 @@ mod tests {
             p.non_manhattan = seed % 3 == 0;
             v.push(p);
         }
+        // Houses, some with openings in place of doors.
+        v.extend((0..20).map(FloorPlanParams::house));
         v
     }
 
@@ -436,16 +454,25 @@ mod tests {
     fn doors_have_the_asked_width_and_furniture_stays_in_rooms() {
         for p in all_params() {
             let plan = layout(&p);
+            let within = |w: f64, (lo, hi): (f64, f64)| (lo - 1e-9..=hi + 1e-9).contains(&w);
             for d in &plan.doors {
+                let opening = p.opening_probability > 0.0
+                    && within(d.width_m, (OPENING_MIN_M, OPENING_MAX_M));
                 assert!(
-                    (0.8 - 1e-9..=1.6 + 1e-9).contains(&d.width_m),
+                    within(d.width_m, p.door_width_m) || opening,
                     "{}",
                     d.width_m
                 );
             }
+            // Furniture stands in rooms, and in a house's living area.
+            let spaces = if p.house {
+                plan.rooms.iter().chain(&plan.corridors).collect::<Vec<_>>()
+            } else {
+                plan.rooms.iter().collect()
+            };
             for b in &plan.furniture {
                 let c = crate::model::polygon_centroid(b).unwrap();
-                assert!(plan.rooms.iter().any(|r| point_in_ring(c, r)));
+                assert!(spaces.iter().any(|r| point_in_ring(c, r)));
             }
         }
     }

@@ -56,12 +56,17 @@
 //! `FloorPlanParams::house`) is an open-plan living area 8-12 m by
 //! 4.6-6 m with a sofa, a kitchen counter and a dining table with chairs,
 //! the bedrooms and bathrooms off it through 0.75-1 m doors, furniture
-//! boxes in them. It measured rooms 86.78 / 99.96, doors 99.00 / 97.93,
-//! connections 99.00 / 100 and 1 room (of about 280) labelled corridor;
-//! every living area was labelled a room. Room recall is the furnished
-//! group's fault, in a building of five or six rooms: the floor behind
-//! boxes near a back wall is left out of its room, and a box's shadow
-//! sometimes cuts a room with a door.
+//! boxes in them. With doors only it measured rooms 86.78 / 99.96, doors
+//! 99.00 / 97.93, connections 99.00 / 100 and 1 room (of about 280)
+//! labelled corridor: what furnished offices lose (the floor behind boxes
+//! near a back wall left out of its room, a box's shadow cutting a room
+//! with a door). With one room front in five a 2-3.2 m opening instead of
+//! a door (an alcove or a dining nook, as real houses have), it measures
+//! rooms 87.80 / 96.90, doors 85.20 / 99.33, connections 84.53 / 100 and 6
+//! rooms labelled corridor, each a living area: most of these openings are
+//! not found (issue 20's failure modes 1 and 2), so the alcoves join the
+//! living area, which grows long. The floors keep that, so that finding
+//! them shows here.
 //!
 //! Everything is deterministic in the seeds, so a drop below a floor is a
 //! real change of behaviour, not noise. Needs no shared data.
@@ -140,7 +145,7 @@ fn simulated_buildings_plain_furnished_cluttered_turned_angled_and_houses_stay_a
         (CLUTTERED, 85.5, 99.5, 99.5, 98.8, 99.5, 99.5),
         (TURNED, 97.3, 99.5, 99.5, 99.5, 99.5, 99.5),
         (ANGLED, 97.2, 99.8, 99.4, 99.7, 99.4, 99.5),
-        (HOUSE, 86.5, 99.5, 98.5, 97.5, 98.5, 99.5),
+        (HOUSE, 87.5, 96.5, 85.0, 99.0, 84.0, 99.5),
     ];
     let mut report = String::new();
     let mut failed = false;
@@ -185,7 +190,7 @@ fn simulated_buildings_plain_furnished_cluttered_turned_angled_and_houses_stay_a
         (CLUTTERED, 2, 14, 50),
         (TURNED, 2, 2, 50),
         (ANGLED, 2, 4, 42),
-        (HOUSE, 0, 2, 0),
+        (HOUSE, 0, 7, 0),
     ];
     for (g, corridors_as_rooms, rooms_as_corridors, corridors) in label_bounds {
         let mut kinds = nrgdb::eval::KindScore::default();
