@@ -36,8 +36,9 @@ pub struct Args {
     pub clutter: bool,
     /// A furnished house instead of an office floor: an open-plan living
     /// area (sofa, kitchen counter, dining table) with bedrooms and
-    /// bathrooms opening off it.
-    #[arg(long)]
+    /// bathrooms opening off it. A house has one living area, so no wings
+    /// to turn: `--non-manhattan` is refused with it.
+    #[arg(long, conflicts_with = "non_manhattan")]
     pub house: bool,
     /// Turn the whole building by this many degrees (counter-clockwise):
     /// a robot's map seldom lies square to the walls.

@@ -55,20 +55,12 @@ pub fn evaluate_simulated(
     scratch: &Path,
 ) -> Result<SimulatedScore, EvalError> {
     let building = simulate(sim)?;
-    // A house's living area is one of its rooms.
-    let true_rooms = building.plan.rooms.len()
-        + usize::from(building.plan.open_plan) * building.plan.corridors.len();
+    let rooms = building.plan.true_rooms();
     let files = write_simulation(scratch, &building)?;
     let grid = load_map(&files.yaml, &LoadOptions::default())?;
     let gt = load_ground_truth(&files.gt_png, &grid)?;
     let x = extract(&grid, params)?;
-    let plan = &building.plan;
-    let kinds = if plan.open_plan {
-        let rooms: Vec<_> = plan.corridors.iter().chain(&plan.rooms).cloned().collect();
-        kind_score(&x.nrg, &[], &rooms)
-    } else {
-        kind_score(&x.nrg, &plan.corridors, &plan.rooms)
-    };
+    let kinds = kind_score(&x.nrg, building.plan.true_corridors(), &rooms);
     Ok(SimulatedScore {
         seed: sim.plan.seed,
         furnished: sim.plan.furniture,
@@ -76,7 +68,7 @@ pub fn evaluate_simulated(
         heading_deg: sim.plan.heading_deg,
         non_manhattan: sim.plan.non_manhattan,
         house: sim.plan.house,
-        true_rooms,
+        true_rooms: rooms.len(),
         evaluation: evaluate(&gt, &x, grid.resolution),
         kinds,
     })

@@ -285,6 +285,21 @@ impl FloorPlan {
         walls
     }
 
+    /// The true corridors: none in a house, whose living area is a room.
+    pub fn true_corridors(&self) -> &[Ring] {
+        if self.open_plan { &[] } else { &self.corridors }
+    }
+
+    /// The true rooms: the rooms, and a house's living area.
+    pub fn true_rooms(&self) -> Vec<Ring> {
+        let living = if self.open_plan {
+            &self.corridors[..]
+        } else {
+            &[]
+        };
+        living.iter().chain(&self.rooms).cloned().collect()
+    }
+
     /// `[min_x, min_y, max_x, max_y]` of every space, in metres.
     pub fn bounds(&self) -> [f64; 4] {
         let mut b = [

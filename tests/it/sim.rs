@@ -198,6 +198,14 @@ fn sim_cli_house_is_a_living_area_with_rooms_off_it() {
         .find(|s| s["name"] == "living area 1")
         .expect("the living area");
     assert_eq!(living["kind"], "room");
+    // A house has no wings to turn: the flags are refused together.
+    let out = nrgdb(
+        &["simulate", "--house", "--non-manhattan", "--out", "n"],
+        dir.path(),
+    );
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--non-manhattan"));
+    assert!(!dir.path().join("n").exists());
 }
 
 #[test]
