@@ -106,6 +106,10 @@ enum Ground {
 pub(crate) struct WallSupport {
     /// The runs along the dominant directions, then along each further one.
     runs: Vec<WallRuns>,
+    /// The same directions' runs of the building's own walls: without the
+    /// faces of clutter, lined or not (what tells a passage's side wall
+    /// from a table standing near an opening's end).
+    building_runs: Vec<WallRuns>,
     /// Per pixel: what a border's end may lie on.
     ground: Vec<Ground>,
     width: u32,
@@ -159,10 +163,22 @@ impl WallSupport {
         for &d in std::iter::once(&deg).chain(further) {
             mark_lined_clutter(&mut ground, grid, islands, &face, d, &limits.lines);
         }
+        let building_face: Vec<[u32; 2]> = face
+            .iter()
+            .copied()
+            .filter(|p| ground[p[1] as usize * w + p[0] as usize] == Ground::Wall)
+            .collect();
+        let directions: Vec<f64> = std::iter::once(deg)
+            .chain(further.iter().copied())
+            .collect();
         WallSupport {
-            runs: std::iter::once(deg)
-                .chain(further.iter().copied())
-                .map(|d| WallRuns::new(&face, d, min_run, limits.gap))
+            runs: directions
+                .iter()
+                .map(|&d| WallRuns::new(&face, d, min_run, limits.gap))
+                .collect(),
+            building_runs: directions
+                .iter()
+                .map(|&d| WallRuns::new(&building_face, d, min_run, limits.gap))
                 .collect(),
             ground,
             width: grid.width,
@@ -236,22 +252,24 @@ impl WallSupport {
     /// front wall where the line runs from furniture standing out from the
     /// back wall to the front (with a doorway beside the end, the wall may
     /// go on past that face only in a short piece). A room's side wall
-    /// meeting its front at an opening's end stops at the front.
+    /// meeting its front at an opening's end stops at the front. Only the
+    /// building's walls count: a table or shelf near an opening's end
+    /// (clutter, see `furniture::clutter_pixels`) is no passage's side.
     pub(crate) fn crosses_passage(&self, pixels: &[u32]) -> bool {
         let Some((a, b)) = border_ends(self.width, pixels) else {
             return false;
         };
-        let Some((judge, k)) = self.judge(a, b) else {
+        let Some((i, k)) = self.direction_set(a, b) else {
             return false;
         };
+        let building = &self.building_runs[i];
         let l = &self.limits;
         let j = 1 - k;
-        let across = judge.runs.across(j);
+        let across = building.across(j);
         let window = 2.0 * l.long_run;
         let both = |p: [f64; 2]| {
             let t = project(p, along(across));
-            let runs: Vec<Run> = judge
-                .runs
+            let runs: Vec<Run> = building
                 .near(j, project(p, across), l.tolerance)
                 .filter(|&r| length(r) >= l.tie_run)
                 .collect();
@@ -277,13 +295,23 @@ impl WallSupport {
     /// further ones) that line `a`–`b` runs along, within [`MIN_COS`], and
     /// which of their two directions (0 or 1) it is.
     fn judge(&self, a: [f64; 2], b: [f64; 2]) -> Option<(Judge<'_>, usize)> {
-        self.runs.iter().find_map(|runs| {
-            let judge = Judge {
-                runs,
-                limits: &self.limits,
-            };
-            judge.direction(a, b).map(|k| (judge, k))
-        })
+        let (i, k) = self.direction_set(a, b)?;
+        Some((self.judge_on(i), k))
+    }
+
+    /// The index into [`WallSupport::runs`] of the first wall directions
+    /// that line `a`–`b` runs along, within [`MIN_COS`], and which of
+    /// their two directions (0 or 1) it is.
+    fn direction_set(&self, a: [f64; 2], b: [f64; 2]) -> Option<(usize, usize)> {
+        (0..self.runs.len()).find_map(|i| self.judge_on(i).direction(a, b).map(|k| (i, k)))
+    }
+
+    /// The rule along the `i`-th wall directions.
+    fn judge_on(&self, i: usize) -> Judge<'_> {
+        Judge {
+            runs: &self.runs[i],
+            limits: &self.limits,
+        }
     }
 }
 
@@ -601,6 +629,22 @@ mod tests {
             (y == 30 && !(20..50).contains(&x)) || (x == 19 && y < 30)
         });
         assert!(!front.crosses_passage(&line));
+        // The same front with a 0.5 m x 0.8 m table standing in the room
+        // below, in line with the side wall: furniture is no passage's
+        // side wall.
+        let table = |x: usize, y: usize| (17..22).contains(&x) && (33..41).contains(&y);
+        let furnished = grid(w, 60, |x, y| {
+            (y == 30 && !(20..50).contains(&x)) || (x == 19 && y < 30) || table(x, y)
+        });
+        assert!(!furnished.crosses_passage(&line));
+        // A wall piece as long standing there (3 m) is one: the line
+        // would cross a passage between it and the side wall.
+        let piece = grid(w, 60, |x, y| {
+            (y == 30 && !(20..50).contains(&x))
+                || (x == 19 && y < 30)
+                || ((18..20).contains(&x) && (33..58).contains(&y))
+        });
+        assert!(piece.crosses_passage(&line));
     }
 
     #[test]
