@@ -93,9 +93,17 @@ pub(crate) enum GapKind {
     /// where a slanted wall runs past a doorway); and the floor goes on
     /// for `face` lines beyond both faces across nine tenths of the
     /// opening's width (a wall hugging the line leaves no opening).
+    /// A stack stops where the next line's gap steps out by `step` on
+    /// either side of the line before it: there the wall's face ends and
+    /// a room begins that is itself no wider than an opening (an alcove,
+    /// a narrow room whose whole front is open), whose lines would
+    /// otherwise carry the stack far deeper than any wall.
     Opening {
         /// Lines looked at beyond each face.
         face: usize,
+        /// Smallest step out from one line's gap to the next that ends a
+        /// stack.
+        step: usize,
     },
 }
 
@@ -225,12 +233,20 @@ fn scan(
             // Follow the stack down through lines whose gap matches this one.
             let (mut lo, mut hi) = gaps[first][gi];
             let mut last = first;
+            let mut previous = (lo, hi);
             used[first][gi] = true;
             while last + 1 < lines {
                 let next = gaps[last + 1]
                     .iter()
                     .position(|&(s, e)| 2 * (e.min(hi).saturating_sub(s.max(lo))) >= hi - lo);
                 let Some(ni) = next else { break };
+                if let GapKind::Opening { step, .. } = limits.kind {
+                    let (s, e) = gaps[last + 1][ni];
+                    if s + step <= previous.0 || e >= previous.1 + step {
+                        break;
+                    }
+                }
+                previous = gaps[last + 1][ni];
                 used[last + 1][ni] = true;
                 (lo, hi) = (lo.max(gaps[last + 1][ni].0), hi.min(gaps[last + 1][ni].1));
                 last += 1;
@@ -260,7 +276,7 @@ fn scan(
             let before = face(&mut (1..=reach).filter_map(|d| first.checked_sub(d)));
             let after = face(&mut (1..=reach).map(|d| last + d));
             let mut faces_open = matches!((before, after), (Some(a), Some(b)) if a || b);
-            if let GapKind::Opening { face } = limits.kind {
+            if let GapKind::Opening { face, .. } = limits.kind {
                 let floor = |ls: &mut dyn Iterator<Item = usize>| {
                     let (mut n, mut f) = (0usize, 0usize);
                     for l in ls {
@@ -388,7 +404,7 @@ mod tests {
         width: (9, 16),
         jamb: 4,
         depth: 3,
-        kind: GapKind::Opening { face: 2 },
+        kind: GapKind::Opening { face: 2, step: 2 },
     };
 
     #[test]
@@ -411,6 +427,27 @@ mod tests {
         // A wall hugging one face (row 9, x 12..20) leaves no opening.
         let hugged = front(|x, y| y == 9 && (12..20).contains(&x));
         assert!(axis_gaps(&hugged, OPENINGS).is_empty());
+    }
+
+    #[test]
+    fn an_opening_into_an_alcove_no_wider_than_an_opening_ends_at_the_step() {
+        // The front of `front`, and below it an alcove 20 px wide (x
+        // 4..24) down to the edge: every alcove row is itself a gap no
+        // wider than an opening may be.
+        let alcove = front(|x, y| y >= 8 && !(4..24).contains(&x));
+        let limits = GapLimits {
+            width: (9, 24),
+            ..OPENINGS
+        };
+        let g = axis_gaps(&alcove, limits);
+        assert_eq!(g.len(), 1, "{g:?}");
+        assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
+        // Without the stop the stack runs 8 rows deep, past any wall.
+        let no_stop = GapLimits {
+            kind: GapKind::Opening { face: 2, step: 5 },
+            ..limits
+        };
+        assert!(axis_gaps(&alcove, no_stop).is_empty());
     }
 
     #[test]
