@@ -66,11 +66,12 @@ const BORDER_END_REACH_M: f64 = 0.15;
 /// the next line's gap steps out by at least this much (m) on a side: the
 /// face of the wall, with an alcove or a narrow room behind it. Measured
 /// on the 19 development buildings and 400 simulated ones
-/// (benches/README.md, "An opening's stack ends at the wall's face"): only
+/// (benches/README.md, "Openings: furniture is no passage's side"): only
 /// houses change (door R +0.5); 0.15 m changes fr079 by a few hundredths;
 /// a step counted from the stack's narrowest gap instead of the line
 /// before loses intel_map's sloping 3.25 m opening; doorway stacks stopped
-/// the same way lose doors on office_d, office_e, NLB and three ROSE² maps.
+/// the same way lose doors on office_d, office_e and three ROSE² maps and
+/// give NLB a false one.
 const OPENING_FACE_STEP_M: f64 = 0.2;
 
 /// Wall-stub openings (`wall_stubs.rs`), with the openings' limits: a stub
