@@ -254,7 +254,9 @@ impl WallSupport {
     /// go on past that face only in a short piece). A room's side wall
     /// meeting its front at an opening's end stops at the front. Only the
     /// building's walls count: a table or shelf near an opening's end
-    /// (clutter, see `furniture::clutter_pixels`) is no passage's side.
+    /// (clutter, see `furniture::clutter_pixels`) is no passage's side,
+    /// unless the end itself stands on clutter (within `tolerance`), where
+    /// the line may run between two pieces of furniture.
     pub(crate) fn crosses_passage(&self, pixels: &[u32]) -> bool {
         let Some((a, b)) = border_ends(self.width, pixels) else {
             return false;
@@ -269,7 +271,14 @@ impl WallSupport {
         let window = 2.0 * l.long_run;
         let both = |p: [f64; 2]| {
             let t = project(p, along(across));
-            let runs: Vec<Run> = building
+            // An end standing on furniture has it for a jamb: its faces
+            // count there, as they did before the rule.
+            let runs = if self.clutter_within(p, l.tolerance) {
+                &self.runs[i]
+            } else {
+                building
+            };
+            let runs: Vec<Run> = runs
                 .near(j, project(p, across), l.tolerance)
                 .filter(|&r| length(r) >= l.tie_run)
                 .collect();
@@ -282,6 +291,21 @@ impl WallSupport {
             lower && upper
         };
         both(a) || both(b)
+    }
+
+    /// Whether clutter (lined or not) lies within `r` pixels of `p`.
+    fn clutter_within(&self, p: [f64; 2], r: i64) -> bool {
+        let (w, h) = (i64::from(self.width), i64::from(self.height));
+        let (cx, cy) = (p[0].round() as i64, p[1].round() as i64);
+        ((cy - r).max(0)..=(cy + r).min(h - 1)).any(|y| {
+            ((cx - r).max(0)..=(cx + r).min(w - 1)).any(|x| {
+                (x - cx).pow(2) + (y - cy).pow(2) <= r * r
+                    && matches!(
+                        self.ground[(y * w + x) as usize],
+                        Ground::Clutter | Ground::LinedClutter
+                    )
+            })
+        })
     }
 
     /// Whether the doorway `a`–`b` (pixels) has wall support, judged
@@ -630,9 +654,10 @@ mod tests {
         });
         assert!(!front.crosses_passage(&line));
         // The same front with a 0.5 m x 0.8 m table standing in the room
-        // below, in line with the side wall: furniture is no passage's
-        // side wall.
-        let table = |x: usize, y: usize| (17..22).contains(&x) && (33..41).contains(&y);
+        // below, 0.6 m from the line's end, in line with the side wall:
+        // furniture is no passage's side wall. (Within `tolerance` of the
+        // end, 0.5 m, the end would stand on it and its faces count.)
+        let table = |x: usize, y: usize| (17..22).contains(&x) && (36..44).contains(&y);
         let furnished = grid(w, 60, |x, y| {
             (y == 30 && !(20..50).contains(&x)) || (x == 19 && y < 30) || table(x, y)
         });
