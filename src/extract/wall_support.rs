@@ -203,24 +203,28 @@ impl WallSupport {
     /// on a jamb. For a doorway gap's end (`gap`), clutter on the wall
     /// lines is a jamb.
     fn on_clutter(&self, p: [f64; 2], gap: bool) -> bool {
-        let r = self.limits.end_reach;
-        let (w, h) = (i64::from(self.width), i64::from(self.height));
-        let (cx, cy) = (p[0].round() as i64, p[1].round() as i64);
         let mut any = false;
-        for y in (cy - r).max(0)..=(cy + r).min(h - 1) {
-            for x in (cx - r).max(0)..=(cx + r).min(w - 1) {
-                if (x - cx).pow(2) + (y - cy).pow(2) > r * r {
-                    continue;
-                }
-                match self.ground[(y * w + x) as usize] {
-                    Ground::Free => {}
-                    Ground::Clutter => any = true,
-                    Ground::LinedClutter if !gap => any = true,
-                    Ground::LinedClutter | Ground::Wall => return false,
-                }
+        for ground in self.disc(p, self.limits.end_reach) {
+            match ground {
+                Ground::Free => {}
+                Ground::Clutter => any = true,
+                Ground::LinedClutter if !gap => any = true,
+                Ground::LinedClutter | Ground::Wall => return false,
             }
         }
         any
+    }
+
+    /// What lies at each pixel within `r` pixels of `p` (a disc, clipped
+    /// to the grid).
+    fn disc(&self, p: [f64; 2], r: i64) -> impl Iterator<Item = Ground> + '_ {
+        let (w, h) = (i64::from(self.width), i64::from(self.height));
+        let (cx, cy) = (p[0].round() as i64, p[1].round() as i64);
+        ((cy - r).max(0)..=(cy + r).min(h - 1)).flat_map(move |y| {
+            ((cx - r).max(0)..=(cx + r).min(w - 1))
+                .filter(move |x| (x - cx).pow(2) + (y - cy).pow(2) <= r * r)
+                .map(move |x| self.ground[(y * w + x) as usize])
+        })
     }
 
     /// Whether the doorway gap whose line is `pixels` has an end on clutter
@@ -295,17 +299,8 @@ impl WallSupport {
 
     /// Whether clutter (lined or not) lies within `r` pixels of `p`.
     fn clutter_within(&self, p: [f64; 2], r: i64) -> bool {
-        let (w, h) = (i64::from(self.width), i64::from(self.height));
-        let (cx, cy) = (p[0].round() as i64, p[1].round() as i64);
-        ((cy - r).max(0)..=(cy + r).min(h - 1)).any(|y| {
-            ((cx - r).max(0)..=(cx + r).min(w - 1)).any(|x| {
-                (x - cx).pow(2) + (y - cy).pow(2) <= r * r
-                    && matches!(
-                        self.ground[(y * w + x) as usize],
-                        Ground::Clutter | Ground::LinedClutter
-                    )
-            })
-        })
+        self.disc(p, r)
+            .any(|g| matches!(g, Ground::Clutter | Ground::LinedClutter))
     }
 
     /// Whether the doorway `a`–`b` (pixels) has wall support, judged
