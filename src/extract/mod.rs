@@ -42,6 +42,7 @@ mod doorway;
 mod error;
 mod filled;
 mod furniture;
+mod geodesic;
 mod graph;
 mod interior;
 mod joins;

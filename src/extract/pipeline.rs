@@ -15,7 +15,8 @@ use super::door_choice::{DoorCues, choose_doors};
 use super::doors::{Border, cut_doors};
 use super::filled::filled_diameters;
 use super::furniture::{Islands, islands};
-use super::graph::topology;
+use super::geodesic::geodesic_lengths;
+use super::graph::{SpaceShape, topology};
 use super::interior::{claim_enclosed_unknown, fill_specks};
 use super::merge::merge_small;
 use super::pixel_config::{PixelConfig, Segmentation};
@@ -162,19 +163,26 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     // polygons see the same labels.
     tidy_labels(&mut labels);
     clock.lap("tidy");
-    // A corridor by its outline: the clutter standing in a space is filled
-    // before its width is taken (see `filled`).
-    let shape: Vec<(usize, f64)> = labels
+    // A corridor by its shape: its widest part with the clutter standing
+    // in it filled (see `filled`) and its length along the longest walk
+    // inside it (see `geodesic`).
+    let shape: Vec<SpaceShape> = labels
         .areas()
         .into_iter()
         .zip(filled_diameters(&labels, n_regions, px.clutter_max_width))
+        .zip(geodesic_lengths(&labels, n_regions))
+        .map(|((area, diameter), length)| SpaceShape {
+            area,
+            diameter,
+            length,
+        })
         .collect();
     let topo = topology(
         &labels,
         n_regions,
         &door_pairs,
         &shape,
-        px.corridor_min_elongation,
+        px.corridor,
         px.open_min,
     );
     clock.lap("graph");

@@ -6,6 +6,7 @@
 use super::clutter::LineLimits;
 use super::doorway::SpanLimits;
 use super::furniture::IslandLimits;
+use super::graph::CorridorShape;
 use super::joins::JoinLimits;
 use super::params::{DoorRule, ExtractParams, Method};
 use super::passages::PassageLimits;
@@ -73,6 +74,18 @@ const BORDER_END_REACH_M: f64 = 0.15;
 /// the same way lose doors on office_d, office_e and three ROSE² maps and
 /// give NLB a false one.
 const OPENING_FACE_STEP_M: f64 = 0.2;
+
+/// A corridor is at least this many times as long as it is wide on
+/// average (`graph::SpaceShape::length_ratio`: the length of the longest
+/// walk inside it, squared, over its area), as well as long for its
+/// widest part (`corridor_min_elongation`). A rectangle passes from about
+/// 3.7 : 1. Measured on 400 simulated buildings (benches/README.md, "A
+/// corridor is long along its walk"): rooms labelled corridor 42 → 8 and
+/// no corridor labelled room; 3 leaves 12, 3.5 leaves 10, 5 leaves 7. On
+/// the development maps the spaces it turns into rooms are L-shaped and
+/// furnished rooms (office_g's corner room, aws_small_house's bedroom,
+/// ROSE² room groups), and lab_d's two short corridor pieces (5 × 2.5 m).
+const CORRIDOR_MIN_LENGTH_RATIO: f64 = 4.0;
 
 /// Wall-stub openings (`wall_stubs.rs`), with the openings' limits: a stub
 /// is at most this thick (m), thin with free space beside it over this
@@ -257,8 +270,9 @@ pub(crate) struct PixelConfig {
     pub chord_speck_max: f64,
     /// Occupied pieces with fewer cells than this do not narrow a doorway.
     pub obstacle_min: usize,
-    /// `corridor_min_elongation` (a ratio).
-    pub corridor_min_elongation: f64,
+    /// What makes a space a corridor: `corridor_min_elongation` and
+    /// [`CORRIDOR_MIN_LENGTH_RATIO`].
+    pub corridor: CorridorShape,
     /// The widest hole in a space that is clutter standing in it.
     pub clutter_max_width: f64,
     /// Regions meeting wider than this are openly connected
@@ -395,7 +409,10 @@ impl PixelConfig {
             speck_max: (SPECK_MAX_M2 / (resolution * resolution)).floor() as usize,
             chord_speck_max: px(CHORD_SPECK_MAX_M),
             obstacle_min: (OBSTACLE_MIN_M2 / (resolution * resolution)).ceil() as usize,
-            corridor_min_elongation: i.corridor_min_elongation,
+            corridor: CorridorShape {
+                min_elongation: i.corridor_min_elongation,
+                min_length_ratio: CORRIDOR_MIN_LENGTH_RATIO,
+            },
             clutter_max_width: px(CLUTTER_MAX_WIDTH_M),
             open_min: px(b.door_width_max_m).ceil() as usize,
             simplify_m: o.simplify_m,
