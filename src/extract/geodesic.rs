@@ -12,15 +12,20 @@ const STRAIGHT: u32 = 5;
 const DIAGONAL: u32 = 7;
 
 /// The geodesic diameter (px) of each region `1..=regions` of `labels`
-/// (8-connected walks inside the region, chamfer 5-7 lengths; index 0
-/// and labels above `regions`: 0), from two sweeps: the farthest pixel
-/// from any pixel, then the farthest from that one (exact on trees and
-/// convex shapes, a close lower bound otherwise).
-pub(crate) fn geodesic_lengths(labels: &Labels, regions: u32) -> Vec<f64> {
+/// for which `wanted(label)` holds (8-connected walks inside the region,
+/// chamfer 5-7 lengths; index 0, labels above `regions` and regions not
+/// wanted: 0), from two sweeps: the farthest pixel from any pixel, then
+/// the farthest from that one (exact on trees and convex shapes, a close
+/// lower bound otherwise).
+pub(crate) fn geodesic_lengths(
+    labels: &Labels,
+    regions: u32,
+    wanted: impl Fn(u32) -> bool,
+) -> Vec<f64> {
     let w = labels.width as usize;
     let boxes = labels.bounding_boxes();
     let mut out = vec![0.0; labels.count as usize + 1];
-    for l in 1..=regions.min(labels.count) {
+    for l in (1..=regions.min(labels.count)).filter(|&l| wanted(l)) {
         let b = boxes[l as usize];
         if b[0] > b[2] {
             continue;
@@ -123,7 +128,8 @@ mod tests {
                 0
             }
         });
-        let g = geodesic_lengths(&l, 2);
+        let g = geodesic_lengths(&l, 2, |_| true);
+        assert_eq!(geodesic_lengths(&l, 2, |l| l == 2)[1], 0.0, "not wanted");
         // 39 steps along plus 3 across, chamfer: 36 straight + 3 diagonal.
         assert!((g[1] - (36.0 + 3.0 * 1.4)).abs() < 1e-9, "{g:?}");
         // Corner to corner round the bend: about 13 straight steps and 3

@@ -166,17 +166,24 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     // A corridor by its shape: its widest part with the clutter standing
     // in it filled (see `filled`) and its length along the longest walk
     // inside it (see `geodesic`).
-    let shape: Vec<SpaceShape> = labels
+    let mut shape: Vec<SpaceShape> = labels
         .areas()
         .into_iter()
         .zip(filled_diameters(&labels, n_regions, px.clutter_max_width))
-        .zip(geodesic_lengths(&labels, n_regions))
-        .map(|((area, diameter), length)| SpaceShape {
+        .map(|(area, diameter)| SpaceShape {
             area,
             diameter,
-            length,
+            length: 0.0,
         })
         .collect();
+    // Only a region long for its widest part can be a corridor: the
+    // others' walks are not measured.
+    let lengths = geodesic_lengths(&labels, n_regions, |l| {
+        shape[l as usize].elongation() >= px.corridor.min_elongation
+    });
+    for (s, length) in shape.iter_mut().zip(lengths) {
+        s.length = length;
+    }
     let topo = topology(
         &labels,
         n_regions,
