@@ -63,7 +63,7 @@ impl CorridorShape {
 
 /// Labels `1..=regions` are rooms or corridors, `regions+1..=labels.count`
 /// doors with `door_pairs[k]` the two regions door `regions+1+k` joins.
-/// `shape[l]` = (area px, widest inscribed diameter px) of region `l`.
+/// `shape[l]` is region `l`'s [`SpaceShape`].
 ///
 /// Edges: door–region for each door and its two regions (RAG edges from a
 /// door to a third region are dropped); region–region RAG edges become

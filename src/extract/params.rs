@@ -237,7 +237,10 @@ pub struct MethodInternals {
     /// A non-door space of degree ≥ 2 is a corridor only if its area over
     /// the square of its widest inscribed diameter (with the clutter standing
     /// in it filled: a furnished office is as wide as its walls) is at least
-    /// this (0 = the paper's pure degree rule). Default 2.5.
+    /// this, and the longest walk inside it is at least four times its mean
+    /// width (area over that walk: a room lined with shelves or a living
+    /// area with an alcove is no corridor). 0 turns both off: the paper's
+    /// pure degree rule. Default 2.5.
     pub corridor_min_elongation: f64,
     /// CCL method: erosion radius (thickens walls). Default 0.1 m.
     pub ccl_erode_m: f64,

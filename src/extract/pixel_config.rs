@@ -411,7 +411,12 @@ impl PixelConfig {
             obstacle_min: (OBSTACLE_MIN_M2 / (resolution * resolution)).ceil() as usize,
             corridor: CorridorShape {
                 min_elongation: i.corridor_min_elongation,
-                min_length_ratio: CORRIDOR_MIN_LENGTH_RATIO,
+                // 0 keeps the paper's pure degree rule (see the field).
+                min_length_ratio: if i.corridor_min_elongation > 0.0 {
+                    CORRIDOR_MIN_LENGTH_RATIO
+                } else {
+                    0.0
+                },
             },
             clutter_max_width: px(CLUTTER_MAX_WIDTH_M),
             open_min: px(b.door_width_max_m).ceil() as usize,
@@ -451,5 +456,22 @@ mod tests {
         let c = PixelConfig::new(&ccl, 0.05);
         assert!(c.gaps.is_none() && c.passages.is_none());
         assert!(matches!(c.segmentation, Segmentation::Ccl { open, .. } if open == 10.0));
+    }
+
+    #[test]
+    fn no_least_elongation_is_the_papers_pure_degree_rule() {
+        let p = ExtractParams::default();
+        let corridor = PixelConfig::new(&p, 0.05).corridor;
+        assert_eq!(
+            (corridor.min_elongation, corridor.min_length_ratio),
+            (2.5, 4.0)
+        );
+        let mut degree_only = ExtractParams::default();
+        degree_only.internals.corridor_min_elongation = 0.0;
+        let corridor = PixelConfig::new(&degree_only, 0.05).corridor;
+        assert_eq!(
+            (corridor.min_elongation, corridor.min_length_ratio),
+            (0.0, 0.0)
+        );
     }
 }
