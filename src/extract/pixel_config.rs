@@ -80,11 +80,12 @@ const OPENING_FACE_STEP_M: f64 = 0.2;
 /// walk inside it, squared, over its area), as well as long for its
 /// widest part (`corridor_min_elongation`). A rectangle passes from about
 /// 3.7 : 1. Measured on 400 simulated buildings (benches/README.md, "A
-/// corridor is long along its walk"): rooms labelled corridor 42 → 8 and
-/// no corridor labelled room; 3 leaves 12, 3.5 leaves 10, 5 leaves 7. On
-/// the development maps the spaces it turns into rooms are L-shaped and
-/// furnished rooms (office_g's corner room, aws_small_house's bedroom,
-/// ROSE² room groups), and lab_d's two short corridor pieces (5 × 2.5 m).
+/// corridor is long along its walk"): rooms labelled corridor 42 → 8,
+/// corridors labelled room 7 before and after; 3 leaves 12, 3.5 leaves 10,
+/// 5 leaves 7. On the development maps the spaces it turns into rooms are
+/// L-shaped and furnished rooms (office_g's corner room, aws_small_house's
+/// bedroom, ROSE² room groups), and, wrongly, three short corridor pieces
+/// (lab_d's two, 5 × 2.5 m, and fr079's, 7 × 1.9 m).
 const CORRIDOR_MIN_LENGTH_RATIO: f64 = 4.0;
 
 /// Wall-stub openings (`wall_stubs.rs`), with the openings' limits: a stub
