@@ -13,6 +13,23 @@ pub(crate) struct FreeSpace {
     pub reachable: Vec<bool>,
 }
 
+impl FreeSpace {
+    /// The clean free space with the corners its opening rounded off
+    /// given back (`reachable`): a room's corners square again, where a
+    /// wall's face meets the wall across.
+    pub(crate) fn with_corners(&self) -> Mask {
+        let mut out = self.clean.clone();
+        for (p, _) in out
+            .iter_mut()
+            .zip(&self.reachable)
+            .filter(|&(_, &reachable)| reachable)
+        {
+            *p = 255;
+        }
+        out
+    }
+}
+
 /// Fills furniture islands no wider than `furniture_px` (see
 /// [`free_without_furniture`]; `wall_piece_gap_px` for the wall pieces
 /// between doorways), opens the free mask with a disk of `noise_px`
@@ -58,6 +75,7 @@ mod tests {
     use super::*;
     use crate::extract::clutter::LineLimits;
     use crate::extract::furniture::islands;
+    use crate::grid::Cell;
 
     #[test]
     fn rays_and_islands_go_rooms_stay() {
@@ -93,5 +111,43 @@ mod tests {
             !f.reachable[2 * w + 11],
             "the far end of the ray is not reachable"
         );
+    }
+
+    #[test]
+    fn corners_the_opening_rounded_are_given_back() {
+        // A 10 x 8 px room, opened with a disk of 2 px: its corners round
+        // off; with them given back the room is square again, and nothing
+        // outside it is added.
+        let g = OccupancyGrid::from_ascii(
+            "############
+             #..........#
+             #..........#
+             #..........#
+             #..........#
+             #..........#
+             #..........#
+             #..........#
+             #..........#
+             ############",
+            0.1,
+        );
+        let none = IslandLimits {
+            furniture: 0.0,
+            clutter: 0.0,
+            wall_piece_gap: 0.0,
+            wall_elongation: 3.0,
+            lines: LineLimits {
+                min_run: 25.0,
+                gap: 1,
+                tolerance: 1,
+            },
+        };
+        let f = clean_free(&g, &islands(&g), 2.0, 1, &none);
+        let w = g.width as usize;
+        assert_eq!(f.clean.as_raw()[w + 1], 0, "the opening rounds the corner");
+        let cornered = f.with_corners();
+        let free: Vec<bool> = g.cells.iter().map(|&c| c == Cell::Free).collect();
+        let given: Vec<bool> = cornered.iter().map(|&p| p != 0).collect();
+        assert_eq!(given, free);
     }
 }

@@ -29,7 +29,7 @@ use super::wall_gaps::{GapIndex, GapLimits, WallGap, close_gaps, reopen_gaps, wa
 use super::wall_stubs::wall_stub_openings;
 use super::wall_support::WallSupport;
 use super::{ExtractError, ExtractParams};
-use crate::grid::OccupancyGrid;
+use crate::grid::{Cell, OccupancyGrid};
 use crate::imaging::{
     Labels, Mask, distance_to_background, dominant_orientation, further_wall_directions,
 };
@@ -117,7 +117,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
         Some(limits) => doorway_gaps(&free.clean, deg, &further, *limits, &support),
         None => Vec::new(),
     };
-    let openings = openings(&free, deg, &support, &px, &gaps);
+    let openings = openings(grid, &free, deg, &support, &px, &gaps);
     gaps.extend(openings.iter().cloned());
     // A gap between pieces of clutter is no doorway in a wall.
     gaps.retain(|g| !support.lacks_gap(&g.line));
@@ -273,8 +273,14 @@ fn doorway_gaps(
 /// with wall support like the doorway gaps, and none across a passage
 /// (`WallSupport::crosses_passage`); then the openings from wall stubs'
 /// ends (`wall_stubs.rs`) with wall support that pass no opening or
-/// doorway gap (in `doorways`) within `WallStubLimits::tolerance`.
+/// doorway gap (in `doorways`) within `WallStubLimits::tolerance`. The
+/// openings are scanned on the free space with its corners (see
+/// `FreeSpace::with_corners`): a rounded corner widens the gap by a pixel
+/// a line, and the stack never sees the wall's face. One into a room
+/// hardly wider than its front (`WallGap::narrow_faces`) must end on walls
+/// the sensor saw at both ends, not on the unseen shadow of furniture.
 fn openings(
+    grid: &OccupancyGrid,
     free: &FreeSpace,
     deg: f64,
     support: &WallSupport,
@@ -284,8 +290,12 @@ fn openings(
     let Some(limits) = &px.openings else {
         return Vec::new();
     };
-    let mut found = wall_gaps(&free.clean, deg, *limits);
-    found.retain(|o| !support.crosses_passage(&o.line) && !support.lacks_gap(&o.line));
+    let mut found = wall_gaps(&free.with_corners(), deg, *limits);
+    found.retain(|o| {
+        !support.crosses_passage(&o.line)
+            && !support.lacks_gap(&o.line)
+            && (!o.narrow_faces || ends_on_seen_walls(grid, &o.line))
+    });
     if let Some(stub_limits) = &px.wall_stubs {
         let w = free.clean.width();
         let near = near_lines(found.iter().chain(doorways), w, stub_limits.tolerance);
@@ -294,6 +304,37 @@ fn openings(
         found.extend(stubs);
     }
     found
+}
+
+/// How far (pixels) past each end of a gap's line a wall the sensor saw
+/// is looked for: the line's last free pixel may lie a pixel short of the
+/// wall's face, and the face be ragged by one more.
+const SEEN_WALL_REACH_PX: i64 = 3;
+
+/// Whether both ends of the line through `pixels` (row-major in `grid`, in
+/// order along the line) meet an occupied cell within
+/// [`SEEN_WALL_REACH_PX`] further along it: walls the sensor saw, not
+/// space it never saw.
+fn ends_on_seen_walls(grid: &OccupancyGrid, pixels: &[u32]) -> bool {
+    let (Some(&a), Some(&b)) = (pixels.first(), pixels.last()) else {
+        return false;
+    };
+    let w = grid.width;
+    let at = |p: u32| [f64::from(p % w), f64::from(p / w)];
+    let (a, b) = (at(a), at(b));
+    let len = (b[0] - a[0]).hypot(b[1] - a[1]);
+    if len <= 0.0 {
+        return false;
+    }
+    let u = [(b[0] - a[0]) / len, (b[1] - a[1]) / len];
+    let seen = |p: [f64; 2], sign: f64| {
+        (1..=SEEN_WALL_REACH_PX).any(|k| {
+            let k = sign * k as f64;
+            let (x, y) = ((p[0] + u[0] * k).round(), (p[1] + u[1] * k).round());
+            x >= 0.0 && y >= 0.0 && grid.cell(x as u32, y as u32) == Some(Cell::Occupied)
+        })
+    };
+    seen(a, -1.0) && seen(b, 1.0)
 }
 
 /// The pixels (row-major in a `width`-wide image) within `reach` (a
@@ -489,6 +530,62 @@ mod tests {
         params.building.opening_width_max_m = 0.0;
         let (others, widths) = spaces(&params);
         assert_eq!((others, widths.len()), (2, 1), "{widths:?}");
+    }
+
+    /// At 0.1 m/px: a 12 x 5 m living area above a 0.2 m front wall (rows
+    /// 50..52) with a 2.5 m opening (x 30..55) into a room 3 m wide (x
+    /// 28..58) and 4.6 m deep: the floor beyond the front goes on only
+    /// 0.2 and 0.3 m past the opening's ends, less than a jamb. Elsewhere
+    /// below the front is `beside` (`#` a wall seen, `?` never seen); the
+    /// front's cells are `front`.
+    fn room_behind_a_wide_front(front: char, beside: char) -> OccupancyGrid {
+        let (w, h) = (122, 100);
+        let rows: Vec<String> = (0..h)
+            .map(|y| {
+                (0..w)
+                    .map(|x| match (x, y) {
+                        _ if x == 0 || y == 0 || x == w - 1 || y == h - 1 => '#',
+                        (_, 1..50) => '.',
+                        (30..55, 50..52) => '.',
+                        (_, 50..52) => front,
+                        (28..58, _) => '.',
+                        _ => beside,
+                    })
+                    .collect()
+            })
+            .collect();
+        OccupancyGrid::from_ascii(&rows.join("\n"), 0.1)
+    }
+
+    #[test]
+    fn an_opening_into_a_room_hardly_wider_than_its_front_is_a_door_between_walls_seen() {
+        let grid = room_behind_a_wide_front('#', '#');
+        let (others, widths) =
+            spaces_and_door_widths(&extract(&grid, &ExtractParams::default()).unwrap());
+        assert_eq!(others, 2, "{widths:?}");
+        assert_eq!(widths.len(), 1, "{widths:?}");
+        assert!((widths[0] - 2.5).abs() <= 0.1, "{widths:?}");
+        // The same front never seen by the sensor: the line would end on
+        // unknown space, as on the shadow behind furniture.
+        let unseen = room_behind_a_wide_front('?', '?');
+        let (_, widths) =
+            spaces_and_door_widths(&extract(&unseen, &ExtractParams::default()).unwrap());
+        assert!(widths.iter().all(|w| (w - 2.5).abs() > 0.3), "{widths:?}");
+    }
+
+    #[test]
+    fn a_line_ends_on_seen_walls_only_where_both_ends_meet_occupied_cells() {
+        let grid = OccupancyGrid::from_ascii(
+            "#.....#
+             ?.....#
+             #.....?",
+            0.05,
+        );
+        let row = |y: u32| (1..6).map(|x| y * 7 + x).collect::<Vec<u32>>();
+        assert!(ends_on_seen_walls(&grid, &row(0)));
+        assert!(!ends_on_seen_walls(&grid, &row(1)));
+        assert!(!ends_on_seen_walls(&grid, &row(2)));
+        assert!(!ends_on_seen_walls(&grid, &[]));
     }
 
     #[test]

@@ -65,7 +65,9 @@ const BORDER_END_REACH_M: f64 = 0.15;
 
 /// An opening's stack of gaps (`wall_gaps::GapKind::Opening`) ends where
 /// the next line's gap steps out by at least this much (m) on a side: the
-/// face of the wall, with an alcove or a narrow room behind it. Measured
+/// face of the wall, with an alcove or a narrow room behind it; and where
+/// it steps in as much, from such a room into the wall (benches/README.md,
+/// "Openings into rooms hardly wider than their fronts"). Measured
 /// on the 19 development buildings and 400 simulated ones
 /// (benches/README.md, "Openings: furniture is no passage's side"): only
 /// houses change (door R +0.5); 0.15 m changes fr079 by a few hundredths;
@@ -325,6 +327,7 @@ impl PixelConfig {
                     kind: GapKind::Opening {
                         face: whole(b.wall_jamb_m).max(1),
                         step: whole(OPENING_FACE_STEP_M).max(1),
+                        near_margin: whole(b.wall_jamb_m).max(1),
                     },
                 }),
             wall_stubs: (watershed

@@ -17,6 +17,12 @@ pub(crate) struct WallGap {
     pub line: Vec<u32>,
     /// The doorway's width (pixels along the line).
     pub width_px: usize,
+    /// An opening whose floor goes on past it on some face by less than a
+    /// jamb (`GapKind::Opening::near_margin`, not `GapLimits::jamb`): a
+    /// room hardly wider than its open front. Such a line is an opening
+    /// only between walls the sensor saw, which the scan cannot tell
+    /// from what it never saw (the pipeline checks).
+    pub narrow_faces: bool,
 }
 
 impl WallGap {
@@ -97,13 +103,21 @@ pub(crate) enum GapKind {
     /// either side of the line before it: there the wall's face ends and
     /// a room begins that is itself no wider than an opening (an alcove,
     /// a narrow room whose whole front is open), whose lines would
-    /// otherwise carry the stack far deeper than any wall.
+    /// otherwise carry the stack far deeper than any wall. It stops where
+    /// the gap steps in by `step` too: there such a room ends at the
+    /// wall's face, and the wall's own lines start a stack of their own.
+    /// On each face the floor must be wider than the opening by a jamb;
+    /// by `near_margin` only, the gap is kept as
+    /// [`WallGap::narrow_faces`].
     Opening {
         /// Lines looked at beyond each face.
         face: usize,
-        /// Smallest step out from one line's gap to the next that ends a
-        /// stack.
+        /// Smallest step out or in from one line's gap to the next that
+        /// ends a stack.
         step: usize,
+        /// The least the floor on a face may be wider than the opening
+        /// (a wall stub's length, less than a jamb).
+        near_margin: usize,
     },
 }
 
@@ -152,6 +166,7 @@ pub(crate) fn turned_gaps(
             (!line.is_empty()).then_some(WallGap {
                 line,
                 width_px: g.width_px,
+                narrow_faces: g.narrow_faces,
             })
         })
         .collect()
@@ -242,7 +257,9 @@ fn scan(
                 let Some(ni) = next else { break };
                 if let GapKind::Opening { step, .. } = limits.kind {
                     let (s, e) = gaps[last + 1][ni];
-                    if s + step <= previous.0 || e >= previous.1 + step {
+                    let out = s + step <= previous.0 || e >= previous.1 + step;
+                    let inward = s >= previous.0 + step || e + step <= previous.1;
+                    if out || inward {
                         break;
                     }
                 }
@@ -259,23 +276,37 @@ fn scan(
             // jambs end there, as a wall's do. (A corridor piece between two
             // facing doorways has one side wall running on past the piece on
             // both faces.)
-            // Per line: None = closed; Some(true) = open past both jambs.
-            let open_line = |l: usize| -> Option<bool> {
+            // Per line: None = closed (the floor through the middle no
+            // wider than the gap by `margin`); Some(true) = open past both
+            // jambs.
+            let open_line = |l: usize, margin: usize| -> Option<bool> {
                 let mid = (lo + hi) / 2;
                 if l >= lines || !is_free(l, mid) {
                     return None;
                 }
                 let left = (0..mid).rev().take_while(|&k| is_free(l, k)).count();
                 let right = (mid..len).take_while(|&k| is_free(l, k)).count();
-                (left + right >= (hi - lo) + limits.jamb).then_some(
+                (left + right >= (hi - lo) + margin).then_some(
                     left >= (mid - lo) + limits.jamb && right >= (hi - mid) + limits.jamb,
                 )
             };
-            let face = |ls: &mut dyn Iterator<Item = usize>| ls.filter_map(open_line).max();
             let reach = limits.jamb.max(2);
-            let before = face(&mut (1..=reach).filter_map(|d| first.checked_sub(d)));
-            let after = face(&mut (1..=reach).map(|d| last + d));
-            let mut faces_open = matches!((before, after), (Some(a), Some(b)) if a || b);
+            let faces = |margin: usize| {
+                let face = |ls: &mut dyn Iterator<Item = usize>| {
+                    ls.filter_map(|l| open_line(l, margin)).max()
+                };
+                let before = face(&mut (1..=reach).filter_map(|d| first.checked_sub(d)));
+                let after = face(&mut (1..=reach).map(|d| last + d));
+                matches!((before, after), (Some(a), Some(b)) if a || b)
+            };
+            let mut faces_open = faces(limits.jamb);
+            let mut narrow_faces = false;
+            if let GapKind::Opening { near_margin, .. } = limits.kind
+                && !faces_open
+                && faces(near_margin)
+            {
+                (faces_open, narrow_faces) = (true, true);
+            }
             if let GapKind::Opening { face, .. } = limits.kind {
                 let floor = |ls: &mut dyn Iterator<Item = usize>| {
                     let (mut n, mut f) = (0usize, 0usize);
@@ -330,6 +361,7 @@ fn scan(
                 out.push(WallGap {
                     line: (lo..hi).map(|k| index(mid, k)).collect(),
                     width_px: hi - lo,
+                    narrow_faces,
                 });
             }
         }
@@ -404,7 +436,11 @@ mod tests {
         width: (9, 16),
         jamb: 4,
         depth: 3,
-        kind: GapKind::Opening { face: 2, step: 2 },
+        kind: GapKind::Opening {
+            face: 2,
+            step: 2,
+            near_margin: 2,
+        },
     };
 
     #[test]
@@ -444,10 +480,56 @@ mod tests {
         assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
         // Without the stop the stack runs 8 rows deep, past any wall.
         let no_stop = GapLimits {
-            kind: GapKind::Opening { face: 2, step: 5 },
+            kind: GapKind::Opening {
+                face: 2,
+                step: 5,
+                near_margin: 2,
+            },
             ..limits
         };
         assert!(axis_gaps(&alcove, no_stop).is_empty());
+    }
+
+    #[test]
+    fn an_opening_from_an_alcove_ends_where_the_wall_begins() {
+        // The front of `front`, and above it an alcove 20 px wide (x
+        // 4..24) up to the edge: the stack of its rows steps in at the
+        // wall, whose own rows are the opening.
+        let alcove = front(|x, y| y < 6 && !(4..24).contains(&x));
+        let limits = GapLimits {
+            width: (9, 24),
+            ..OPENINGS
+        };
+        let g = axis_gaps(&alcove, limits);
+        assert_eq!(g.len(), 1, "{g:?}");
+        assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
+        assert!(!g[0].narrow_faces);
+    }
+
+    #[test]
+    fn an_opening_into_a_room_hardly_wider_than_it_has_narrow_faces() {
+        // Below the front of `front` a room 15 px wide (x 6..21): the
+        // floor beyond that face is wider than the 12 px opening by 3 px,
+        // less than the 4 px jamb, at least the near margin of 2.
+        let room = front(|x, y| y >= 8 && !(6..21).contains(&x));
+        let g = axis_gaps(&room, OPENINGS);
+        assert_eq!(g.len(), 1, "{g:?}");
+        assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
+        assert!(g[0].narrow_faces);
+        // Floor a jamb wider on both faces: no narrow faces.
+        let open = axis_gaps(&front(|_, _| false), OPENINGS);
+        assert_eq!(open.len(), 1, "{open:?}");
+        assert!(!open[0].narrow_faces);
+        // A near margin above 3 px leaves no opening.
+        let strict = GapLimits {
+            kind: GapKind::Opening {
+                face: 2,
+                step: 2,
+                near_margin: 4,
+            },
+            ..OPENINGS
+        };
+        assert!(axis_gaps(&room, strict).is_empty());
     }
 
     #[test]

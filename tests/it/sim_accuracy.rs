@@ -65,8 +65,12 @@
 //! rooms 87.80 / 96.90, doors 85.20 / 99.33, connections 84.53 / 100 and 6
 //! rooms labelled corridor, each a living area: most of these openings are
 //! not found (issue 20's failure modes 1 and 2), so the alcoves join the
-//! living area, which grows long. The floors keep that, so that finding
-//! them shows here.
+//! living area, which grows long. Since openings are scanned with the
+//! room's corners square, a stack ends where it steps into the wall, and
+//! an opening into a room hardly wider than its front counts between walls
+//! the sensor saw (2026-12-06, benches/README.md "Openings into rooms
+//! hardly wider than their fronts"): rooms 87.80 / 97.66, doors 88.60 /
+//! 99.33, connections 88.10 / 100, none labelled corridor.
 //!
 //! Everything is deterministic in the seeds, so a drop below a floor is a
 //! real change of behaviour, not noise. Needs no shared data.
@@ -145,7 +149,7 @@ fn simulated_buildings_plain_furnished_cluttered_turned_angled_and_houses_stay_a
         (CLUTTERED, 85.5, 99.5, 99.5, 98.8, 99.5, 99.5),
         (TURNED, 97.3, 99.5, 99.5, 99.5, 99.5, 99.5),
         (ANGLED, 97.2, 99.8, 99.4, 99.7, 99.4, 99.5),
-        (HOUSE, 87.5, 97.0, 86.3, 99.0, 85.6, 99.5),
+        (HOUSE, 87.5, 97.5, 88.4, 99.0, 87.9, 99.5),
     ];
     let mut report = String::new();
     let mut failed = false;
