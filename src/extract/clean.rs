@@ -77,6 +77,19 @@ mod tests {
     use crate::extract::furniture::islands;
     use crate::grid::Cell;
 
+    /// No furniture, clutter or wall pieces filled.
+    const NO_ISLANDS: IslandLimits = IslandLimits {
+        furniture: 0.0,
+        clutter: 0.0,
+        wall_piece_gap: 0.0,
+        wall_elongation: 3.0,
+        lines: LineLimits {
+            min_run: 25.0,
+            gap: 1,
+            tolerance: 1,
+        },
+    };
+
     #[test]
     fn rays_and_islands_go_rooms_stay() {
         // A 6x6 room with a one-pixel ray leaving it and a lone free pixel.
@@ -91,18 +104,7 @@ mod tests {
              ##########????",
             0.1,
         );
-        let none = IslandLimits {
-            furniture: 0.0,
-            clutter: 0.0,
-            wall_piece_gap: 0.0,
-            wall_elongation: 3.0,
-            lines: LineLimits {
-                min_run: 25.0,
-                gap: 1,
-                tolerance: 1,
-            },
-        };
-        let f = clean_free(&g, &islands(&g), 1.0, 5, &none);
+        let f = clean_free(&g, &islands(&g), 1.0, 5, &NO_ISLANDS);
         let w = g.width as usize;
         assert_eq!(f.clean.as_raw()[2 * w + 10], 0, "ray removed");
         assert_eq!(f.clean.as_raw()[4 * w + 11], 0, "island removed");
@@ -131,18 +133,7 @@ mod tests {
              ############",
             0.1,
         );
-        let none = IslandLimits {
-            furniture: 0.0,
-            clutter: 0.0,
-            wall_piece_gap: 0.0,
-            wall_elongation: 3.0,
-            lines: LineLimits {
-                min_run: 25.0,
-                gap: 1,
-                tolerance: 1,
-            },
-        };
-        let f = clean_free(&g, &islands(&g), 2.0, 1, &none);
+        let f = clean_free(&g, &islands(&g), 2.0, 1, &NO_ISLANDS);
         let w = g.width as usize;
         assert_eq!(f.clean.as_raw()[w + 1], 0, "the opening rounds the corner");
         let cornered = f.with_corners();

@@ -443,6 +443,12 @@ mod tests {
         },
     };
 
+    /// [`OPENINGS`] up to 24 px wide: an alcove's rows are gaps too.
+    const ALCOVE_OPENINGS: GapLimits = GapLimits {
+        width: (9, 24),
+        ..OPENINGS
+    };
+
     #[test]
     fn an_opening_wider_than_any_doorway_is_found_by_its_own_scan() {
         let g = axis_gaps(&front(|_, _| false), OPENINGS);
@@ -471,10 +477,7 @@ mod tests {
         // 4..24) down to the edge: every alcove row is itself a gap no
         // wider than an opening may be.
         let alcove = front(|x, y| y >= 8 && !(4..24).contains(&x));
-        let limits = GapLimits {
-            width: (9, 24),
-            ..OPENINGS
-        };
+        let limits = ALCOVE_OPENINGS;
         let g = axis_gaps(&alcove, limits);
         assert_eq!(g.len(), 1, "{g:?}");
         assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
@@ -496,10 +499,7 @@ mod tests {
         // 4..24) up to the edge: the stack of its rows steps in at the
         // wall, whose own rows are the opening.
         let alcove = front(|x, y| y < 6 && !(4..24).contains(&x));
-        let limits = GapLimits {
-            width: (9, 24),
-            ..OPENINGS
-        };
+        let limits = ALCOVE_OPENINGS;
         let g = axis_gaps(&alcove, limits);
         assert_eq!(g.len(), 1, "{g:?}");
         assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
