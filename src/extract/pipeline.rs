@@ -294,7 +294,7 @@ fn openings(
     found.retain(|o| {
         !support.crosses_passage(&o.line)
             && !support.lacks_gap(&o.line)
-            && (!o.narrow_faces || ends_on_seen_walls(grid, &o.line))
+            && (!o.narrow_faces || ends_on_seen_walls(grid, &o.line, px.seen_wall_reach))
     });
     if let Some(stub_limits) = &px.wall_stubs {
         let w = free.clean.width();
@@ -306,16 +306,10 @@ fn openings(
     found
 }
 
-/// How far (pixels) past each end of a gap's line a wall the sensor saw
-/// is looked for: the line's last free pixel may lie a pixel short of the
-/// wall's face, and the face be ragged by one more.
-const SEEN_WALL_REACH_PX: i64 = 3;
-
 /// Whether both ends of the line through `pixels` (row-major in `grid`, in
-/// order along the line) meet an occupied cell within
-/// [`SEEN_WALL_REACH_PX`] further along it: walls the sensor saw, not
-/// space it never saw.
-fn ends_on_seen_walls(grid: &OccupancyGrid, pixels: &[u32]) -> bool {
+/// order along the line) meet an occupied cell within `reach` pixels
+/// further along it: walls the sensor saw, not space it never saw.
+fn ends_on_seen_walls(grid: &OccupancyGrid, pixels: &[u32], reach: i64) -> bool {
     let (Some(&a), Some(&b)) = (pixels.first(), pixels.last()) else {
         return false;
     };
@@ -328,7 +322,7 @@ fn ends_on_seen_walls(grid: &OccupancyGrid, pixels: &[u32]) -> bool {
     }
     let u = [(b[0] - a[0]) / len, (b[1] - a[1]) / len];
     let seen = |p: [f64; 2], sign: f64| {
-        (1..=SEEN_WALL_REACH_PX).any(|k| {
+        (1..=reach).any(|k| {
             let k = sign * k as f64;
             let (x, y) = ((p[0] + u[0] * k).round(), (p[1] + u[1] * k).round());
             x >= 0.0 && y >= 0.0 && grid.cell(x as u32, y as u32) == Some(Cell::Occupied)
@@ -582,10 +576,15 @@ mod tests {
             0.05,
         );
         let row = |y: u32| (1..6).map(|x| y * 7 + x).collect::<Vec<u32>>();
-        assert!(ends_on_seen_walls(&grid, &row(0)));
-        assert!(!ends_on_seen_walls(&grid, &row(1)));
-        assert!(!ends_on_seen_walls(&grid, &row(2)));
-        assert!(!ends_on_seen_walls(&grid, &[]));
+        assert!(ends_on_seen_walls(&grid, &row(0), 1));
+        assert!(!ends_on_seen_walls(&grid, &row(1), 1));
+        assert!(!ends_on_seen_walls(&grid, &row(2), 1));
+        assert!(!ends_on_seen_walls(&grid, &[], 1));
+        // A wall a pixel further than the reach is not met.
+        let short = OccupancyGrid::from_ascii("#?.....?#", 0.05);
+        let line: Vec<u32> = (2..7).collect();
+        assert!(ends_on_seen_walls(&short, &line, 2));
+        assert!(!ends_on_seen_walls(&short, &line, 1));
     }
 
     #[test]

@@ -77,6 +77,14 @@ const BORDER_END_REACH_M: f64 = 0.15;
 /// give NLB a false one.
 const OPENING_FACE_STEP_M: f64 = 0.2;
 
+/// How far (m) past each end of an opening into a room hardly wider than
+/// its front (`wall_gaps::WallGap::narrow_faces`) a wall the sensor saw is
+/// looked for along its line: its last free pixel may lie a pixel short
+/// of the wall's face, and the face be ragged by one more (3 px on the
+/// 0.05 m/px maps the rule was measured on, benches/README.md "Openings
+/// into rooms hardly wider than their fronts").
+const SEEN_WALL_REACH_M: f64 = 0.15;
+
 /// A corridor is at least this many times as long as it is wide on
 /// average (`graph::SpaceShape::length_ratio`: the length of the longest
 /// walk inside it, squared, over its area), as well as long for its
@@ -238,6 +246,9 @@ pub(crate) struct PixelConfig {
     /// wall across, floor for `wall_jamb_m` beyond both faces; none with
     /// the CCL method, `wall_jamb_m` 0, or no width above the gaps'.
     pub openings: Option<GapLimits>,
+    /// How far past an opening's ends a wall the sensor saw is looked for
+    /// (`SEEN_WALL_REACH_M`), in pixels rounded up.
+    pub seen_wall_reach: i64,
     /// Openings from a wall stub's end to the wall it points at; with the
     /// openings only.
     pub wall_stubs: Option<WallStubLimits>,
@@ -330,6 +341,7 @@ impl PixelConfig {
                         near_margin: whole(b.wall_jamb_m).max(1),
                     },
                 }),
+            seen_wall_reach: (px(SEEN_WALL_REACH_M).ceil() as i64).max(1),
             wall_stubs: (watershed
                 && b.wall_jamb_m > 0.0
                 && b.opening_width_max_m > b.wall_gap_width_max_m)
@@ -440,6 +452,7 @@ mod tests {
         assert_eq!(fine.doors.door_max_px, 36.0);
         assert_eq!(coarse.doors.door_max_px, 18.0);
         assert_eq!((fine.min_room_area, coarse.min_room_area), (400, 100));
+        assert_eq!((fine.seen_wall_reach, coarse.seen_wall_reach), (3, 2));
         assert_eq!(fine.passage.window, 72);
         let gaps = fine.gaps.unwrap();
         assert_eq!((gaps.width, gaps.jamb, gaps.depth), ((6, 42), 6, 24));
