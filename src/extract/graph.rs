@@ -152,14 +152,16 @@ mod tests {
             data: vec![1, 4, 2, 5, 3],
             count: 5,
         };
-        let kind = |length: f64| {
-            let shapes = [
+        let shapes = |length: f64| {
+            [
                 SpaceShape::default(),
                 shape(100, 10.0, 12.0),
                 shape(400, 10.0, length),
                 shape(100, 10.0, 12.0),
-            ];
-            topology(&labels, 3, &[(1, 2), (2, 3)], &shapes, CORRIDOR, 3).kinds[2]
+            ]
+        };
+        let kind = |length: f64| {
+            topology(&labels, 3, &[(1, 2), (2, 3)], &shapes(length), CORRIDOR, 3).kinds[2]
         };
         // A 40 x 10 strip: its walk is 40 long, four times its mean width.
         assert_eq!(kind(41.0), SpaceKind::Corridor);
@@ -167,19 +169,7 @@ mod tests {
         // same area and the same widest circle, but a walk of 30.
         assert_eq!(kind(30.0), SpaceKind::Room);
         // A long space needs its two doors all the same.
-        let dangling = topology(
-            &labels,
-            3,
-            &[(1, 2)],
-            &[
-                SpaceShape::default(),
-                shape(100, 10.0, 12.0),
-                shape(400, 10.0, 41.0),
-                shape(100, 10.0, 12.0),
-            ],
-            CORRIDOR,
-            3,
-        );
+        let dangling = topology(&labels, 3, &[(1, 2)], &shapes(41.0), CORRIDOR, 3);
         assert_eq!(dangling.kinds[2], SpaceKind::Room);
     }
 
