@@ -59,6 +59,7 @@ mod resample;
 mod segment;
 mod simplify;
 mod skeleton_doors;
+mod stub_openings;
 mod stubs;
 mod tidy;
 mod wall_gaps;

@@ -4,7 +4,7 @@
 //! `polygons` → [`Nrg`]. The parameters are turned into pixels once
 //! ([`PixelConfig`]); every stage takes them from there.
 
-use std::collections::{BTreeMap, HashSet};
+use std::collections::BTreeMap;
 use std::time::{Duration, Instant};
 
 use super::build::{DoorLines, build};
@@ -24,9 +24,11 @@ use super::regions::Regions;
 use super::resample::{coarsen, pixel_centroids, refine};
 use super::segment::segment_basins;
 use super::skeleton_doors::skeleton_doorways;
+use super::stub_openings::stub_openings;
 use super::tidy::tidy_labels;
-use super::wall_gaps::{GapIndex, GapLimits, WallGap, close_gaps, reopen_gaps, wall_gaps};
-use super::wall_stubs::wall_stub_openings;
+use super::wall_gaps::{
+    GapIndex, GapLimits, WallGap, close_gaps, near_lines, reopen_gaps, wall_gaps,
+};
 use super::wall_support::WallSupport;
 use super::{ExtractError, ExtractParams};
 use crate::grid::{Cell, OccupancyGrid};
@@ -297,10 +299,9 @@ fn openings(
             && (!o.narrow_faces || ends_on_seen_walls(grid, &o.line, px.seen_wall_reach))
     });
     if let Some(stub_limits) = &px.wall_stubs {
-        let w = free.clean.width();
-        let near = near_lines(found.iter().chain(doorways), w, stub_limits.tolerance);
-        let mut stubs = wall_stub_openings(&free.clean, deg, stub_limits);
-        stubs.retain(|s| !s.line.iter().any(|p| near.contains(p)) && !support.lacks_gap(&s.line));
+        let stubs = stub_openings(&free.clean, deg, stub_limits, &mut found, doorways, |s| {
+            !support.lacks_gap(&s.line)
+        });
         found.extend(stubs);
     }
     found
@@ -329,29 +330,6 @@ fn ends_on_seen_walls(grid: &OccupancyGrid, pixels: &[u32], reach: i64) -> bool 
         })
     };
     seen(a, -1.0) && seen(b, 1.0)
-}
-
-/// The pixels (row-major in a `width`-wide image) within `reach` (a
-/// square) of the lines of `gaps`.
-fn near_lines<'a>(
-    gaps: impl Iterator<Item = &'a WallGap>,
-    width: u32,
-    reach: usize,
-) -> HashSet<u32> {
-    let (w, r) = (i64::from(width), reach as i64);
-    let mut near = HashSet::new();
-    for &p in gaps.flat_map(|g| &g.line) {
-        let (x, y) = (i64::from(p) % w, i64::from(p) / w);
-        for dy in -r..=r {
-            for dx in -r..=r {
-                let (nx, ny) = (x + dx, y + dy);
-                if (0..w).contains(&nx) && ny >= 0 {
-                    near.insert((ny * w + nx) as u32);
-                }
-            }
-        }
-    }
-    near
 }
 
 /// Stage `segment`: the free space cut into regions, by the watershed of
@@ -470,6 +448,31 @@ mod tests {
         params.building.opening_width_max_m = 0.0;
         let one = extract(&grid, &params).unwrap();
         assert_eq!(one.nrg.spaces().len(), 1);
+    }
+
+    #[test]
+    fn a_partition_behind_an_open_front_gives_each_room_its_opening() {
+        // At 0.05 m/px: a 2 m corridor (y 1..40) along two rooms (y 43..160)
+        // whose 0.15 m front wall (y 40..43) was seen only at its ends
+        // (x < 80, x >= 150): a 3.5 m opening. The partition between the
+        // rooms (x 114..117) runs from the south wall to y = 80, 1.85 m
+        // short of the front. Each room opens onto the corridor through
+        // its part of the front, cut where the partition's line meets it.
+        let grid = walled(241, 161, 0.05, |x, y| {
+            let front = (40..43).contains(&y) && !(80..150).contains(&x);
+            let partition = (114..117).contains(&x) && y >= 80;
+            front || partition
+        });
+        let x = extract(&grid, &ExtractParams::default()).unwrap();
+        let (spaces, mut widths) = spaces_and_door_widths(&x);
+        widths.sort_by(f64::total_cmp);
+        assert_eq!(spaces, 3, "{widths:?}");
+        assert_eq!(widths.len(), 3, "{widths:?}");
+        // The partition's line (1.85 m), then the two parts of the front
+        // (1.75 m each, the partition's middle column to each jamb).
+        for (w, truth) in widths.iter().zip([1.75, 1.75, 1.85]) {
+            assert!((w - truth).abs() <= 0.1, "{widths:?}");
+        }
     }
 
     #[test]

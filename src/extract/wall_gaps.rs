@@ -4,7 +4,7 @@
 //! doorway even when it is as wide as the corridor it opens onto, where the
 //! distance transform shows no constriction.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use super::interior::neighbours;
 use crate::imaging::{Labels, Mask, line_pixels, turn_mask};
@@ -200,6 +200,29 @@ pub(crate) fn close_gaps(clean: &mut Mask, reachable: &mut [bool], gaps: &[WallG
         clean.as_mut()[p as usize] = 0;
         reachable[p as usize] = false;
     }
+}
+
+/// The pixels (row-major in a `width`-wide image) within `reach` (a
+/// square) of the lines of `gaps`.
+pub(crate) fn near_lines<'a>(
+    gaps: impl Iterator<Item = &'a WallGap>,
+    width: u32,
+    reach: usize,
+) -> HashSet<u32> {
+    let (w, r) = (i64::from(width), reach as i64);
+    let mut near = HashSet::new();
+    for &p in gaps.flat_map(|g| &g.line) {
+        let (x, y) = (i64::from(p) % w, i64::from(p) / w);
+        for dy in -r..=r {
+            for dx in -r..=r {
+                let (nx, ny) = (x + dx, y + dy);
+                if (0..w).contains(&nx) && ny >= 0 {
+                    near.insert((ny * w + nx) as u32);
+                }
+            }
+        }
+    }
+    near
 }
 
 /// Gives each closed line pixel the smallest label among its 4-neighbours
