@@ -124,34 +124,8 @@ fn cut_at(gap: &WallGap, at: &[usize], min: usize) -> Vec<WallGap> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::wall_stubs::tests::{AT_5_CM, mask};
     use super::*;
-
-    /// Limits at 0.05 m/px, as `pixel_config` sets them.
-    const AT_5_CM: WallStubLimits = WallStubLimits {
-        width: (6, 80),
-        thick: 8,
-        length: 20,
-        thin_share: 0.7,
-        head: 6,
-        face: 6,
-        front_run: 10,
-        front_reach: 30,
-        tolerance: 2,
-    };
-
-    /// A `w` × `h` free mask walled round, with `wall(x, y)` cells wall.
-    fn mask(w: u32, h: u32, wall: impl Fn(u32, u32) -> bool) -> Mask {
-        let mut m = Mask::new(w, h);
-        for y in 0..h {
-            for x in 0..w {
-                let edge = x == 0 || y == 0 || x + 1 == w || y + 1 == h;
-                if !edge && !wall(x, y) {
-                    m.as_mut()[(y * w + x) as usize] = 255;
-                }
-            }
-        }
-        m
-    }
 
     /// The opening along row `y` from column `x0` to `x1` (exclusive) of a
     /// `w`-wide image.

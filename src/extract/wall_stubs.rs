@@ -242,11 +242,11 @@ impl<F: Fn(i64, i64) -> bool> StubFinder<'_, F> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
     /// Limits at 0.05 m/px, as `pixel_config` sets them.
-    const AT_5_CM: WallStubLimits = WallStubLimits {
+    pub(in crate::extract) const AT_5_CM: WallStubLimits = WallStubLimits {
         width: (6, 80),
         thick: 8,
         length: 20,
@@ -259,7 +259,7 @@ mod tests {
     };
 
     /// A `w` × `h` free mask walled round, with `wall(x, y)` cells wall.
-    fn mask(w: u32, h: u32, wall: impl Fn(u32, u32) -> bool) -> Mask {
+    pub(in crate::extract) fn mask(w: u32, h: u32, wall: impl Fn(u32, u32) -> bool) -> Mask {
         let mut m = Mask::new(w, h);
         for y in 0..h {
             for x in 0..w {
