@@ -1,7 +1,8 @@
 //! Runs `nrgdb eval` over every map in the shared map set that has a ground
 //! truth (`<name>_gt.png` next to `<name>.yaml`) and prints a per-map table
 //! (with the door width error's median and p90 in metres) and the means,
-//! plain and furnished separately.
+//! plain and furnished separately, with each group's door width errors
+//! pooled over all its matched doors (median and p90, nearest rank).
 //!
 //! ```text
 //! cargo run --release --example eval_maps [-- MAPS_DIR [--method ccl] [--params p.toml] [--pictures OUT_DIR]]
@@ -71,10 +72,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "ms"
     );
     let metres = |v: Option<f64>| v.map_or_else(|| "-".to_string(), |m| format!("{m:.3}"));
-    let mut groups: [(Vec<Evaluation>, &str); 3] = [
-        (Vec::new(), "plain (IPA)"),
-        (Vec::new(), "furnished (IPA)"),
-        (Vec::new(), "rose2"),
+    // Per group: its evaluations, its name, and the width error of every
+    // door matched to a GT doorway line (metres).
+    let mut groups: [(Vec<Evaluation>, &str, Vec<f64>); 3] = [
+        (Vec::new(), "plain (IPA)", Vec::new()),
+        (Vec::new(), "furnished (IPA)", Vec::new()),
+        (Vec::new(), "rose2", Vec::new()),
     ];
     for name in &names {
         let grid = load_map(&dir.join(format!("{name}.yaml")), &LoadOptions::default())?;
@@ -105,8 +108,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             format!("{}/{}", e.rooms.segments, e.rooms.gt_rooms),
             ms
         );
+        let report = door_report(&gt, &x, &grid);
         if doors {
-            print_doors(&door_report(&gt, &x, &grid));
+            print_doors(&report);
         }
         if let Some(out) = &pictures {
             std::fs::create_dir_all(out)?;
@@ -120,9 +124,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             0
         };
         groups[g].0.push(e);
+        groups[g].2.extend(
+            report
+                .right_worst_first()
+                .iter()
+                .filter_map(|(d, _, truth)| d.width_m.map(|w| (w - truth).abs())),
+        );
     }
     println!();
-    for (evals, label) in &groups {
+    for (evals, label, errors) in &groups {
         if evals.is_empty() {
             continue;
         }
@@ -147,8 +157,23 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             worst(&|e| e.widths.p90_m),
             evals.len()
         );
+        println!(
+            "     door width error pooled over {} doors: median {} m, p90 {} m",
+            errors.len(),
+            metres(nearest_rank(errors, 0.5)),
+            metres(nearest_rank(errors, 0.9))
+        );
     }
     Ok(())
+}
+
+/// The `q` quantile of `values` by nearest rank (as `eval::width_scores`):
+/// the smallest value with at least a share `q` of them at or below it.
+fn nearest_rank(values: &[f64], q: f64) -> Option<f64> {
+    let mut v = values.to_vec();
+    v.sort_by(f64::total_cmp);
+    let k = (q * v.len() as f64).ceil().max(1.0) as usize;
+    v.get(k - 1).copied()
 }
 
 /// Each door matched to a GT doorway line, worst width error first, then
