@@ -476,6 +476,30 @@ mod tests {
     }
 
     #[test]
+    fn a_partition_behind_an_open_front_in_a_turned_building() {
+        // The building above turned by 20 degrees on a 0.05 m/px grid: the
+        // scans run along its own walls, and the partition's line still
+        // ends on the front and cuts it.
+        let (s, c) = 20f64.to_radians().sin_cos();
+        let grid = walled(300, 250, 0.05, |x, y| {
+            let (dx, dy) = (x as f64 + 0.5 - 150.0, y as f64 + 0.5 - 125.0);
+            let (u, v) = (dx * c + dy * s + 120.0, -dx * s + dy * c + 80.0);
+            let inside = (3.0..237.0).contains(&u) && (3.0..157.0).contains(&v);
+            let front = (40.0..43.0).contains(&v) && !(80.0..150.0).contains(&u);
+            let partition = (114.0..117.0).contains(&u) && v >= 80.0;
+            !inside || front || partition
+        });
+        let x = extract(&grid, &ExtractParams::default()).unwrap();
+        let (spaces, mut widths) = spaces_and_door_widths(&x);
+        widths.sort_by(f64::total_cmp);
+        assert_eq!(spaces, 3, "{widths:?}");
+        assert_eq!(widths.len(), 3, "{widths:?}");
+        for (w, truth) in widths.iter().zip([1.75, 1.75, 1.85]) {
+            assert!((w - truth).abs() <= 0.15, "{widths:?}");
+        }
+    }
+
+    #[test]
     fn a_doorway_in_a_wing_built_at_another_angle_is_found() {
         // At 0.1 m/px: a 10 x 16 m hall along the grid (x < 100) and,
         // beyond its east wall, a 12 x 5 m wing turned by 40 degrees: a
