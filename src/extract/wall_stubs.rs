@@ -45,7 +45,7 @@ pub(crate) struct WallStubLimits {
     pub front_reach: usize,
     /// How far across its end a front's pieces may lie; the pipeline also
     /// keeps a line this far from the doorway gaps and openings already
-    /// found.
+    /// found, but for the opening it ends on (`stub_openings.rs`).
     pub tolerance: usize,
 }
 
