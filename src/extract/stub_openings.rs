@@ -73,8 +73,8 @@ pub(crate) fn stub_openings(
 }
 
 /// Carries the start of `stub`'s line on to the pixel `at` of `opening`'s
-/// line that it meets, through any pixels left between them (where it met
-/// the opening's line only within a pixel and a half): closed with the
+/// line that it meets, through any free pixels left between them (where it
+/// met the opening's line only within a pixel and a half): closed with the
 /// line later, they leave no hole between the two rooms the line divides.
 fn reach_the_opening(stub: &mut WallGap, opening: &WallGap, at: usize, clean: &Mask) {
     let (w, h) = (clean.width(), clean.height());
@@ -84,7 +84,9 @@ fn reach_the_opening(stub: &mut WallGap, opening: &WallGap, at: usize, clean: &M
     let centre = |p: u32| [f64::from(p % w) + 0.5, f64::from(p / w) + 0.5];
     let between: Vec<u32> = line_pixels(centre(target), centre(first), w, h)
         .into_iter()
-        .filter(|p| !opening.line.contains(p) && !stub.line.contains(p))
+        .filter(|p| {
+            clean.as_raw()[*p as usize] != 0 && !opening.line.contains(p) && !stub.line.contains(p)
+        })
         .collect();
     stub.width_px += between.len();
     stub.line.splice(0..0, between);
