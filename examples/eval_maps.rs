@@ -20,7 +20,8 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use nrgdb::eval::{
-    DoorReport, Evaluation, door_report, evaluate, evaluation_picture, load_ground_truth,
+    DoorReport, DoorWidth, Evaluation, door_report, evaluate, evaluation_picture,
+    load_ground_truth, width_scores,
 };
 use nrgdb::extract::{ExtractParams, Method, extract};
 use nrgdb::grid::{LoadOptions, load_map};
@@ -72,9 +73,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "ms"
     );
     let metres = |v: Option<f64>| v.map_or_else(|| "-".to_string(), |m| format!("{m:.3}"));
-    // Per group: its evaluations, its name, and the width error of every
-    // door matched to a GT doorway line (metres).
-    let mut groups: [(Vec<Evaluation>, &str, Vec<f64>); 3] = [
+    // Per group: its evaluations, its name, and every door matched to a GT
+    // doorway line with its width.
+    let mut groups: [(Vec<Evaluation>, &str, Vec<DoorWidth>); 3] = [
         (Vec::new(), "plain (IPA)", Vec::new()),
         (Vec::new(), "furnished (IPA)", Vec::new()),
         (Vec::new(), "rose2", Vec::new()),
@@ -128,11 +129,18 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             report
                 .right_worst_first()
                 .iter()
-                .filter_map(|(d, _, truth)| d.width_m.map(|w| (w - truth).abs())),
+                .filter_map(|&(d, line, truth_m)| {
+                    d.width_m.map(|reported_m| DoorWidth {
+                        door: d.door,
+                        line,
+                        reported_m,
+                        truth_m,
+                    })
+                }),
         );
     }
     println!();
-    for (evals, label, errors) in &groups {
+    for (evals, label, widths) in &groups {
         if evals.is_empty() {
             continue;
         }
@@ -157,23 +165,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             worst(&|e| e.widths.p90_m),
             evals.len()
         );
+        let pooled = width_scores(widths);
         println!(
             "     door width error pooled over {} doors: median {} m, p90 {} m",
-            errors.len(),
-            metres(nearest_rank(errors, 0.5)),
-            metres(nearest_rank(errors, 0.9))
+            pooled.matched,
+            metres(pooled.median_m),
+            metres(pooled.p90_m)
         );
     }
     Ok(())
-}
-
-/// The `q` quantile of `values` by nearest rank (as `eval::width_scores`):
-/// the smallest value with at least a share `q` of them at or below it.
-fn nearest_rank(values: &[f64], q: f64) -> Option<f64> {
-    let mut v = values.to_vec();
-    v.sort_by(f64::total_cmp);
-    let k = (q * v.len() as f64).ceil().max(1.0) as usize;
-    v.get(k - 1).copied()
 }
 
 /// Each door matched to a GT doorway line, worst width error first, then
