@@ -408,6 +408,32 @@ fn shared_fr079_carmen_rooms_behind_a_broken_wall() {
     assert!(e.connections.recall >= 0.89, "{e:?}");
 }
 
+/// A real robot map (ROSE²'s Intel lab): a room opens 2.8 m wide onto the
+/// corridor, between a wall going on below and a short stub hanging from
+/// the wall across above: a reveal, which is the opening's jamb (see
+/// `GapKind::Opening` in `extract/wall_gaps.rs`). The room is a space of
+/// its own and the opening its door, as wide as the GT's doorway line.
+/// Measured: connections 79.17 %, doors 67.86 %; before the rule the room
+/// was one space with the corridor (75.00 %, 64.29 %).
+#[test]
+fn shared_intel_map_room_open_behind_a_reveal() {
+    let Some(maps) = shared() else { return };
+    let grid = load_map(&maps.join("rose2_intel_map.yaml"), &LoadOptions::default()).unwrap();
+    let gt = nrgdb::eval::load_ground_truth(&maps.join("rose2_intel_map_gt.png"), &grid).unwrap();
+    let x = extract(&grid, &ExtractParams::default()).unwrap();
+    let e = nrgdb::eval::evaluate(&gt, &x, grid.resolution);
+    assert!(e.connections.recall >= 0.79, "{e:?}");
+    let report = nrgdb::eval::door_report(&gt, &x, &grid);
+    let wide = report
+        .right_worst_first()
+        .into_iter()
+        .filter(|(d, _, truth)| {
+            (2.6..3.0).contains(truth) && d.width_m.is_some_and(|w| (w - truth).abs() <= 0.1)
+        })
+        .count();
+    assert_eq!(wide, 1, "{:?}", report.right_worst_first());
+}
+
 /// Issue 19's width target on the shared IPA maps (plain): each door's
 /// reported width against the GT doorway line it sits on, median error
 /// ≤ 0.10 m and p90 ≤ 0.25 m on every map. The truth is the GT picture,

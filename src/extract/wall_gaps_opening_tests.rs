@@ -1,0 +1,152 @@
+//! Tests of `wall_gaps.rs` for openings wider than doorways: their own
+//! scan, the stack's stop at an alcove, narrow faces, and jambs behind a
+//! reveal, on small hand-made masks.
+
+use super::*;
+
+/// A 30 x 14 px floor with a wall in rows 6-7 that has a 12 px
+/// opening (x 8..20), and `extra(x, y)` walls besides.
+fn front(extra: impl Fn(usize, usize) -> bool) -> Mask {
+    Mask::from_fn(30, 14, |x, y| {
+        let (x, y) = (x as usize, y as usize);
+        let wall = (6..8).contains(&y) && !(8..20).contains(&x);
+        image::Luma([if wall || extra(x, y) { 0 } else { 255 }])
+    })
+}
+
+const OPENINGS: GapLimits = GapLimits {
+    width: (9, 16),
+    jamb: 4,
+    depth: 3,
+    kind: GapKind::Opening {
+        face: 2,
+        step: 2,
+        near_margin: 2,
+    },
+};
+
+/// [`OPENINGS`] up to 24 px wide: an alcove's rows are gaps too.
+const ALCOVE_OPENINGS: GapLimits = GapLimits {
+    width: (9, 24),
+    ..OPENINGS
+};
+
+#[test]
+fn an_opening_wider_than_any_doorway_is_found_by_its_own_scan() {
+    let g = axis_gaps(&front(|_, _| false), OPENINGS);
+    assert_eq!(g.len(), 1, "{g:?}");
+    assert_eq!(g[0].width_px, 12);
+    // Jamb to jamb, along row 7 (the middle of the 2-row stack).
+    assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
+    let index = GapIndex::new(&g);
+    assert_eq!(index.crossed(&g[0].line[..6]), Some(&g[0]));
+    assert_eq!(index.crossed(&g[0].line[..5]), None);
+    // The doorway scan takes none so wide.
+    let doorways = GapLimits {
+        width: (2, 8),
+        kind: GapKind::Doorway,
+        ..OPENINGS
+    };
+    assert!(axis_gaps(&front(|_, _| false), doorways).is_empty());
+    // A wall hugging one face (row 9, x 12..20) leaves no opening.
+    let hugged = front(|x, y| y == 9 && (12..20).contains(&x));
+    assert!(axis_gaps(&hugged, OPENINGS).is_empty());
+}
+
+#[test]
+fn an_opening_into_an_alcove_no_wider_than_an_opening_ends_at_the_step() {
+    // The front of `front`, and below it an alcove 20 px wide (x
+    // 4..24) down to the edge: every alcove row is itself a gap no
+    // wider than an opening may be.
+    let alcove = front(|x, y| y >= 8 && !(4..24).contains(&x));
+    let limits = ALCOVE_OPENINGS;
+    let g = axis_gaps(&alcove, limits);
+    assert_eq!(g.len(), 1, "{g:?}");
+    assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
+    // Without the stop the stack runs 8 rows deep, past any wall.
+    let no_stop = GapLimits {
+        kind: GapKind::Opening {
+            face: 2,
+            step: 5,
+            near_margin: 2,
+        },
+        ..limits
+    };
+    assert!(axis_gaps(&alcove, no_stop).is_empty());
+}
+
+#[test]
+fn an_opening_from_an_alcove_ends_where_the_wall_begins() {
+    // The front of `front`, and above it an alcove 20 px wide (x
+    // 4..24) up to the edge: the stack of its rows steps in at the
+    // wall, whose own rows are the opening.
+    let alcove = front(|x, y| y < 6 && !(4..24).contains(&x));
+    let limits = ALCOVE_OPENINGS;
+    let g = axis_gaps(&alcove, limits);
+    assert_eq!(g.len(), 1, "{g:?}");
+    assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
+    assert!(!g[0].narrow_faces);
+}
+
+#[test]
+fn an_opening_into_a_room_hardly_wider_than_it_has_narrow_faces() {
+    // Below the front of `front` a room 15 px wide (x 6..21): the
+    // floor beyond that face is wider than the 12 px opening by 3 px,
+    // less than the 4 px jamb, at least the near margin of 2.
+    let room = front(|x, y| y >= 8 && !(6..21).contains(&x));
+    let g = axis_gaps(&room, OPENINGS);
+    assert_eq!(g.len(), 1, "{g:?}");
+    assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
+    assert!(g[0].narrow_faces);
+    // Floor a jamb wider on both faces: no narrow faces.
+    let open = axis_gaps(&front(|_, _| false), OPENINGS);
+    assert_eq!(open.len(), 1, "{open:?}");
+    assert!(!open[0].narrow_faces);
+    // A near margin above 3 px leaves no opening.
+    let strict = GapLimits {
+        kind: GapKind::Opening {
+            face: 2,
+            step: 2,
+            near_margin: 4,
+        },
+        ..OPENINGS
+    };
+    assert!(axis_gaps(&room, strict).is_empty());
+}
+
+/// The opening of [`front`] with the wall left of it cut back to a stub
+/// (x `stub_from..8`, rows `stub_rows`) standing from a wall across at x 5
+/// (rows 0..8; none without `behind`): a room's side wall, the floor
+/// beyond it and below the opening's wall a corridor.
+fn reveal(stub_from: usize, stub_rows: std::ops::Range<usize>, behind: bool) -> Mask {
+    Mask::from_fn(30, 14, |x, y| {
+        let (x, y) = (x as usize, y as usize);
+        let right = (6..8).contains(&y) && x >= 20;
+        let stub = stub_rows.contains(&y) && (stub_from..8).contains(&x);
+        image::Luma([if right || stub || (behind && x == 5 && y < 8) {
+            0
+        } else {
+            255
+        }])
+    })
+}
+
+#[test]
+fn an_opening_may_end_at_a_reveal_standing_from_a_wall_across() {
+    // A 2 px stub as thick as the wall: with the wall across, 3 px of
+    // wall in line, short of the 4 px jamb.
+    let g = axis_gaps(&reveal(6, 6..8, true), OPENINGS);
+    assert_eq!(g.len(), 1, "{g:?}");
+    assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
+    // The stub with no wall behind it is no jamb.
+    assert!(axis_gaps(&reveal(6, 6..8, false), OPENINGS).is_empty());
+    // A block 5 rows thick (a shelf standing from the wall) is no reveal:
+    // thicker than the opening's wall, too short to be a wall across.
+    assert!(axis_gaps(&reveal(6, 4..9, true), OPENINGS).is_empty());
+    // Doorway gaps take no reveals.
+    let doorways = GapLimits {
+        kind: GapKind::Doorway,
+        ..OPENINGS
+    };
+    assert!(axis_gaps(&reveal(6, 6..8, true), doorways).is_empty());
+}
