@@ -372,13 +372,29 @@ fn shared_willow_full_gives_a_connected_sensible_nrg() {
     assert!(widths.last().is_some_and(|&w| w <= 2.2), "{widths:?}");
 }
 
-#[test]
-fn shared_freiburg79_scores() {
-    let Some(maps) = shared() else { return };
-    let grid = load_map(&maps.join("Freiburg79_scan.yaml"), &LoadOptions::default()).unwrap();
-    let gt = nrgdb::eval::load_ground_truth(&maps.join("Freiburg79_scan_gt.png"), &grid).unwrap();
+/// A shared map with ground truth (`NAME.yaml`, `NAME_gt.png`) extracted
+/// with the defaults and scored; None when the shared data is absent.
+struct Scored {
+    grid: OccupancyGrid,
+    gt: nrgdb::eval::GroundTruth,
+    x: nrgdb::extract::Extraction,
+    e: nrgdb::eval::Evaluation,
+}
+
+fn scored_shared(name: &str) -> Option<Scored> {
+    let maps = shared()?;
+    let grid = load_map(&maps.join(format!("{name}.yaml")), &LoadOptions::default()).unwrap();
+    let gt = nrgdb::eval::load_ground_truth(&maps.join(format!("{name}_gt.png")), &grid).unwrap();
     let x = extract(&grid, &ExtractParams::default()).unwrap();
     let e = nrgdb::eval::evaluate(&gt, &x, grid.resolution);
+    Some(Scored { grid, gt, x, e })
+}
+
+#[test]
+fn shared_freiburg79_scores() {
+    let Some(Scored { e, .. }) = scored_shared("Freiburg79_scan") else {
+        return;
+    };
     assert!(
         e.rooms.recall_micro > 0.85 && e.rooms.precision_micro > 0.95,
         "{e:?}"
@@ -394,16 +410,9 @@ fn shared_freiburg79_scores() {
 /// before that rule 91.16 % and 82.76 %.
 #[test]
 fn shared_fr079_carmen_rooms_behind_a_broken_wall() {
-    let Some(maps) = shared() else { return };
-    let grid = load_map(
-        &maps.join("rose2_fr079_carmen.yaml"),
-        &LoadOptions::default(),
-    )
-    .unwrap();
-    let gt =
-        nrgdb::eval::load_ground_truth(&maps.join("rose2_fr079_carmen_gt.png"), &grid).unwrap();
-    let x = extract(&grid, &ExtractParams::default()).unwrap();
-    let e = nrgdb::eval::evaluate(&gt, &x, grid.resolution);
+    let Some(Scored { e, .. }) = scored_shared("rose2_fr079_carmen") else {
+        return;
+    };
     assert!(e.rooms.precision_micro >= 0.93, "{e:?}");
     assert!(e.connections.recall >= 0.89, "{e:?}");
 }
@@ -417,11 +426,9 @@ fn shared_fr079_carmen_rooms_behind_a_broken_wall() {
 /// was one space with the corridor (75.00 %, 64.29 %).
 #[test]
 fn shared_intel_map_room_open_behind_a_reveal() {
-    let Some(maps) = shared() else { return };
-    let grid = load_map(&maps.join("rose2_intel_map.yaml"), &LoadOptions::default()).unwrap();
-    let gt = nrgdb::eval::load_ground_truth(&maps.join("rose2_intel_map_gt.png"), &grid).unwrap();
-    let x = extract(&grid, &ExtractParams::default()).unwrap();
-    let e = nrgdb::eval::evaluate(&gt, &x, grid.resolution);
+    let Some(Scored { grid, gt, x, e }) = scored_shared("rose2_intel_map") else {
+        return;
+    };
     assert!(e.connections.recall >= 0.79, "{e:?}");
     let report = nrgdb::eval::door_report(&gt, &x, &grid);
     let wide = report
