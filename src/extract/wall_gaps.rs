@@ -108,7 +108,9 @@ pub(crate) enum GapKind {
     /// wall's face, and the wall's own lines start a stack of their own.
     /// On each face the floor must be wider than the opening by a jamb;
     /// by `near_margin` only, the gap is kept as
-    /// [`WallGap::narrow_faces`]. A jamb may also be a **reveal**: a wall
+    /// [`WallGap::narrow_faces`]. The wall in line may be thicker at its
+    /// first pixel, a ragged bump, if not at the next. A jamb may also be
+    /// a **reveal**: a wall
     /// in line shorter than a jamb, as thin as the opening's wall, that
     /// meets a wall across (a stub or door frame hanging from the wall
     /// the opening's line ends at, which the sensor saw).
@@ -387,14 +389,15 @@ fn scan(
                     up + down <= depth + 2
                 }
             };
+            // The pixel after `k`, stepping by `step`, if in the line.
+            let next = |k: usize, step: isize| k.checked_add_signed(step).filter(|&n| n < len);
             // A reveal: wall in line from `k` on (stepping by `step`), as
             // thin as the opening's wall for its first two pixels, that
             // meets a wall across before a jamb's length.
             let reveal = |k: usize, step: isize| {
                 limits.kind != GapKind::Doorway
                     && thin(k)
-                    && k.checked_add_signed(step)
-                        .is_some_and(|next| next < len && thin(next))
+                    && next(k, step).is_some_and(thin)
                     && (first..=last).any(|l| {
                         (0..limits.jamb as isize)
                             .map_while(|i| {
@@ -404,8 +407,12 @@ fn scan(
                             .any(&across)
                     })
             };
-            let jamb =
-                |k: usize, step: isize| (along(k, step) && thin(k)) || across(k) || reveal(k, step);
+            // A wall in line is as thin as the opening's wall at its first
+            // pixel or, past a ragged bump there, the next.
+            let thin_end = |k: usize, step: isize| thin(k) || next(k, step).is_some_and(thin);
+            let jamb = |k: usize, step: isize| {
+                (along(k, step) && thin_end(k, step)) || across(k) || reveal(k, step)
+            };
             let left_jamb = lo > 0 && jamb(lo - 1, -1);
             let right_jamb = hi < len && jamb(hi, 1);
             if depth <= limits.depth && wide_enough && faces_open && left_jamb && right_jamb {

@@ -150,3 +150,17 @@ fn an_opening_may_end_at_a_reveal_standing_from_a_wall_across() {
     };
     assert!(axis_gaps(&reveal(6, 6..8, true), doorways).is_empty());
 }
+
+#[test]
+fn a_ragged_bump_at_the_end_of_the_wall_in_line_is_still_its_jamb() {
+    // The wall right of the opening is 5 rows thick at its first column
+    // (x 20, rows 5..10): thicker than the opening's wall, too short to be
+    // a wall across. The next column is the wall's own 2 rows.
+    let bump = front(|x, y| x == 20 && (5..10).contains(&y));
+    let g = axis_gaps(&bump, OPENINGS);
+    assert_eq!(g.len(), 1, "{g:?}");
+    assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
+    // Two such columns: a wall offset from the opening's, no jamb.
+    let block = front(|x, y| (20..22).contains(&x) && (5..10).contains(&y));
+    assert!(axis_gaps(&block, OPENINGS).is_empty());
+}

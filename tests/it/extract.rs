@@ -417,28 +417,50 @@ fn shared_fr079_carmen_rooms_behind_a_broken_wall() {
     assert!(e.connections.recall >= 0.89, "{e:?}");
 }
 
-/// A real robot map (ROSE²'s Intel lab): a room opens 2.8 m wide onto the
-/// corridor, between a wall going on below and a short stub hanging from
-/// the wall across above: a reveal, which is the opening's jamb (see
-/// `GapKind::Opening` in `extract/wall_gaps.rs`). The room is a space of
-/// its own and the opening its door, as wide as the GT's doorway line.
-/// Measured: connections 79.17 %, doors 67.86 %; before the rule the room
-/// was one space with the corridor (75.00 %, 64.29 %).
+/// Real robot maps (ROSE²'s two maps of the Intel lab): a room opens
+/// 2.8–2.95 m wide onto the corridor; the room is a space of its own and
+/// the opening its door, as wide as the GT's doorway line (see
+/// `GapKind::Opening` in `extract/wall_gaps.rs`).
+/// - rose2_intel_map: the front ends above on a short stub hanging from
+///   the wall across, a reveal. Measured: connections 79.17 %, the door
+///   2.80 m on a 2.80 m line; before the rule, 75.00 % and no door.
+/// - rose2_intel_carmen: the front ends below on a wall in line whose
+///   first column carries a ragged bump, thicker than the opening's wall.
+///   Measured: connections 71.43 %, the door 3.15 m on a 2.95 m line;
+///   before, 67.86 % and no door.
 #[test]
-fn shared_intel_map_room_open_behind_a_reveal() {
-    let Some(Scored { grid, gt, x, e }) = scored_shared("rose2_intel_map") else {
-        return;
-    };
-    assert!(e.connections.recall >= 0.79, "{e:?}");
-    let report = nrgdb::eval::door_report(&gt, &x, &grid);
-    let wide = report
-        .right_worst_first()
+fn shared_intel_room_fronts_are_doors() {
+    for (name, connections, lengths, tolerance) in [
+        ("rose2_intel_map", 0.79, 2.6..3.0, 0.1),
+        ("rose2_intel_carmen", 0.71, 2.9..3.0, 0.25),
+    ] {
+        let Some(Scored { grid, gt, x, e }) = scored_shared(name) else {
+            return;
+        };
+        assert!(e.connections.recall >= connections, "{name}: {e:?}");
+        let doors = doors_on_lines(&grid, &gt, &x, lengths, tolerance);
+        assert_eq!(doors, 1, "{name}");
+    }
+}
+
+/// How many detected doors match a GT doorway line whose length lies in
+/// `lengths` (m) and are as wide as it within `tolerance` (m).
+fn doors_on_lines(
+    grid: &OccupancyGrid,
+    gt: &nrgdb::eval::GroundTruth,
+    x: &nrgdb::extract::Extraction,
+    lengths: std::ops::Range<f64>,
+    tolerance: f64,
+) -> usize {
+    let report = nrgdb::eval::door_report(gt, x, grid);
+    let right = report.right_worst_first();
+    eprintln!("matched doors, worst width first: {right:?}");
+    right
         .into_iter()
         .filter(|(d, _, truth)| {
-            (2.6..3.0).contains(truth) && d.width_m.is_some_and(|w| (w - truth).abs() <= 0.1)
+            lengths.contains(truth) && d.width_m.is_some_and(|w| (w - truth).abs() <= tolerance)
         })
-        .count();
-    assert_eq!(wide, 1, "{:?}", report.right_worst_first());
+        .count()
 }
 
 /// Issue 19's width target on the shared IPA maps (plain): each door's
