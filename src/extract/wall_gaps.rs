@@ -109,16 +109,16 @@ pub(crate) enum GapKind {
     /// On each face the floor must be wider than the opening by a jamb;
     /// by `near_margin` only, the gap is kept as
     /// [`WallGap::narrow_faces`]. The wall in line may be thicker at its
-    /// first pixel, a ragged bump, if not at the next. A jamb may also be
-    /// a **reveal**: a wall
-    /// in line shorter than a jamb, as thin as the opening's wall, that
-    /// meets a wall across (a stub or door frame hanging from the wall
-    /// the opening's line ends at, which the sensor saw).
-    /// Measured on the 19 development buildings and 400 simulated ones
-    /// (benches/README.md, "Openings behind a reveal"): intel_map and two
-    /// houses gain doorways, nothing else changes; without the thinness
-    /// of its first two pixels, shelves standing from a wall and ragged
-    /// wall faces on turned maps pass as reveals.
+    /// first pixel (a ragged bump) if not at the next. A jamb may also be
+    /// a **reveal**: a wall in line shorter than a jamb, as thin as the
+    /// opening's wall, that meets a wall across (a stub or door frame
+    /// hanging from the wall the opening's line ends at, which the sensor
+    /// saw). Measured on the 19 development buildings and 400 simulated
+    /// ones (benches/README.md, "Openings behind a reveal" and "A ragged
+    /// bump at an opening's jamb"): intel_map, intel_carmen and two houses
+    /// gain doorways, nothing else changes; without the thinness of its
+    /// first two pixels, shelves standing from a wall and ragged wall
+    /// faces on turned maps pass as reveals.
     Opening {
         /// Lines looked at beyond each face.
         face: usize,

@@ -372,8 +372,7 @@ fn shared_willow_full_gives_a_connected_sensible_nrg() {
     assert!(widths.last().is_some_and(|&w| w <= 2.2), "{widths:?}");
 }
 
-/// A shared map with ground truth (`NAME.yaml`, `NAME_gt.png`) extracted
-/// with the defaults and scored; None when the shared data is absent.
+/// A shared map with its ground truth, extraction and scores.
 struct Scored {
     grid: OccupancyGrid,
     gt: nrgdb::eval::GroundTruth,
@@ -381,6 +380,9 @@ struct Scored {
     e: nrgdb::eval::Evaluation,
 }
 
+/// The shared map `name` (`NAME.yaml`, `NAME_gt.png`) extracted with the
+/// defaults and scored against its ground truth; None when the shared data
+/// is absent.
 fn scored_shared(name: &str) -> Option<Scored> {
     let maps = shared()?;
     let grid = load_map(&maps.join(format!("{name}.yaml")), &LoadOptions::default()).unwrap();
