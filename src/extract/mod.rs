@@ -56,6 +56,7 @@ mod pixel_config;
 mod polygon;
 mod regions;
 mod resample;
+mod seen_walls;
 mod segment;
 mod simplify;
 mod skeleton_doors;

@@ -22,6 +22,7 @@ use super::merge::merge_small;
 use super::pixel_config::{PixelConfig, Segmentation};
 use super::regions::Regions;
 use super::resample::{coarsen, pixel_centroids, refine};
+use super::seen_walls::ends_on_seen_walls;
 use super::segment::segment_basins;
 use super::skeleton_doors::skeleton_doorways;
 use super::stub_openings::stub_openings;
@@ -31,7 +32,7 @@ use super::wall_gaps::{
 };
 use super::wall_support::WallSupport;
 use super::{ExtractError, ExtractParams};
-use crate::grid::{Cell, OccupancyGrid};
+use crate::grid::OccupancyGrid;
 use crate::imaging::{
     Labels, Mask, distance_to_background, dominant_orientation, further_wall_directions,
 };
@@ -309,31 +310,6 @@ fn openings(
     found
 }
 
-/// Whether both ends of the line through `pixels` (row-major in `grid`, in
-/// order along the line) meet an occupied cell within `reach` pixels
-/// further along it: walls the sensor saw, not space it never saw.
-fn ends_on_seen_walls(grid: &OccupancyGrid, pixels: &[u32], reach: i64) -> bool {
-    let (Some(&a), Some(&b)) = (pixels.first(), pixels.last()) else {
-        return false;
-    };
-    let w = grid.width;
-    let at = |p: u32| [f64::from(p % w), f64::from(p / w)];
-    let (a, b) = (at(a), at(b));
-    let len = (b[0] - a[0]).hypot(b[1] - a[1]);
-    if len <= 0.0 {
-        return false;
-    }
-    let u = [(b[0] - a[0]) / len, (b[1] - a[1]) / len];
-    let seen = |p: [f64; 2], sign: f64| {
-        (1..=reach).any(|k| {
-            let k = sign * k as f64;
-            let (x, y) = ((p[0] + u[0] * k).round(), (p[1] + u[1] * k).round());
-            x >= 0.0 && y >= 0.0 && grid.cell(x as u32, y as u32) == Some(Cell::Occupied)
-        })
-    };
-    seen(a, -1.0) && seen(b, 1.0)
-}
-
 /// Stage `segment`: the free space cut into regions, by the watershed of
 /// its distance transform or by the paper's CCL.
 fn segment(free: &FreeSpace, dist: &[f32], px: &PixelConfig) -> Labels {
@@ -554,13 +530,13 @@ mod tests {
         assert_eq!((others, widths.len()), (2, 1), "{widths:?}");
     }
 
-    /// At 0.1 m/px: a 12 x 5 m living area above a 0.2 m front wall (rows
-    /// 50..52) with a 2.5 m opening (x 30..55) into a room 3 m wide (x
-    /// 28..58) and 4.6 m deep: the floor beyond the front goes on only
+    /// At 0.1 m/px: a 12 x 5 m living area above a 0.3 m front wall (rows
+    /// 50..53) with a 2.5 m opening (x 30..55) into a room 3 m wide (x
+    /// 28..58) and 4.5 m deep: the floor beyond the front goes on only
     /// 0.2 and 0.3 m past the opening's ends, less than a jamb. Elsewhere
     /// below the front is `beside` (`#` a wall seen, `?` never seen); the
-    /// front's cells are `front`.
-    fn room_behind_a_wide_front(front: char, beside: char) -> OccupancyGrid {
+    /// front's rows are `front`, top to bottom.
+    fn room_behind_a_wide_front(front: [char; 3], beside: char) -> OccupancyGrid {
         let (w, h) = (122, 100);
         let rows: Vec<String> = (0..h)
             .map(|y| {
@@ -568,8 +544,8 @@ mod tests {
                     .map(|x| match (x, y) {
                         _ if x == 0 || y == 0 || x == w - 1 || y == h - 1 => '#',
                         (_, 1..50) => '.',
-                        (30..55, 50..52) => '.',
-                        (_, 50..52) => front,
+                        (30..55, 50..53) => '.',
+                        (_, 50..53) => front[y - 50],
                         (28..58, _) => '.',
                         _ => beside,
                     })
@@ -579,40 +555,33 @@ mod tests {
         OccupancyGrid::from_ascii(&rows.join("\n"), 0.1)
     }
 
-    #[test]
-    fn an_opening_into_a_room_hardly_wider_than_its_front_is_a_door_between_walls_seen() {
-        let grid = room_behind_a_wide_front('#', '#');
-        let (others, widths) =
-            spaces_and_door_widths(&extract(&grid, &ExtractParams::default()).unwrap());
-        assert_eq!(others, 2, "{widths:?}");
-        assert_eq!(widths.len(), 1, "{widths:?}");
-        assert!((widths[0] - 2.5).abs() <= 0.1, "{widths:?}");
-        // The same front never seen by the sensor: the line would end on
-        // unknown space, as on the shadow behind furniture.
-        let unseen = room_behind_a_wide_front('?', '?');
-        let (_, widths) =
-            spaces_and_door_widths(&extract(&unseen, &ExtractParams::default()).unwrap());
-        assert!(widths.iter().all(|w| (w - 2.5).abs() > 0.3), "{widths:?}");
+    /// The widths (m) of the doors `extract` finds in `grid`, with how
+    /// many spaces are no doors.
+    fn front_doors(grid: &OccupancyGrid) -> (usize, Vec<f64>) {
+        spaces_and_door_widths(&extract(grid, &ExtractParams::default()).unwrap())
     }
 
     #[test]
-    fn a_line_ends_on_seen_walls_only_where_both_ends_meet_occupied_cells() {
-        let grid = OccupancyGrid::from_ascii(
-            "#.....#
-             ?.....#
-             #.....?",
-            0.05,
-        );
-        let row = |y: u32| (1..6).map(|x| y * 7 + x).collect::<Vec<u32>>();
-        assert!(ends_on_seen_walls(&grid, &row(0), 1));
-        assert!(!ends_on_seen_walls(&grid, &row(1), 1));
-        assert!(!ends_on_seen_walls(&grid, &row(2), 1));
-        assert!(!ends_on_seen_walls(&grid, &[], 1));
-        // A wall a pixel further than the reach is not met.
-        let short = OccupancyGrid::from_ascii("#?.....?#", 0.05);
-        let line: Vec<u32> = (2..7).collect();
-        assert!(ends_on_seen_walls(&short, &line, 2));
-        assert!(!ends_on_seen_walls(&short, &line, 1));
+    fn an_opening_into_a_room_hardly_wider_than_its_front_is_a_door_between_walls_seen() {
+        // Seen throughout; then with the front's two faces seen and its
+        // core not, as in a log-odds map: the sensor saw the walls the
+        // opening ends on all the same.
+        for front in [['#'; 3], ['#', '?', '#']] {
+            let (others, widths) = front_doors(&room_behind_a_wide_front(front, '#'));
+            assert_eq!(others, 2, "{front:?}: {widths:?}");
+            assert_eq!(widths.len(), 1, "{front:?}: {widths:?}");
+            assert!((widths[0] - 2.5).abs() <= 0.1, "{front:?}: {widths:?}");
+        }
+        // The front never seen by the sensor, or from the living area
+        // only: the line would end on unknown space, as on the shadow
+        // behind furniture.
+        for front in [['?'; 3], ['#', '?', '?']] {
+            let (_, widths) = front_doors(&room_behind_a_wide_front(front, '?'));
+            assert!(
+                widths.iter().all(|w| (w - 2.5).abs() > 0.3),
+                "{front:?}: {widths:?}"
+            );
+        }
     }
 
     #[test]
