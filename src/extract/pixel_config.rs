@@ -44,6 +44,16 @@ const SUPPORT_PAIR_RUN_M: f64 = 1.0;
 const SUPPORT_TOLERANCE_M: f64 = 0.5;
 const SUPPORT_REACH_M: f64 = 0.6;
 const SUPPORT_NEAR_M: f64 = 2.0;
+/// How far apart across (m) the walls past an opening's end on its two
+/// faces may lie and be one passage's side wall (`wall_support.rs`,
+/// `crosses_passage`): a pixel at 0.05 m/px, besides the pixel each side a
+/// run's own line takes in (`wall_runs.rs`). Measured on the 19
+/// development buildings and 400 simulated ones (benches/README.md, "A
+/// passage's side is one wall line"): 0 and 1 px measure the same on the
+/// shared maps; at 2 px
+/// rose2_intel_map loses the doorway it gains, and with no limit (before)
+/// NLB's 3.4 m room front is taken for a passage too.
+const PASSAGE_SIDE_LINE_M: f64 = 0.05;
 
 /// Clutter is no jamb (`wall_support.rs`, `furniture::clutter_pixels`): a
 /// door-wide border with an end on an obstacle island at most this wide
@@ -398,6 +408,7 @@ impl PixelConfig {
                 gap: px(WALL_LINE_GAP_M).round().max(1.0) as i64,
                 tolerance: px(SUPPORT_TOLERANCE_M).round() as i64,
                 reach: px(SUPPORT_REACH_M),
+                side_line: px(PASSAGE_SIDE_LINE_M).round() as i64,
                 near: px(SUPPORT_NEAR_M),
                 clutter_max: px(CLUTTER_JAMB_MAX_M),
                 wall_elongation: WALL_PIECE_ELONGATION,

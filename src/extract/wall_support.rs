@@ -73,6 +73,10 @@ pub(crate) struct SupportLimits {
     pub tolerance: i64,
     /// How far along its line a run may end from a doorway end.
     pub reach: f64,
+    /// How far apart across (whole pixels, between the lines runs are
+    /// kept on) the runs past a passage's two faces may lie and be one
+    /// wall line (`crosses_passage`).
+    pub side_line: i64,
     /// How far from a doorway's middle a long run shows that the walls
     /// there follow the dominant directions.
     pub near: f64,
@@ -251,7 +255,11 @@ impl WallSupport {
     /// Whether the opening whose line is `pixels` crosses a passage: at one
     /// of its ends a wall line across (runs of at least `tie_run`, a jamb,
     /// within `tolerance` of the end's line) goes on more than `reach` past
-    /// both faces of the wall, within twice `long_run`; as a corridor's side
+    /// both faces of the wall, within twice `long_run`, **one** line on
+    /// both faces (the runs past the two faces lie within `side_line` of
+    /// each other across, not two walls that each pass the end at another
+    /// distance, such as a room's side wall and the jamb of the next room's
+    /// front); as a corridor's side
     /// walls do where the line joins two wall ends across it, or a room's
     /// front wall where the line runs from furniture standing out from the
     /// back wall to the front (with a doorway beside the end, the wall may
@@ -282,17 +290,25 @@ impl WallSupport {
             } else {
                 building
             };
-            let runs: Vec<Run> = runs
-                .near(j, project(p, across), l.tolerance)
-                .filter(|&r| length(r) >= l.tie_run)
-                .collect();
-            let lower = runs
+            // The lines (offsets across) with a run past each face.
+            let off = project(p, across).round() as i64;
+            let (mut lower, mut upper) = (Vec::new(), Vec::new());
+            for line in off - l.tolerance..=off + l.tolerance {
+                for r in runs
+                    .near(j, line as f64, 0)
+                    .filter(|&r| length(r) >= l.tie_run)
+                {
+                    if (r.0 as f64) < t - l.reach && r.1 as f64 > t - window {
+                        lower.push(line);
+                    }
+                    if r.1 as f64 > t + l.reach && (r.0 as f64) < t + window {
+                        upper.push(line);
+                    }
+                }
+            }
+            lower
                 .iter()
-                .any(|r| (r.0 as f64) < t - l.reach && r.1 as f64 > t - window);
-            let upper = runs
-                .iter()
-                .any(|r| r.1 as f64 > t + l.reach && (r.0 as f64) < t + window);
-            lower && upper
+                .any(|a| upper.iter().any(|b| (a - b).abs() <= l.side_line))
         };
         both(a) || both(b)
     }

@@ -12,6 +12,7 @@ const AT_10_CM: SupportLimits = SupportLimits {
     gap: 1,
     tolerance: 5,
     reach: 6.0,
+    side_line: 1,
     near: 20.0,
     clutter_max: 20.0,
     wall_elongation: 3.0,
@@ -75,6 +76,15 @@ fn a_line_joining_wall_ends_across_a_corridor_crosses_a_passage() {
             || ((18..20).contains(&x) && (33..58).contains(&y))
     });
     assert!(piece.crosses_passage(&line));
+    // The same piece 0.4 m further into the room below (as the jamb of
+    // the next room's front, say): the side wall above and the piece pass
+    // the end on two lines, no passage's one side wall.
+    let offset = grid(w, 60, |x, y| {
+        (y == 30 && !(20..50).contains(&x))
+            || (x == 19 && y < 30)
+            || ((23..25).contains(&x) && (33..58).contains(&y))
+    });
+    assert!(!offset.crosses_passage(&line));
 }
 
 #[test]
