@@ -118,7 +118,12 @@ pub(crate) enum GapKind {
     /// bump at an opening's jamb"): intel_map, intel_carmen and two houses
     /// gain doorways, nothing else changes; without the thinness of its
     /// first two pixels, shelves standing from a wall and ragged wall
-    /// faces on turned maps pass as reveals.
+    /// faces on turned maps pass as reveals. Beside a room's **corner**
+    /// the floor on a face may end short of a jamb past the opening's end,
+    /// where a piece of the opening's wall, as thin and shorter than a
+    /// jamb, runs into a wall across that reaches from the face line
+    /// through the stack ("An opening beside a room's corner": six houses
+    /// gain their openings, one cluttered floor a false door).
     Opening {
         /// Lines looked at beyond each face.
         face: usize,
@@ -302,6 +307,47 @@ fn scan(
                 last += 1;
             }
             let depth = last + 1 - first;
+            let mid = first + depth / 2;
+            // The wall across may start at any line of the stack (a wall's
+            // end is ragged by a pixel or two).
+            let across = |k: usize| {
+                (first..=last).any(|m| {
+                    let up = (0..=m).rev().take_while(|&l| !is_free(l, k)).count();
+                    let down = (m + 1..lines).take_while(|&l| !is_free(l, k)).count();
+                    up + down >= depth + limits.jamb
+                })
+            };
+            // An opening's jamb in line is as thick as its wall (see
+            // `GapKind::Opening`), give or take a ragged pixel each side.
+            let thin = |k: usize| {
+                limits.kind == GapKind::Doorway || {
+                    let up = (0..=mid).rev().take_while(|&l| !is_free(l, k)).count();
+                    let down = (mid + 1..lines).take_while(|&l| !is_free(l, k)).count();
+                    up + down <= depth + 2
+                }
+            };
+            // An opening's floor on a face line `l` that ends at `e` past a
+            // jamb short of a jamb's length ends at a room's corner (see
+            // `GapKind::Opening`): the jamb is a piece of the opening's wall,
+            // as thin, running into a wall across at `e` that reaches from
+            // the face line through the stack.
+            let corner = |l: usize, e: usize| {
+                let piece = if e < lo {
+                    e + 1..lo
+                } else if e >= hi {
+                    hi..e
+                } else {
+                    return false;
+                };
+                let to_stack = if l < first { l + 1..first } else { last + 1..l };
+                limits.kind != GapKind::Doorway
+                    && !piece.is_empty()
+                    && piece.len() < limits.jamb
+                    && piece.clone().all(&thin)
+                    && across(e)
+                    && to_stack.clone().all(|m| !is_free(m, e))
+                    && (first..=last).any(|m| piece.clone().chain([e]).all(|k| !is_free(m, k)))
+            };
             // Beyond both faces of the wall (within a jamb's length, for
             // ragged walls and jambs thicker than the doorway) the free run
             // through the gap's middle must be wider than the gap by a jamb,
@@ -319,9 +365,11 @@ fn scan(
                 }
                 let left = (0..mid).rev().take_while(|&k| is_free(l, k)).count();
                 let right = (mid..len).take_while(|&k| is_free(l, k)).count();
-                (left + right >= (hi - lo) + margin).then_some(
-                    left >= (mid - lo) + limits.jamb && right >= (hi - mid) + limits.jamb,
-                )
+                let past_left = left >= (mid - lo) + limits.jamb
+                    || mid.checked_sub(left + 1).is_some_and(|e| corner(l, e));
+                let past_right = right >= (hi - mid) + limits.jamb
+                    || (mid + right < len && corner(l, mid + right));
+                (left + right >= (hi - lo) + margin).then_some(past_left && past_right)
             };
             let reach = limits.jamb.max(2);
             let faces = |margin: usize| {
@@ -362,7 +410,6 @@ fn scan(
             // reaches a jamb past the doorway's thickness (a doorway beside
             // a corner, a cubicle's open front), for an opening also behind
             // a reveal (see `GapKind::Opening`); never a speck.
-            let mid = first + depth / 2;
             // A jamb's length of wall from `k` on, stepping by `step`.
             let wall_from = |l: usize, k: usize, step: isize| {
                 (0..limits.jamb as isize).all(|i| {
@@ -371,24 +418,6 @@ fn scan(
                 })
             };
             let along = |k: usize, step: isize| (first..=last).any(|l| wall_from(l, k, step));
-            // The wall across may start at any line of the stack (a wall's
-            // end is ragged by a pixel or two).
-            let across = |k: usize| {
-                (first..=last).any(|m| {
-                    let up = (0..=m).rev().take_while(|&l| !is_free(l, k)).count();
-                    let down = (m + 1..lines).take_while(|&l| !is_free(l, k)).count();
-                    up + down >= depth + limits.jamb
-                })
-            };
-            // An opening's jamb in line is as thick as its wall (see
-            // `GapKind::Opening`), give or take a ragged pixel each side.
-            let thin = |k: usize| {
-                limits.kind == GapKind::Doorway || {
-                    let up = (0..=mid).rev().take_while(|&l| !is_free(l, k)).count();
-                    let down = (mid + 1..lines).take_while(|&l| !is_free(l, k)).count();
-                    up + down <= depth + 2
-                }
-            };
             // The pixel after `k`, stepping by `step`, if in the line.
             let next = |k: usize, step: isize| k.checked_add_signed(step).filter(|&n| n < len);
             // A reveal: wall in line from `k` on (stepping by `step`), as

@@ -1,6 +1,7 @@
 //! Tests of `wall_gaps.rs` for openings wider than doorways: their own
 //! scan, the stack's stop at an alcove, narrow faces, jambs behind a
-//! reveal and past a ragged bump, on small hand-made masks.
+//! reveal and past a ragged bump, openings beside a room's corner, on
+//! small hand-made masks.
 
 use super::*;
 
@@ -163,4 +164,24 @@ fn a_ragged_bump_at_the_end_of_the_wall_in_line_is_still_its_jamb() {
     // Two such columns: a wall offset from the opening's, no jamb.
     let block = front(|x, y| (20..22).contains(&x) && (5..10).contains(&y));
     assert!(axis_gaps(&block, OPENINGS).is_empty());
+}
+
+#[test]
+fn an_opening_beside_a_room_corner_ends_on_the_short_piece_of_wall_there() {
+    // The front of `front`, with the building's side wall from x = 22 on:
+    // right of the opening a 2 px piece of the front (x 20..22, shorter
+    // than a jamb) runs into it, and on neither face does the floor go a
+    // jamb past the opening's right end.
+    let corner = front(|x, _| x >= 22);
+    let g = axis_gaps(&corner, OPENINGS);
+    assert_eq!(g.len(), 1, "{g:?}");
+    assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
+    // The piece's second column 5 px thick (rows 5..10, thicker than the
+    // opening's wall): a block standing in the corner, no piece of the
+    // front (the first column is still the opening's thin jamb).
+    let block = front(|x, y| x >= 22 || (x == 21 && (5..10).contains(&y)));
+    assert!(axis_gaps(&block, OPENINGS).is_empty());
+    // A piece as long as a jamb (x 20..24) is a jamb anyway.
+    let long = front(|x, _| x >= 24);
+    assert_eq!(axis_gaps(&long, OPENINGS).len(), 1);
 }
