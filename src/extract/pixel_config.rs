@@ -50,9 +50,9 @@ const SUPPORT_NEAR_M: f64 = 2.0;
 /// run's own line takes in (`wall_runs.rs`). Measured on the 19
 /// development buildings and 400 simulated ones (benches/README.md, "A
 /// passage's side is one wall line"): 0 and 1 px measure the same on the
-/// shared maps; at 2 px
-/// rose2_intel_map loses the doorway it gains, and with no limit (before)
-/// NLB's 3.4 m room front is taken for a passage too.
+/// shared maps; at 2 px rose2_intel_map loses the doorway it gains, and
+/// with no limit (before) NLB's 3.4 m room front is taken for a passage
+/// too.
 const PASSAGE_SIDE_LINE_M: f64 = 0.05;
 
 /// Clutter is no jamb (`wall_support.rs`, `furniture::clutter_pixels`): a

@@ -259,11 +259,11 @@ impl WallSupport {
     /// both faces (the runs past the two faces lie within `side_line` of
     /// each other across, not two walls that each pass the end at another
     /// distance, such as a room's side wall and the jamb of the next room's
-    /// front); as a corridor's side
-    /// walls do where the line joins two wall ends across it, or a room's
-    /// front wall where the line runs from furniture standing out from the
-    /// back wall to the front (with a doorway beside the end, the wall may
-    /// go on past that face only in a short piece). A room's side wall
+    /// front); as a corridor's side walls do where the line joins two wall
+    /// ends across it, or a room's front wall where the line runs from
+    /// furniture standing out from the back wall to the front (with a
+    /// doorway beside the end, the wall may go on past that face only in a
+    /// short piece). A room's side wall
     /// meeting its front at an opening's end stops at the front. Only the
     /// building's walls count: a table or shelf near an opening's end
     /// (clutter, see `furniture::clutter_pixels`) is no passage's side,
