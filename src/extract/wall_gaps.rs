@@ -339,13 +339,13 @@ fn scan(
                 } else {
                     return false;
                 };
-                let to_stack = if l < first { l + 1..first } else { last + 1..l };
+                let mut to_stack = if l < first { l + 1..first } else { last + 1..l };
                 limits.kind != GapKind::Doorway
                     && !piece.is_empty()
                     && piece.len() < limits.jamb
                     && piece.clone().all(&thin)
                     && across(e)
-                    && to_stack.clone().all(|m| !is_free(m, e))
+                    && to_stack.all(|m| !is_free(m, e))
                     && (first..=last).any(|m| piece.clone().chain([e]).all(|k| !is_free(m, k)))
             };
             // Beyond both faces of the wall (within a jamb's length, for
