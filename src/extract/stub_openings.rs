@@ -152,6 +152,10 @@ fn cut_at(gap: &WallGap, at: &[usize], min: usize) -> Vec<WallGap> {
         line: gap.line[from..to].to_vec(),
         width_px: (gap.width_px * (to - from) + n / 2) / n.max(1),
         narrow_faces: gap.narrow_faces,
+        corner_ends: [
+            from == 0 && gap.corner_ends[0],
+            to == n && gap.corner_ends[1],
+        ],
     };
     if at.is_empty() {
         return vec![gap.clone()];
@@ -181,6 +185,7 @@ mod tests {
             line: (x0..x1).map(|x| y * w + x).collect(),
             width_px: (x1 - x0) as usize,
             narrow_faces: false,
+            corner_ends: [false; 2],
         }
     }
 
@@ -270,6 +275,7 @@ mod tests {
                 line,
                 width_px,
                 narrow_faces: false,
+                corner_ends: [false; 2],
             },
         )
     }

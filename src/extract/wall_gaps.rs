@@ -23,6 +23,10 @@ pub(crate) struct WallGap {
     /// only between walls the sensor saw, which the scan cannot tell
     /// from what it never saw (the pipeline checks).
     pub narrow_faces: bool,
+    /// Whether the line's first and last end stand beside a room's corner
+    /// (see `GapKind::Opening`): the wall across there is the room's side,
+    /// tied to the opening's end by a thin piece of the opening's wall.
+    pub corner_ends: [bool; 2],
 }
 
 impl WallGap {
@@ -120,10 +124,12 @@ pub(crate) enum GapKind {
     /// first two pixels, shelves standing from a wall and ragged wall
     /// faces on turned maps pass as reveals. Beside a room's **corner**
     /// the floor on a face may end short of a jamb past the opening's end,
-    /// where a piece of the opening's wall, as thin and shorter than a
-    /// jamb, runs into a wall across that reaches from the face line
-    /// through the stack ("An opening beside a room's corner": six houses
-    /// gain their openings, one cluttered floor a false door).
+    /// where a piece of the opening's wall, as thin, longer than a ragged
+    /// wall's end ([`RAGGED`]) and shorter than a jamb, runs into a wall
+    /// across that reaches from the face line through the stack ("An
+    /// opening beside a room's corner": six houses gain their openings;
+    /// "A corner's wall is no passage's side": a ragged pixel is no
+    /// piece). Such an end is kept in [`WallGap::corner_ends`].
     Opening {
         /// Lines looked at beyond each face.
         face: usize,
@@ -182,6 +188,7 @@ pub(crate) fn turned_gaps(
                 line,
                 width_px: g.width_px,
                 narrow_faces: g.narrow_faces,
+                corner_ends: g.corner_ends,
             })
         })
         .collect()
@@ -259,6 +266,10 @@ pub(crate) fn reopen_gaps(labels: &mut Labels, gaps: &[WallGap]) {
     }
 }
 
+/// How many pixels a wall's face or end may stand out by where the map is
+/// ragged (a wall's `thin` check and a room's `corner` piece allow for it).
+const RAGGED: usize = 2;
+
 /// A gap in one scan line: `[start, end)` along the line.
 type Run = (usize, usize);
 
@@ -323,7 +334,7 @@ fn scan(
                 limits.kind == GapKind::Doorway || {
                     let up = (0..=mid).rev().take_while(|&l| !is_free(l, k)).count();
                     let down = (mid + 1..lines).take_while(|&l| !is_free(l, k)).count();
-                    up + down <= depth + 2
+                    up + down <= depth + RAGGED
                 }
             };
             // An opening's floor on a face line `l` that ends at `e` past a
@@ -341,12 +352,22 @@ fn scan(
                 };
                 let mut to_stack = if l < first { l + 1..first } else { last + 1..l };
                 limits.kind != GapKind::Doorway
-                    && !piece.is_empty()
+                    && piece.len() > RAGGED
                     && piece.len() < limits.jamb
                     && piece.clone().all(&thin)
                     && across(e)
                     && to_stack.all(|m| !is_free(m, e))
                     && (first..=last).any(|m| piece.clone().chain([e]).all(|k| !is_free(m, k)))
+            };
+            // The floor through the gap's middle on line `l`: how far it
+            // goes to the left and (from the middle on) to the right.
+            let floor_run = |l: usize| {
+                let mid = (lo + hi) / 2;
+                (l < lines && is_free(l, mid)).then(|| {
+                    let left = (0..mid).rev().take_while(|&k| is_free(l, k)).count();
+                    let right = (mid..len).take_while(|&k| is_free(l, k)).count();
+                    (mid, left, right)
+                })
             };
             // Beyond both faces of the wall (within a jamb's length, for
             // ragged walls and jambs thicker than the doorway) the free run
@@ -359,12 +380,7 @@ fn scan(
             // wider than the gap by `margin`); Some(true) = open past both
             // jambs.
             let open_line = |l: usize, margin: usize| -> Option<bool> {
-                let mid = (lo + hi) / 2;
-                if l >= lines || !is_free(l, mid) {
-                    return None;
-                }
-                let left = (0..mid).rev().take_while(|&k| is_free(l, k)).count();
-                let right = (mid..len).take_while(|&k| is_free(l, k)).count();
+                let (mid, left, right) = floor_run(l)?;
                 let past_left = left >= (mid - lo) + limits.jamb
                     || mid.checked_sub(left + 1).is_some_and(|e| corner(l, e));
                 let past_right = right >= (hi - mid) + limits.jamb
@@ -404,6 +420,21 @@ fn scan(
                     && floor(&mut (1..=face).map(|d| first - d))
                     && floor(&mut (1..=face).map(|d| last + d));
             }
+            // Which ends stand beside a room's corner, on some face line
+            // (the wall across there is no passage's side, see
+            // `WallSupport::crosses_passage`).
+            let face_lines = (1..=reach)
+                .filter_map(|d| first.checked_sub(d))
+                .chain((1..=reach).map(|d| last + d));
+            let corner_ends = face_lines.fold([false; 2], |[l0, r0], l| {
+                let Some((mid, left, right)) = floor_run(l) else {
+                    return [l0, r0];
+                };
+                [
+                    l0 || mid.checked_sub(left + 1).is_some_and(|e| corner(l, e)),
+                    r0 || (mid + right < len && corner(l, mid + right)),
+                ]
+            });
             let wide_enough = hi - lo >= limits.width.0;
             // Each jamb is a wall along the line (at least `jamb` of it, in
             // some line of the stack) or the end of a wall across it that
@@ -449,6 +480,7 @@ fn scan(
                     line: (lo..hi).map(|k| index(mid, k)).collect(),
                     width_px: hi - lo,
                     narrow_faces,
+                    corner_ends,
                 });
             }
         }

@@ -168,20 +168,28 @@ fn a_ragged_bump_at_the_end_of_the_wall_in_line_is_still_its_jamb() {
 
 #[test]
 fn an_opening_beside_a_room_corner_ends_on_the_short_piece_of_wall_there() {
-    // The front of `front`, with the building's side wall from x = 22 on:
-    // right of the opening a 2 px piece of the front (x 20..22, shorter
+    // The front of `front`, with the building's side wall from x = 23 on:
+    // right of the opening a 3 px piece of the front (x 20..23, shorter
     // than a jamb) runs into it, and on neither face does the floor go a
     // jamb past the opening's right end.
-    let corner = front(|x, _| x >= 22);
+    let corner = front(|x, _| x >= 23);
     let g = axis_gaps(&corner, OPENINGS);
     assert_eq!(g.len(), 1, "{g:?}");
     assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
-    // The piece's second column 5 px thick (rows 5..10, thicker than the
+    // The right end (the line's last) stands beside the corner, the left
+    // on a jamb.
+    assert_eq!(g[0].corner_ends, [false, true]);
+    // A 2 px piece (x 20..22) is no more than a ragged wall's end.
+    let ragged = front(|x, _| x >= 22);
+    assert!(axis_gaps(&ragged, OPENINGS).is_empty());
+    // The piece's third column 5 px thick (rows 5..10, thicker than the
     // opening's wall): a block standing in the corner, no piece of the
     // front (the first column is still the opening's thin jamb).
-    let block = front(|x, y| x >= 22 || (x == 21 && (5..10).contains(&y)));
+    let block = front(|x, y| x >= 23 || (x == 22 && (5..10).contains(&y)));
     assert!(axis_gaps(&block, OPENINGS).is_empty());
-    // A piece as long as a jamb (x 20..24) is a jamb anyway.
+    // A piece as long as a jamb (x 20..24) is a jamb anyway, no corner.
     let long = front(|x, _| x >= 24);
-    assert_eq!(axis_gaps(&long, OPENINGS).len(), 1);
+    let g = axis_gaps(&long, OPENINGS);
+    assert_eq!(g.len(), 1, "{g:?}");
+    assert_eq!(g[0].corner_ends, [false, false]);
 }

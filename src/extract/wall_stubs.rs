@@ -126,6 +126,7 @@ fn axis_stub_openings(free: &Mask, limits: &WallStubLimits) -> Vec<WallGap> {
                             .collect(),
                         width_px: (y - 1 - hit) as usize,
                         narrow_faces: false,
+                        corner_ends: [false; 2],
                     });
                 }
             }

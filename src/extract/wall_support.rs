@@ -268,10 +268,24 @@ impl WallSupport {
     /// building's walls count: a table or shelf near an opening's end
     /// (clutter, see `furniture::clutter_pixels`) is no passage's side,
     /// unless the end itself stands on clutter (within `tolerance`), where
-    /// the line may run between two pieces of furniture.
-    pub(crate) fn crosses_passage(&self, pixels: &[u32]) -> bool {
+    /// the line may run between two pieces of furniture. An end beside a
+    /// room's corner (`corner_ends`, for the line's first and last pixel;
+    /// see `wall_gaps::WallGap::corner_ends`) is not judged: the wall
+    /// across there is the room's side, which the opening's own piece of
+    /// wall runs into.
+    pub(crate) fn crosses_passage(&self, pixels: &[u32], corner_ends: [bool; 2]) -> bool {
         let Some((a, b)) = border_ends(self.width, pixels) else {
             return false;
+        };
+        // Which of `a` and `b` is the line's first end.
+        let first = pixels.first().map_or([0.0; 2], |&p| {
+            [f64::from(p % self.width), f64::from(p / self.width)]
+        });
+        let dist = |p: [f64; 2]| (p[0] - first[0]).hypot(p[1] - first[1]);
+        let [corner_a, corner_b] = if dist(a) <= dist(b) {
+            corner_ends
+        } else {
+            [corner_ends[1], corner_ends[0]]
         };
         let Some((i, k)) = self.direction_set(a, b) else {
             return false;
@@ -310,7 +324,7 @@ impl WallSupport {
                 .iter()
                 .any(|a| upper.iter().any(|b| (a - b).abs() <= l.side_line))
         };
-        both(a) || both(b)
+        (!corner_a && both(a)) || (!corner_b && both(b))
     }
 
     /// Whether clutter (lined or not) lies within `r` pixels of `p`.

@@ -42,6 +42,28 @@ fn grid(w: usize, h: usize, wall: impl Fn(usize, usize) -> bool) -> WallSupport 
 }
 
 #[test]
+fn an_opening_beside_a_room_corner_crosses_no_passage_there() {
+    // A room's 3 m open front (x 20..50 on y = 30) whose right end is
+    // 0.4 m from the building's side wall (x = 54), which runs on past
+    // both faces: a 0.4 m piece of the front joins them.
+    let w = 70;
+    let line: Vec<u32> = (20..50).map(|x| (30 * w + x) as u32).collect();
+    let room = grid(w, 60, |x, y| {
+        (y == 30 && !(20..50).contains(&x) && x < 54) || (x == 19 && y < 30) || x == 54
+    });
+    // Judged as any line, the side wall passes the end as a corridor's
+    // side would.
+    assert!(room.crosses_passage(&line, [false; 2]));
+    // Known to stand beside a corner (the line's last end), it is the
+    // room's own side wall.
+    assert!(!room.crosses_passage(&line, [false, true]));
+    // The first end is the left one, whichever order the pixels run in.
+    assert!(room.crosses_passage(&line, [true, false]));
+    let reversed: Vec<u32> = line.iter().rev().copied().collect();
+    assert!(!room.crosses_passage(&reversed, [true, false]));
+}
+
+#[test]
 fn a_line_joining_wall_ends_across_a_corridor_crosses_a_passage() {
     // A 3 m corridor (x 20..50) between walls at x = 19 and 50, rooms
     // either side divided along y = 30: the line across the corridor
@@ -52,13 +74,13 @@ fn a_line_joining_wall_ends_across_a_corridor_crosses_a_passage() {
     let corridor = grid(w, 60, |x, y| {
         x == 19 || x == 50 || (y == 30 && !(19..=50).contains(&x))
     });
-    assert!(corridor.crosses_passage(&line));
+    assert!(corridor.crosses_passage(&line, [false; 2]));
     // A room's 3 m open front: the room's side wall meets the front
     // and stops there.
     let front = grid(w, 60, |x, y| {
         (y == 30 && !(20..50).contains(&x)) || (x == 19 && y < 30)
     });
-    assert!(!front.crosses_passage(&line));
+    assert!(!front.crosses_passage(&line, [false; 2]));
     // The same front with a 0.5 m x 0.8 m table standing in the room
     // below, 0.6 m from the line's end, in line with the side wall:
     // furniture is no passage's side wall. (Within `tolerance` of the
@@ -67,7 +89,7 @@ fn a_line_joining_wall_ends_across_a_corridor_crosses_a_passage() {
     let furnished = grid(w, 60, |x, y| {
         (y == 30 && !(20..50).contains(&x)) || (x == 19 && y < 30) || table(x, y)
     });
-    assert!(!furnished.crosses_passage(&line));
+    assert!(!furnished.crosses_passage(&line, [false; 2]));
     // A wall piece as long standing there (3 m) is one: the line
     // would cross a passage between it and the side wall.
     let piece = grid(w, 60, |x, y| {
@@ -75,7 +97,7 @@ fn a_line_joining_wall_ends_across_a_corridor_crosses_a_passage() {
             || (x == 19 && y < 30)
             || ((18..20).contains(&x) && (33..58).contains(&y))
     });
-    assert!(piece.crosses_passage(&line));
+    assert!(piece.crosses_passage(&line, [false; 2]));
     // The same piece 0.4 m further into the room below (as the jamb of
     // the next room's front, say): the side wall above and the piece pass
     // the end on two lines, no passage's one side wall.
@@ -84,7 +106,7 @@ fn a_line_joining_wall_ends_across_a_corridor_crosses_a_passage() {
             || (x == 19 && y < 30)
             || ((23..25).contains(&x) && (33..58).contains(&y))
     });
-    assert!(!offset.crosses_passage(&line));
+    assert!(!offset.crosses_passage(&line, [false; 2]));
 }
 
 #[test]
