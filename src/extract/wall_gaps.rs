@@ -126,7 +126,9 @@ pub(crate) enum GapKind {
     /// the floor on a face may end short of a jamb past the opening's end,
     /// where a piece of the opening's wall, as thin, longer than a ragged
     /// wall's end ([`RAGGED`]) and shorter than a jamb, runs into a wall
-    /// across that reaches from the face line through the stack ("An
+    /// across (at the floor's end or, behind a ragged face, up to
+    /// `RAGGED` further) that reaches from the face line through the
+    /// stack ("An
     /// opening beside a room's corner": six houses gain their openings;
     /// "A corner's wall is no passage's side": a ragged pixel is no
     /// piece). Such an end is kept in [`WallGap::corner_ends`].
@@ -350,13 +352,21 @@ fn scan(
                 } else {
                     return false;
                 };
-                let mut to_stack = if l < first { l + 1..first } else { last + 1..l };
+                let to_stack = if l < first { l + 1..first } else { last + 1..l };
+                // The wall across stands at `e` or, behind a ragged face, a
+                // pixel or two further from the opening.
+                let mut wall_across = (0..=RAGGED).filter_map(|d| {
+                    if e < lo {
+                        e.checked_sub(d)
+                    } else {
+                        Some(e + d).filter(|&k| k < len)
+                    }
+                });
                 limits.kind != GapKind::Doorway
                     && piece.len() > RAGGED
                     && piece.len() < limits.jamb
                     && piece.clone().all(&thin)
-                    && across(e)
-                    && to_stack.all(|m| !is_free(m, e))
+                    && wall_across.any(|k| across(k) && to_stack.clone().all(|m| !is_free(m, k)))
                     && (first..=last).any(|m| piece.clone().chain([e]).all(|k| !is_free(m, k)))
             };
             // The floor through the gap's middle on line `l`: how far it

@@ -179,6 +179,13 @@ fn an_opening_beside_a_room_corner_ends_on_the_short_piece_of_wall_there() {
     // The right end (the line's last) stands beside the corner, the left
     // on a jamb.
     assert_eq!(g[0].corner_ends, [false, true]);
+    // The side wall's face ragged (x = 23 free at rows 4 and 9, so the
+    // face column is broken within the depth and a jamb): the wall across
+    // stands a pixel further in.
+    let ragged_face = front(|x, y| x >= 24 || (x == 23 && y != 4 && y != 9));
+    let g = axis_gaps(&ragged_face, OPENINGS);
+    assert_eq!(g.len(), 1, "{g:?}");
+    assert_eq!(g[0].corner_ends, [false, true]);
     // A 2 px piece (x 20..22) is no more than a ragged wall's end.
     let ragged = front(|x, _| x >= 22);
     assert!(axis_gaps(&ragged, OPENINGS).is_empty());

@@ -268,11 +268,13 @@ impl WallSupport {
     /// building's walls count: a table or shelf near an opening's end
     /// (clutter, see `furniture::clutter_pixels`) is no passage's side,
     /// unless the end itself stands on clutter (within `tolerance`), where
-    /// the line may run between two pieces of furniture. An end beside a
-    /// room's corner (`corner_ends`, for the line's first and last pixel;
-    /// see `wall_gaps::WallGap::corner_ends`) is not judged: the wall
-    /// across there is the room's side, which the opening's own piece of
-    /// wall runs into.
+    /// the line may run between two pieces of furniture. At an end beside
+    /// a room's corner (`corner_ends`, for the line's first and last pixel;
+    /// see `wall_gaps::WallGap::corner_ends`) the wall across is the room's
+    /// side, which the opening's own piece of wall runs into, unless the
+    /// other end has a wall passing both faces too: a line from one side
+    /// of a corridor to the other, where the walls of the rooms either side
+    /// stand out into it a little.
     pub(crate) fn crosses_passage(&self, pixels: &[u32], corner_ends: [bool; 2]) -> bool {
         let Some((a, b)) = border_ends(self.width, pixels) else {
             return false;
@@ -324,7 +326,12 @@ impl WallSupport {
                 .iter()
                 .any(|a| upper.iter().any(|b| (a - b).abs() <= l.side_line))
         };
-        (!corner_a && both(a)) || (!corner_b && both(b))
+        match (both(a), both(b)) {
+            (true, true) => true,
+            (true, false) => !corner_a,
+            (false, true) => !corner_b,
+            (false, false) => false,
+        }
     }
 
     /// Whether clutter (lined or not) lies within `r` pixels of `p`.

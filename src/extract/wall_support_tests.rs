@@ -75,6 +75,9 @@ fn a_line_joining_wall_ends_across_a_corridor_crosses_a_passage() {
         x == 19 || x == 50 || (y == 30 && !(19..=50).contains(&x))
     });
     assert!(corridor.crosses_passage(&line, [false; 2]));
+    // With a corner at each end it is still a line from one side of the
+    // corridor to the other.
+    assert!(corridor.crosses_passage(&line, [true, true]));
     // A room's 3 m open front: the room's side wall meets the front
     // and stops there.
     let front = grid(w, 60, |x, y| {
