@@ -32,6 +32,7 @@ pub(crate) fn choose_doors(regions: &mut Regions, cues: &DoorCues, px: &PixelCon
         &regions.is_passage,
         cues,
         &px.doors,
+        regions.labels.width,
     );
     let first_doors: Vec<&Border> = first.iter().map(|&k| &regions.borders[k]).collect();
     let moved = give_passages_to_narrow_side(
@@ -51,6 +52,7 @@ pub(crate) fn choose_doors(regions: &mut Regions, cues: &DoorCues, px: &PixelCon
         &regions.is_passage,
         cues,
         &px.doors,
+        regions.labels.width,
     )
 }
 
@@ -67,6 +69,7 @@ fn select_doors(
     is_passage: &[bool],
     cues: &DoorCues,
     limits: &JoinLimits,
+    width: u32,
 ) -> Vec<usize> {
     if let Some(skeleton) = cues.skeleton {
         return (0..all.len())
@@ -75,7 +78,7 @@ fn select_doors(
     }
     let (door_min_px, door_px) = (limits.door_min_px, limits.door_max_px);
     let constriction = |b: &Border| limits.constriction * compared_width(b, widest, is_passage);
-    let gaps = GapIndex::new(cues.gaps);
+    let gaps = GapIndex::new(cues.gaps, width);
     // Pairs of regions that also meet wider than any door: openly joined,
     // so a narrow stretch between them elsewhere (a nook between furniture
     // and a wall) is no doorway.

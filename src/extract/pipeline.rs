@@ -155,7 +155,7 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     let n_regions = regions.labels.count;
     let (mut labels, mut door_lines) = span_doors(grid, &islands, &regions, &doors, &px);
     // An opening's door is as wide as the opening, jamb to jamb.
-    let crossed = GapIndex::new(&openings);
+    let crossed = GapIndex::new(&openings, grid.width);
     for (line, door) in door_lines.iter_mut().zip(&doors) {
         if let Some(o) = crossed.crossed(&door.pixels) {
             *line = o.ends(grid.width).or(*line);

@@ -45,32 +45,51 @@ impl WallGap {
     }
 }
 
-/// Which gap a border between two regions crosses: a gap whose line the
-/// border runs along for at least half its pixels. Built once over a set
-/// of gaps, asked per border.
+/// Which gap a border between two regions crosses: a gap at least half of
+/// whose line pixels the border runs on or beside (a 4-neighbour: a border
+/// ragged by a pixel about the line, where splitting off a passage moved a
+/// few of the doorway's pixels to the other side). Built once over a set of
+/// gaps in a `width`-wide image, asked per border.
 pub(crate) struct GapIndex<'a> {
     gaps: &'a [WallGap],
     /// The gap each line pixel belongs to.
     at: HashMap<u32, usize>,
+    width: u32,
 }
 
 impl<'a> GapIndex<'a> {
-    /// The index of `gaps`' line pixels.
-    pub(crate) fn new(gaps: &'a [WallGap]) -> GapIndex<'a> {
+    /// The index of `gaps`' line pixels in a `width`-wide image.
+    pub(crate) fn new(gaps: &'a [WallGap], width: u32) -> GapIndex<'a> {
         let at = gaps
             .iter()
             .enumerate()
             .flat_map(|(k, g)| g.line.iter().map(move |&p| (p, k)))
             .collect();
-        GapIndex { gaps, at }
+        GapIndex { gaps, at, width }
     }
 
     /// The gap the border through `pixels` crosses, if any (of several,
     /// the one it runs along furthest).
     pub(crate) fn crossed(&self, pixels: &[u32]) -> Option<&'a WallGap> {
+        let w = self.width.max(1);
+        // The line pixel at `p`, else one beside it.
+        let line_pixel = |p: u32| {
+            let beside = [
+                (!p.is_multiple_of(w)).then(|| p - 1),
+                (p % w + 1 < w).then(|| p + 1),
+                p.checked_sub(w),
+                p.checked_add(w),
+            ];
+            std::iter::once(p)
+                .chain(beside.into_iter().flatten())
+                .find_map(|q| self.at.get(&q).map(|&k| (q, k)))
+        };
+        let mut passed: HashSet<u32> = HashSet::new();
         let mut hits: HashMap<usize, usize> = HashMap::new();
-        for &k in pixels.iter().filter_map(|p| self.at.get(p)) {
-            *hits.entry(k).or_default() += 1;
+        for (q, k) in pixels.iter().filter_map(|&p| line_pixel(p)) {
+            if passed.insert(q) {
+                *hits.entry(k).or_default() += 1;
+            }
         }
         hits.into_iter()
             .filter(|&(k, n)| 2 * n >= self.gaps[k].line.len())

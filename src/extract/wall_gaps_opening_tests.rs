@@ -1,7 +1,7 @@
 //! Tests of `wall_gaps.rs` for openings wider than doorways: their own
 //! scan, the stack's stop at an alcove, narrow faces, jambs behind a
-//! reveal and past a ragged bump, openings beside a room's corner, on
-//! small hand-made masks.
+//! reveal and past a ragged bump, openings beside a room's corner, borders
+//! crossing a gap's line, on small hand-made masks.
 
 use super::*;
 
@@ -39,7 +39,7 @@ fn an_opening_wider_than_any_doorway_is_found_by_its_own_scan() {
     assert_eq!(g[0].width_px, 12);
     // Jamb to jamb, along row 7 (the middle of the 2-row stack).
     assert_eq!(g[0].ends(30), Some([[8.0, 7.5], [20.0, 7.5]]));
-    let index = GapIndex::new(&g);
+    let index = GapIndex::new(&g, 30);
     assert_eq!(index.crossed(&g[0].line[..6]), Some(&g[0]));
     assert_eq!(index.crossed(&g[0].line[..5]), None);
     // The doorway scan takes none so wide.
@@ -52,6 +52,27 @@ fn an_opening_wider_than_any_doorway_is_found_by_its_own_scan() {
     // A wall hugging one face (row 9, x 12..20) leaves no opening.
     let hugged = front(|x, y| y == 9 && (12..20).contains(&x));
     assert!(axis_gaps(&hugged, OPENINGS).is_empty());
+}
+
+#[test]
+fn a_border_ragged_by_a_pixel_about_a_gap_line_crosses_it() {
+    let g = axis_gaps(&front(|_, _| false), OPENINGS);
+    assert_eq!(g.len(), 1, "{g:?}");
+    let index = GapIndex::new(&g, 30);
+    let at = |x: u32, y: u32| y * 30 + x;
+    // Along row 7 (the line) for x 15..20 and a row below it for x 8..15:
+    // on the line for less than half of it, beside it for the rest.
+    let ragged: Vec<u32> = (8..15)
+        .map(|x| at(x, 8))
+        .chain((15..20).map(|x| at(x, 7)))
+        .collect();
+    assert_eq!(index.crossed(&ragged), Some(&g[0]));
+    // Two rows below for x 8..15: no more than the five pixels on it.
+    let apart: Vec<u32> = (8..15)
+        .map(|x| at(x, 9))
+        .chain((15..20).map(|x| at(x, 7)))
+        .collect();
+    assert_eq!(index.crossed(&apart), None);
 }
 
 #[test]
