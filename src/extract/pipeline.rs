@@ -605,13 +605,7 @@ mod tests {
         // the gap is a narrow border stretch like a nook between furniture
         // and a wall.
         let with_gaps = extract(&grid, &ExtractParams::default()).unwrap();
-        let mut widths: Vec<f64> = with_gaps
-            .nrg
-            .spaces()
-            .iter()
-            .filter_map(crate::model::doorway)
-            .map(|d| d.width_m)
-            .collect();
+        let (_, mut widths) = spaces_and_door_widths(&with_gaps);
         widths.sort_by(f64::total_cmp);
         assert_eq!(widths.len(), 2, "{widths:?}");
         assert!((widths[0] - 0.8).abs() <= 0.1, "{widths:?}");
