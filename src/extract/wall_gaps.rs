@@ -147,10 +147,9 @@ pub(crate) enum GapKind {
     /// wall's end ([`RAGGED`]) and shorter than a jamb, runs into a wall
     /// across (at the floor's end or, behind a ragged face, up to
     /// `RAGGED` further) that reaches from the face line through the
-    /// stack ("An
-    /// opening beside a room's corner": six houses gain their openings;
-    /// "A corner's wall is no passage's side": a ragged pixel is no
-    /// piece). Such an end is kept in [`WallGap::corner_ends`].
+    /// stack ("An opening beside a room's corner": six houses gain their
+    /// openings; "A corner's wall is no passage's side": a ragged pixel
+    /// is no piece). Such an end is kept in [`WallGap::corner_ends`].
     Opening {
         /// Lines looked at beyond each face.
         face: usize,
