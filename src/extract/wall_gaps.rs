@@ -397,6 +397,13 @@ fn scan(
                     (mid, left, right)
                 })
             };
+            // Whether that floor (`floor_run(l)`) ends at a room's corner
+            // past the gap's left or right end.
+            let left_corner = |l: usize, mid: usize, left: usize| {
+                mid.checked_sub(left + 1).is_some_and(|e| corner(l, e))
+            };
+            let right_corner =
+                |l: usize, mid: usize, right: usize| mid + right < len && corner(l, mid + right);
             // Beyond both faces of the wall (within a jamb's length, for
             // ragged walls and jambs thicker than the doorway) the free run
             // through the gap's middle must be wider than the gap by a jamb,
@@ -409,10 +416,8 @@ fn scan(
             // jambs.
             let open_line = |l: usize, margin: usize| -> Option<bool> {
                 let (mid, left, right) = floor_run(l)?;
-                let past_left = left >= (mid - lo) + limits.jamb
-                    || mid.checked_sub(left + 1).is_some_and(|e| corner(l, e));
-                let past_right = right >= (hi - mid) + limits.jamb
-                    || (mid + right < len && corner(l, mid + right));
+                let past_left = left >= (mid - lo) + limits.jamb || left_corner(l, mid, left);
+                let past_right = right >= (hi - mid) + limits.jamb || right_corner(l, mid, right);
                 (left + right >= (hi - lo) + margin).then_some(past_left && past_right)
             };
             let reach = limits.jamb.max(2);
@@ -459,8 +464,8 @@ fn scan(
                     return [l0, r0];
                 };
                 [
-                    l0 || mid.checked_sub(left + 1).is_some_and(|e| corner(l, e)),
-                    r0 || (mid + right < len && corner(l, mid + right)),
+                    l0 || left_corner(l, mid, left),
+                    r0 || right_corner(l, mid, right),
                 ]
             });
             let wide_enough = hi - lo >= limits.width.0;

@@ -263,9 +263,8 @@ impl WallSupport {
     /// ends across it, or a room's front wall where the line runs from
     /// furniture standing out from the back wall to the front (with a
     /// doorway beside the end, the wall may go on past that face only in a
-    /// short piece). A room's side wall
-    /// meeting its front at an opening's end stops at the front. Only the
-    /// building's walls count: a table or shelf near an opening's end
+    /// short piece). A room's side wall meeting its front at an opening's
+    /// end stops at the front. Only the building's walls count: a table or shelf near an opening's end
     /// (clutter, see `furniture::clutter_pixels`) is no passage's side,
     /// unless the end itself stands on clutter (within `tolerance`), where
     /// the line may run between two pieces of furniture. At an end beside
