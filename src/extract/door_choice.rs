@@ -34,6 +34,9 @@ pub(crate) fn choose_doors(regions: &mut Regions, cues: &DoorCues, px: &PixelCon
         &px.doors,
         regions.labels.width,
     );
+    let deep = px.wall_thickness_max;
+    let width = regions.labels.width;
+    let first = one_door_per_doorway(&regions.borders, first, deep, width);
     let first_doors: Vec<&Border> = first.iter().map(|&k| &regions.borders[k]).collect();
     let moved = give_passages_to_narrow_side(
         &mut regions.labels,
@@ -46,14 +49,50 @@ pub(crate) fn choose_doors(regions: &mut Regions, cues: &DoorCues, px: &PixelCon
         return first;
     }
     regions.remeasure(px);
-    select_doors(
+    let again = select_doors(
         &regions.borders,
         &regions.widest,
         &regions.is_passage,
         cues,
         &px.doors,
-        regions.labels.width,
-    )
+        width,
+    );
+    one_door_per_doorway(&regions.borders, again, deep, width)
+}
+
+/// `chosen` (indices into `all`) without the doors that are a second face
+/// of a doorway: of two chosen borders between the same two regions whose
+/// pixels' centres lie within `deep` pixels (`wall_thickness_max_m`) of
+/// each other, the shorter goes (of two as long, the later). The
+/// watershed draws a border at each face of a doorway through a wall
+/// deeper than the doorway gap scan takes (`GapLimits::depth`), and both
+/// are door-wide constrictions of the same two spaces: one doorway, one
+/// door. `width` is the labels' width.
+fn one_door_per_doorway(all: &[Border], chosen: Vec<usize>, deep: f64, width: u32) -> Vec<usize> {
+    let centre = |b: &Border| {
+        let n = b.pixels.len().max(1) as f64;
+        b.pixels.iter().fold([0.0, 0.0], |c, &p| {
+            [
+                c[0] + f64::from(p % width.max(1)) / n,
+                c[1] + f64::from(p / width.max(1)) / n,
+            ]
+        })
+    };
+    let centres: Vec<[f64; 2]> = chosen.iter().map(|&k| centre(&all[k])).collect();
+    // Whether door `i` of `chosen` gives way to door `j`.
+    let yields = |i: usize, j: usize| {
+        let (a, b) = (&all[chosen[i]], &all[chosen[j]]);
+        let (ca, cb) = (centres[i], centres[j]);
+        i != j
+            && a.pair == b.pair
+            && (ca[0] - cb[0]).hypot(ca[1] - cb[1]) <= deep
+            && (b.pixels.len(), std::cmp::Reverse(chosen[j]))
+                > (a.pixels.len(), std::cmp::Reverse(chosen[i]))
+    };
+    (0..chosen.len())
+        .filter(|&i| !(0..chosen.len()).any(|j| yields(i, j)))
+        .map(|i| chosen[i])
+        .collect()
 }
 
 /// The indices of the borders of `all` that are doors. With the skeleton
@@ -99,4 +138,70 @@ fn select_doors(
                     && !open_pairs.contains(&b.pair))
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A border between `pair` along row `y` of a 100-wide image, from
+    /// column `x0` to `x1` (exclusive).
+    fn row_border(pair: (u32, u32), y: u32, x0: u32, x1: u32) -> Border {
+        Border {
+            pair,
+            width_px: f64::from(x1 - x0),
+            pixels: (x0..x1).map(|x| y * 100 + x).collect(),
+            near_px: (f64::INFINITY, f64::INFINITY),
+        }
+    }
+
+    #[test]
+    fn the_two_faces_of_a_deep_doorway_give_one_door() {
+        // Rows 10 and 28 of one doorway 20 px wide, 18 px deep: the longer
+        // border stays, whichever comes first.
+        let all = [
+            row_border((1, 2), 10, 40, 60),
+            row_border((1, 2), 28, 41, 60),
+        ];
+        assert_eq!(one_door_per_doorway(&all, vec![0, 1], 20.0, 100), vec![0]);
+        let swapped = [all[1].clone(), all[0].clone()];
+        assert_eq!(
+            one_door_per_doorway(&swapped, vec![0, 1], 20.0, 100),
+            vec![1]
+        );
+        // As long: the earlier stays.
+        let even = [
+            row_border((1, 2), 10, 40, 60),
+            row_border((1, 2), 28, 40, 60),
+        ];
+        assert_eq!(one_door_per_doorway(&even, vec![0, 1], 20.0, 100), vec![0]);
+    }
+
+    #[test]
+    fn doors_further_apart_or_between_other_spaces_all_stay() {
+        // Two doorways of one wall 30 px apart, a wall 20 px deep at most.
+        let apart = [
+            row_border((1, 2), 10, 10, 30),
+            row_border((1, 2), 10, 40, 59),
+        ];
+        assert_eq!(
+            one_door_per_doorway(&apart, vec![0, 1], 20.0, 100),
+            vec![0, 1]
+        );
+        // The same place between other spaces.
+        let others = [
+            row_border((1, 2), 10, 40, 60),
+            row_border((2, 3), 28, 41, 60),
+        ];
+        assert_eq!(
+            one_door_per_doorway(&others, vec![0, 1], 20.0, 100),
+            vec![0, 1]
+        );
+        // Only the chosen borders count.
+        let all = [
+            row_border((1, 2), 10, 40, 60),
+            row_border((1, 2), 28, 30, 60),
+        ];
+        assert_eq!(one_door_per_doorway(&all, vec![0], 20.0, 100), vec![0]);
+    }
 }

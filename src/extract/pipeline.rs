@@ -400,6 +400,20 @@ mod tests {
     }
 
     #[test]
+    fn a_doorway_through_a_wall_deeper_than_any_doorway_gap_is_one_door() {
+        // At 0.05 m/px: two 5 x 6 m rooms either side of a wall 1.0 m
+        // thick (x 100..120, deeper than `wall_thickness_max_m`), with a
+        // 1.0 m doorway through it (y 50..70).
+        let grid = walled(221, 121, 0.05, |x, y| {
+            (100..120).contains(&x) && !(50..70).contains(&y)
+        });
+        let x = extract(&grid, &ExtractParams::default()).unwrap();
+        let (spaces, doors) = spaces_and_door_widths(&x);
+        assert_eq!((spaces, doors.len()), (2, 1), "{doors:?}");
+        assert!((doors[0] - 1.0).abs() <= 0.1, "{doors:?}");
+    }
+
+    #[test]
     fn a_partition_short_of_the_wall_across_leaves_a_door_along_its_line() {
         // At 0.05 m/px: a 10 x 6 m hall (x 1..199, y 1..119) divided by a
         // 0.15 m partition (x 100..103) from the south wall to y = 70,

@@ -251,6 +251,9 @@ pub(crate) struct PixelConfig {
     pub islands: IslandLimits,
     /// Doorway gaps in walls; none with the CCL method or `wall_jamb_m` 0.
     pub gaps: Option<GapLimits>,
+    /// `wall_thickness_max_m`: two doors between the same two spaces
+    /// closer than this are the two faces of one deep doorway.
+    pub wall_thickness_max: f64,
     /// Openings in walls wider than doorway gaps (`opening_width_max_m`):
     /// jambs a metre of wall in line (the wall support's pair run) or a
     /// wall across, floor for `wall_jamb_m` beyond both faces; none with
@@ -329,6 +332,7 @@ impl PixelConfig {
                 wall_elongation: WALL_PIECE_ELONGATION,
                 lines: wall_lines,
             },
+            wall_thickness_max: px(b.wall_thickness_max_m),
             gaps: (watershed && b.wall_jamb_m > 0.0).then(|| GapLimits {
                 width: (whole(b.door_width_min_m), whole(b.wall_gap_width_max_m)),
                 jamb: whole(b.wall_jamb_m).max(1),
