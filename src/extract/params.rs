@@ -142,9 +142,9 @@ pub struct BuildingPriors {
     /// closer than this are the two faces of one doorway. Default 0.9 m,
     /// judged leave-one-building-out over 0.6–1.2 m (held out 93.3 % mean
     /// F1 against 93.2 % at 1.2 m; no building worse; ten of 400 simulated
-    /// buildings lose a false door from furniture about 1.1 m deep against
-    /// a wall to the wall across; `benches/README.md`, "Walls up to 0.9 m
-    /// hold doorway gaps").
+    /// buildings lose a false door, such as house 22's from a bed 1.1 m
+    /// deep against a wall to the wall across; `benches/README.md`, "Walls
+    /// up to 0.9 m hold doorway gaps").
     pub wall_thickness_max_m: f64,
     /// Obstacle islands (not joined to any wall) whose bounding box is at
     /// most this long on both sides are furniture: rooms are segmented as if
