@@ -470,7 +470,11 @@ mod tests {
         assert_eq!((fine.seen_wall_reach, coarse.seen_wall_reach), (3, 2));
         assert_eq!(fine.passage.window, 72);
         let gaps = fine.gaps.unwrap();
-        assert_eq!((gaps.width, gaps.jamb, gaps.depth), ((6, 42), 6, 24));
+        assert_eq!((gaps.width, gaps.jamb, gaps.depth), ((6, 42), 6, 18));
+        assert_eq!(
+            (fine.wall_thickness_max, coarse.wall_thickness_max),
+            (18.0, 9.0)
+        );
         assert!((fine.span.max_width - 1.15 * 42.0).abs() < 1e-9);
         assert_eq!(fine.skeleton.map(|s| s.near), None, "constriction rule");
         let skeleton = ExtractParams {
