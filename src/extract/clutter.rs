@@ -19,7 +19,7 @@
 
 use std::collections::HashSet;
 
-use super::wall_runs::{self, WallRuns};
+use super::wall_runs::{self, Run, WallRuns};
 
 use geo::{ConvexHull, MinimumRotatedRect, MultiPoint, Point};
 
@@ -41,11 +41,18 @@ pub(crate) struct LineLimits {
     /// How far from a wall line an outline pixel may lie and be on it,
     /// whole pixels.
     pub tolerance: i64,
+    /// A wall standing in pieces between doorways: runs of at least this
+    /// many pixels (each bridging breaks of `gap`) ...
+    pub piece_min: f64,
+    /// ... with breaks of at most this many pixels between them (a doorway
+    /// gap) make a wall line where they add up to `min_run`.
+    pub piece_gap: f64,
 }
 
 /// The wall lines of a map, in pixels: for each of the two dominant
 /// directions, the offsets (in whole pixels across the direction) of the
-/// lines on which a wall face runs straight long enough.
+/// lines on which a wall face runs straight long enough, in one run or in
+/// pieces between doorways (`LineLimits::piece_min`).
 #[derive(Debug, Clone)]
 pub(crate) struct WallLines {
     /// Unit vectors across each direction (the axis offsets are taken on).
@@ -62,9 +69,16 @@ impl WallLines {
     /// a quarter turn from it.
     pub(crate) fn new(face: &[[u32; 2]], deg: f64, limits: &LineLimits) -> WallLines {
         let runs = WallRuns::new(face, deg, limits.min_run, limits.gap);
+        let pieces = WallRuns::new(face, deg, limits.piece_min, limits.gap);
+        let lines = [0, 1].map(|k| {
+            let in_pieces = pieces
+                .lines(k)
+                .filter(|&off| pieces_add_up(pieces.near(k, off as f64, 0).collect(), limits));
+            runs.lines(k).chain(in_pieces).collect()
+        });
         WallLines {
             across: [runs.across(0), runs.across(1)],
-            lines: [0, 1].map(|k| runs.lines(k).collect()),
+            lines,
             tolerance: limits.tolerance,
         }
     }
@@ -76,6 +90,28 @@ impl WallLines {
             (-self.tolerance..=self.tolerance).any(|k| lines.contains(&(off + k)))
         })
     }
+}
+
+/// Whether the runs of one line, `runs`, with breaks of at most
+/// `limits.piece_gap` between neighbours, add up to `limits.min_run`
+/// somewhere along it: a wall in pieces between doorways, such as a room
+/// front whose wall stands free between its doorways (a T of walls cut off
+/// by a doorway on each side is an island, but it lies on that line).
+fn pieces_add_up(mut runs: Vec<Run>, limits: &LineLimits) -> bool {
+    runs.sort_unstable();
+    let mut sum = 0.0;
+    let mut last: Option<i64> = None;
+    for (start, end) in runs {
+        if last.is_some_and(|l| (start - l - 1) as f64 > limits.piece_gap) {
+            sum = 0.0;
+        }
+        sum += (end - start + 1) as f64;
+        if sum >= limits.min_run {
+            return true;
+        }
+        last = Some(end);
+    }
+    false
 }
 
 /// Pixel `p`'s coordinate along `axis`, rounded.
@@ -159,11 +195,13 @@ mod tests {
     }
 
     /// The limits `pixel_config` sets at 0.1 m/px: 2.5 m runs, 0.1 m
-    /// breaks and tolerance.
+    /// breaks and tolerance, pieces of 0.75 m up to 2.1 m apart.
     const AT_10_CM: LineLimits = LineLimits {
         min_run: 25.0,
         gap: 1,
         tolerance: 1,
+        piece_min: 7.5,
+        piece_gap: 21.0,
     };
 
     fn no_lines() -> WallLines {
@@ -220,14 +258,37 @@ mod tests {
         let face: Vec<[u32; 2]> = (0..20).map(|x| [x, 20]).collect();
         let lines = WallLines::new(&face, 0.0, &AT_10_CM);
         assert!(!lines.on_line([30, 20]), "2 m of wall is not a wall line");
-        let broken: Vec<[u32; 2]> = (0..40).filter(|x| x % 10 > 1).map(|x| [x, 20]).collect();
+        let broken: Vec<[u32; 2]> = (0..40).filter(|x| x % 5 > 1).map(|x| [x, 20]).collect();
         let lines = WallLines::new(&broken, 0.0, &AT_10_CM);
         assert!(
             !lines.on_line([30, 20]),
-            "breaks wider than 0.1 m end a run"
+            "breaks wider than 0.1 m end a run, and 0.3 m pieces are no wall"
         );
         let ragged: Vec<[u32; 2]> = (0..40).filter(|x| x % 10 > 0).map(|x| [x, 20]).collect();
         let lines = WallLines::new(&ragged, 0.0, &AT_10_CM);
         assert!(lines.on_line([30, 20]), "0.1 m breaks do not");
+    }
+
+    /// A face along row 20: pieces `piece` px long starting every `every`
+    /// px, `n` of them.
+    fn pieces(piece: u32, every: u32, n: u32) -> WallLines {
+        let face: Vec<[u32; 2]> = (0..n)
+            .flat_map(|k| (0..piece).map(move |x| [k * every + x, 20]))
+            .collect();
+        WallLines::new(&face, 0.0, &AT_10_CM)
+    }
+
+    #[test]
+    fn a_wall_in_pieces_between_doorways_is_a_wall_line() {
+        // Three 1 m pieces with 0.9 m doorways between them: 3 m of wall.
+        assert!(pieces(10, 19, 3).on_line([70, 20]));
+        assert!(!pieces(10, 19, 3).on_line([70, 25]), "0.5 m off the line");
+        // Two such pieces are 2 m of wall, short of a line.
+        assert!(!pieces(10, 19, 2).on_line([50, 20]));
+        // Pieces under 0.75 m are no wall, however many.
+        assert!(!pieces(7, 16, 6).on_line([50, 20]));
+        // Pieces further apart than a doorway gap are separate walls.
+        assert!(!pieces(10, 32, 3).on_line([50, 20]));
+        assert!(pieces(10, 31, 3).on_line([50, 20]), "2.1 m apart");
     }
 }

@@ -414,6 +414,34 @@ mod tests {
     }
 
     #[test]
+    fn a_t_of_walls_cut_off_by_doorways_is_a_wall_not_clutter() {
+        // At 0.05 m/px: a hall (y 1..100) over two rooms, behind a front
+        // wall (y 100..103) standing in pieces between three 0.9 m
+        // doorways: a 1.2 m piece from the west wall, a free 1.4 m bar, the
+        // 1.3 m head of a free T whose stem (x 101..104) parts the rooms down
+        // to a 0.8 m doorway (y 140..156) above a stub from the south wall,
+        // and a 1.3 m piece from the east wall. No piece is 2.5 m long, and
+        // the T is neither bar nor block: it is a wall only by lying on the
+        // front's line, which stands in pieces.
+        let grid = walled(160, 200, 0.05, |x, y| {
+            let front = (100..103).contains(&y)
+                && [(1, 25), (43, 71), (89, 115), (133, 159)]
+                    .iter()
+                    .any(|&(a, b)| (a..b).contains(&x));
+            let stem = (101..104).contains(&x) && (103..140).contains(&y);
+            let stub = (101..104).contains(&x) && y >= 156;
+            front || stem || stub
+        });
+        let x = extract(&grid, &ExtractParams::default()).unwrap();
+        let (spaces, mut doors) = spaces_and_door_widths(&x);
+        doors.sort_by(f64::total_cmp);
+        assert_eq!((spaces, doors.len()), (3, 4), "{doors:?}");
+        for (w, want) in doors.iter().zip([0.8, 0.9, 0.9, 0.9]) {
+            assert!((w - want).abs() <= 0.1, "{doors:?}");
+        }
+    }
+
+    #[test]
     fn a_partition_short_of_the_wall_across_leaves_a_door_along_its_line() {
         // At 0.05 m/px: a 10 x 6 m hall (x 1..199, y 1..119) divided by a
         // 0.15 m partition (x 100..103) from the south wall to y = 70,

@@ -28,6 +28,15 @@ const SKELETON_NEAR_M: f64 = 0.1;
 const WALL_LINE_MIN_M: f64 = 2.5;
 const WALL_LINE_GAP_M: f64 = 0.1;
 const WALL_LINE_TOLERANCE_M: f64 = 0.1;
+/// A wall line may also stand in pieces of at least this much wall (m),
+/// each at most `wall_gap_width_max_m` (a doorway gap) from the next,
+/// adding up to `WALL_LINE_MIN_M`: a room front whose wall stands free
+/// between doorways. Simulated house 20's T of walls, cut off by a doorway
+/// on each side, lies on such a line and is no clutter (four doorways
+/// found); no shared map changes. Pieces of 0.3–0.5 m (scan specks and
+/// desks in a row) cost freiburg_building101 two false doors and umic one
+/// (benches/README.md, "A wall line in pieces").
+const WALL_LINE_PIECE_MIN_M: f64 = 0.75;
 
 /// The wall support rule (`wall_support.rs`), in metres: a run of wall
 /// face this long supports a doorway by itself; in-line runs this long at
@@ -321,6 +330,8 @@ impl PixelConfig {
             min_run: px(WALL_LINE_MIN_M),
             gap: px(WALL_LINE_GAP_M).round().max(1.0) as i64,
             tolerance: px(WALL_LINE_TOLERANCE_M).round() as i64,
+            piece_min: px(WALL_LINE_PIECE_MIN_M),
+            piece_gap: px(b.wall_gap_width_max_m),
         };
         PixelConfig {
             noise_radius: px(b.noise_radius_m),

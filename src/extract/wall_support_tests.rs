@@ -21,6 +21,8 @@ const AT_10_CM: SupportLimits = SupportLimits {
         min_run: 25.0,
         gap: 1,
         tolerance: 1,
+        piece_min: 7.5,
+        piece_gap: 21.0,
     },
 };
 
