@@ -12,8 +12,10 @@
 //! - or on the building's wall lines: at least [`ON_LINE_MIN_FRACTION`] of
 //!   its outline lies within [`LineLimits::tolerance`] of a line, along one
 //!   of the map's two dominant directions, on which the walls joined to the
-//!   building run straight for [`LineLimits::min_run`] (a wall face; the
-//!   lengths are set in metres in `pixel_config.rs`).
+//!   building run straight for [`LineLimits::min_run`] (a wall face), in
+//!   one run or in pieces of at least [`LineLimits::piece_min`] with
+//!   doorway-wide breaks (a wall standing free between doorways); the
+//!   lengths are set in metres in `pixel_config.rs`.
 //!
 //! Anything else is clutter: rooms are segmented as if it were free.
 

@@ -34,8 +34,8 @@ const WALL_LINE_TOLERANCE_M: f64 = 0.1;
 /// between doorways. Simulated house 20's T of walls, cut off by a doorway
 /// on each side, lies on such a line and is no clutter (four doorways
 /// found); no shared map changes. Pieces of 0.3–0.5 m (scan specks and
-/// desks in a row) cost freiburg_building101 two false doors and umic one
-/// (benches/README.md, "A wall line in pieces").
+/// desks in a row) cost freiburg_building101 two false doors and umic one to
+/// three (benches/README.md, "A wall line in pieces").
 const WALL_LINE_PIECE_MIN_M: f64 = 0.75;
 
 /// The wall support rule (`wall_support.rs`), in metres: a run of wall
