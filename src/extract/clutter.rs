@@ -70,16 +70,16 @@ impl WallLines {
     /// joined to the building) along `deg` (degrees, image coordinates) and
     /// a quarter turn from it.
     pub(crate) fn new(face: &[[u32; 2]], deg: f64, limits: &LineLimits) -> WallLines {
-        let runs = WallRuns::new(face, deg, limits.min_run, limits.gap);
-        let pieces = WallRuns::new(face, deg, limits.piece_min, limits.gap);
+        // One pass: a run of `min_run` is a piece that adds up by itself.
+        let pieces = WallRuns::new(face, deg, limits.piece_min.min(limits.min_run), limits.gap);
         let lines = [0, 1].map(|k| {
-            let in_pieces = pieces
+            pieces
                 .lines(k)
-                .filter(|&off| pieces_add_up(pieces.near(k, off as f64, 0).collect(), limits));
-            runs.lines(k).chain(in_pieces).collect()
+                .filter(|&off| pieces_add_up(pieces.near(k, off as f64, 0).collect(), limits))
+                .collect()
         });
         WallLines {
-            across: [runs.across(0), runs.across(1)],
+            across: [pieces.across(0), pieces.across(1)],
             lines,
             tolerance: limits.tolerance,
         }
