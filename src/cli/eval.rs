@@ -6,10 +6,13 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr};
+use nrgdb::diff::{AlignParams, Alignment, align_grids, alignment_quality};
 use nrgdb::eval::{
-    DoorReport, Evaluation, door_report, evaluate, evaluation_picture, load_ground_truth,
+    DoorReport, Evaluation, GroundTruth, door_report, evaluate, evaluation_picture,
+    load_ground_truth, transfer_ground_truth,
 };
 use nrgdb::extract::extract;
+use nrgdb::grid::OccupancyGrid;
 
 use super::extract::MapArgs;
 use super::progress;
@@ -27,6 +30,14 @@ pub struct Args {
     /// [default: `<stem>_gt.png` beside the map].
     #[arg(long)]
     pub gt: Option<PathBuf>,
+    /// The map the ground truth was drawn on, when it is another map of the
+    /// same building (one map only; e.g. MAP built by `nrgdb map-log` from a
+    /// robot log): MAP is aligned onto it as `nrgdb diff` aligns revisions,
+    /// and the GT's rooms and doorway lines are carried onto MAP's pixels
+    /// (rooms only where MAP is free). The GT defaults to `<stem>_gt.png`
+    /// beside this map.
+    #[arg(long, value_name = "REF.yaml")]
+    pub gt_map: Option<PathBuf>,
     /// Print JSON instead of a table.
     #[arg(long)]
     pub json: bool,
@@ -61,29 +72,37 @@ pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
     }
     let inputs = args.map.inputs()?;
     if let Some(spec) = &args.loo {
-        if args.gt.is_some() || args.picture.is_some() || args.doors {
+        if args.gt.is_some() || args.gt_map.is_some() || args.picture.is_some() || args.doors {
             miette::bail!(
                 "--loo scores every map against the <stem>_gt.png beside it and draws nothing: \
-                 leave out --gt, --picture and --doors"
+                 leave out --gt, --gt-map, --picture and --doors"
             );
         }
         return super::eval_loo::run(&args.map, spec, args.json, &inputs, out);
     }
     match inputs.as_slice() {
         [map] if !args.map.maps.iter().any(|p| p.is_dir()) => {
+            let drawn_on = args.gt_map.as_deref().unwrap_or(map);
             let gt = match &args.gt {
                 Some(gt) => gt.clone(),
-                None => sibling_gt(map).ok_or_else(|| {
+                None => sibling_gt(drawn_on).ok_or_else(|| {
                     miette::miette!(
                         "{}: no ground truth given and no {} beside it (use --gt GT.png)",
-                        map.display(),
-                        gt_name(map)
+                        drawn_on.display(),
+                        gt_name(drawn_on)
                     )
                 })?,
             };
-            let (e, report) =
-                evaluate_one(&args.map, map, &gt, args.picture.as_deref(), args.doors)?;
-            print_one(&e, report.as_ref(), args.json, out).into_diagnostic()?;
+            let source = GtSource {
+                image: &gt,
+                drawn_on: args.gt_map.as_deref(),
+            };
+            let (e, report, alignment) =
+                evaluate_one(&args.map, map, source, args.picture.as_deref(), args.doors)?;
+            if let (Some(a), false) = (alignment, args.json) {
+                print_alignment(&a, drawn_on, out).into_diagnostic()?;
+            }
+            print_one(&e, report.as_ref(), alignment.as_ref(), args.json, out).into_diagnostic()?;
             Ok(ExitCode::SUCCESS)
         }
         _ => run_many(&args, &inputs, out),
@@ -103,15 +122,33 @@ pub(crate) fn sibling_gt(map: &Path) -> Option<PathBuf> {
     path.is_file().then_some(path)
 }
 
+/// Where a map's ground truth comes from.
+#[derive(Clone, Copy)]
+struct GtSource<'a> {
+    /// The GT image.
+    image: &'a Path,
+    /// The map it was drawn on, when not the evaluated map itself.
+    drawn_on: Option<&'a Path>,
+}
+
 fn evaluate_one(
     args: &MapArgs,
     map: &Path,
-    gt: &Path,
+    source: GtSource<'_>,
     picture: Option<&Path>,
     doors: bool,
-) -> miette::Result<(Evaluation, Option<DoorReport>)> {
+) -> miette::Result<(Evaluation, Option<DoorReport>, Option<Carried>)> {
     let (grid, params) = args.load(map)?;
-    let gt = load_ground_truth(gt, &grid).into_diagnostic()?;
+    let (gt, alignment) = match source.drawn_on {
+        None => (
+            load_ground_truth(source.image, &grid).into_diagnostic()?,
+            None,
+        ),
+        Some(reference) => {
+            let (gt, a) = carried_ground_truth(args, reference, source.image, map, &grid)?;
+            (gt, Some(a))
+        }
+    };
     let x = extract(&grid, &params)
         .into_diagnostic()
         .wrap_err_with(|| format!("{}: extraction failed", map.display()))?;
@@ -127,13 +164,85 @@ fn evaluate_one(
     Ok((
         evaluate(&gt, &x, grid.resolution),
         doors.then(|| door_report(&gt, &x, &grid)),
+        alignment,
     ))
 }
 
+/// How a ground truth was carried onto the evaluated map.
+#[derive(Debug, Clone, Copy, serde::Serialize)]
+struct Carried {
+    /// The evaluated map's frame → the GT's map's frame; its `inliers` is
+    /// the share of the evaluated map's walls that lie on the GT map's.
+    alignment: Alignment,
+    /// The share of the GT map's walls that lie on the evaluated map's
+    /// (within the same distance): walls the evaluated map has.
+    walls_found: f64,
+}
+
+/// The GT `image` drawn on the map `reference`, carried onto `grid` (the
+/// map `map`) by aligning `grid` onto `reference`.
+fn carried_ground_truth(
+    args: &MapArgs,
+    reference: &Path,
+    image: &Path,
+    map: &Path,
+    grid: &OccupancyGrid,
+) -> miette::Result<(GroundTruth, Carried)> {
+    let (ref_grid, _) = args.load(reference)?;
+    let gt = load_ground_truth(image, &ref_grid).into_diagnostic()?;
+    let a = align_grids(&ref_grid, grid, &AlignParams::default())
+        .into_diagnostic()
+        .wrap_err_with(|| {
+            format!(
+                "cannot carry the ground truth of {} onto {}",
+                reference.display(),
+                map.display()
+            )
+        })?;
+    let back = a.transform.inverse();
+    let found = alignment_quality(grid, &ref_grid, back, &AlignParams::default());
+    let carried = transfer_ground_truth(
+        &gt,
+        &ref_grid,
+        grid,
+        |p| a.transform.apply(p),
+        |p| back.apply(p),
+    );
+    Ok((
+        carried,
+        Carried {
+            alignment: a,
+            walls_found: found.inliers,
+        },
+    ))
+}
+
+/// Two lines saying how the evaluated map was aligned onto the GT's map
+/// and how well their walls agree.
+fn print_alignment(c: &Carried, drawn_on: &Path, out: &mut dyn Write) -> std::io::Result<()> {
+    let a = &c.alignment;
+    let [tx, ty] = a.transform.apply([0.0, 0.0]);
+    writeln!(
+        out,
+        "ground truth carried from {}: turned {:.1}°, moved ({tx:.2}, {ty:.2}) m",
+        drawn_on.display(),
+        a.transform.rotation_deg(),
+    )?;
+    writeln!(
+        out,
+        "walls       {:.1} % of this map's lie within {:.2} m of the GT map's; {:.1} % of the \
+         GT map's within {:.2} m of this map's",
+        100.0 * a.inliers,
+        a.tolerance_m,
+        100.0 * c.walls_found,
+        a.tolerance_m
+    )
+}
+
 fn run_many(args: &Args, inputs: &[PathBuf], out: &mut dyn Write) -> miette::Result<ExitCode> {
-    if args.gt.is_some() {
+    if args.gt.is_some() || args.gt_map.is_some() {
         miette::bail!(
-            "--gt names one ground truth: with several maps each uses <stem>_gt.png beside it"
+            "--gt and --gt-map name one ground truth: with several maps each uses <stem>_gt.png beside it"
         );
     }
     if args.picture.is_some() || args.doors {
@@ -150,8 +259,17 @@ fn run_many(args: &Args, inputs: &[PathBuf], out: &mut dyn Write) -> miette::Res
         bar.set_message(stem.clone());
         match sibling_gt(map) {
             None => notes.push(format!("{stem}: skipped, no {} beside it", gt_name(map))),
-            Some(gt) => match evaluate_one(&args.map, map, &gt, None, false) {
-                Ok((e, _)) => rows.push((stem, e)),
+            Some(gt) => match evaluate_one(
+                &args.map,
+                map,
+                GtSource {
+                    image: &gt,
+                    drawn_on: None,
+                },
+                None,
+                false,
+            ) {
+                Ok((e, _, _)) => rows.push((stem, e)),
                 Err(e) => {
                     failed += 1;
                     bar.suspend(|| eprintln!("{stem}: {e:?}"));
@@ -261,6 +379,7 @@ fn print_table(rows: &[(String, Evaluation)], out: &mut dyn Write) -> std::io::R
 fn print_one(
     e: &Evaluation,
     report: Option<&DoorReport>,
+    alignment: Option<&Carried>,
     json: bool,
     out: &mut dyn Write,
 ) -> std::io::Result<()> {
@@ -269,6 +388,10 @@ fn print_one(
         if let (Some(r), Some(object)) = (report, value.as_object_mut()) {
             let r = serde_json::to_value(r).map_err(std::io::Error::other)?;
             object.insert("door_report".into(), r);
+        }
+        if let (Some(a), Some(object)) = (alignment, value.as_object_mut()) {
+            let a = serde_json::to_value(a).map_err(std::io::Error::other)?;
+            object.insert("gt_alignment".into(), a);
         }
         let text = serde_json::to_string_pretty(&value).map_err(std::io::Error::other)?;
         return writeln!(out, "{text}");

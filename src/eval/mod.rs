@@ -22,6 +22,7 @@ mod metrics;
 mod picture;
 mod route_fidelity;
 mod simulated;
+mod transfer;
 
 pub use door_report::{DoorItem, DoorReport, LineItem, door_report};
 pub use door_widths::{DoorWidth, WidthScores, door_widths, gt_line_length_px, width_scores};
@@ -44,3 +45,4 @@ pub use route_fidelity::{
     SAMPLE_STEP_M, polyline_length, route_fidelity, route_fidelity_with_gap, sample_polyline,
 };
 pub use simulated::{SimulatedScore, evaluate_simulated};
+pub use transfer::transfer_ground_truth;

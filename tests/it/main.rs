@@ -20,6 +20,7 @@ mod demo;
 mod doorway_formats;
 mod edits;
 mod edits_props;
+mod eval_carried;
 mod eval_doors;
 mod eval_loo;
 mod extract;
