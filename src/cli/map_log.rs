@@ -6,9 +6,9 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use miette::{IntoDiagnostic, WrapErr};
-use nrgdb::sim::{map_carmen_log, write_map};
+use nrgdb::sim::{OccupancyRule, map_carmen_log, write_map};
 
-/// Build an occupancy map (log-odds, known poses) from a CARMEN laser log
+/// Build an occupancy map (known poses) from a CARMEN laser log
 /// (FLASER or ROBOTLASER1 lines; plain or .gz) and write map.yaml + map.pgm
 /// (or NAME.yaml + NAME.pgm for `--out NAME.yaml`).
 #[derive(Debug, clap::Args)]
@@ -25,6 +25,21 @@ pub struct Args {
     /// Longer readings are cut here and only clear free space (metres).
     #[arg(long, default_value_t = 20.0)]
     pub max_range: f64,
+    /// What makes a cell occupied: `hit-ratio` (a quarter of the beams
+    /// reaching it end in it, as GMapping's maps; unknown under two beams)
+    /// or `log-odds` (the paper's Eq. 3: later beams outweigh earlier ones,
+    /// so walls grazed late in a log are cleared).
+    #[arg(long, value_enum, default_value_t = Rule::HitRatio)]
+    pub rule: Rule,
+}
+
+/// `--rule`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Rule {
+    /// Occupied when at least a quarter of the beams reaching a cell end in it.
+    HitRatio,
+    /// Log-odds updates (the simulator's mapper).
+    LogOdds,
 }
 
 /// The folder and file stem `--out` names: a `.yaml`/`.yml` path is the
@@ -47,7 +62,11 @@ fn destination(out: &Path) -> (PathBuf, String) {
 
 /// Runs the subcommand.
 pub fn run(args: Args, out: &mut dyn Write) -> miette::Result<ExitCode> {
-    let built = map_carmen_log(&args.log, args.resolution, args.max_range)
+    let rule = match args.rule {
+        Rule::HitRatio => OccupancyRule::RECORDED,
+        Rule::LogOdds => OccupancyRule::LogOdds,
+    };
+    let built = map_carmen_log(&args.log, args.resolution, args.max_range, rule)
         .into_diagnostic()
         .wrap_err_with(|| format!("cannot map {}", args.log.display()))?;
     let (dir, stem) = destination(&args.out);

@@ -1,11 +1,11 @@
-//! Mapping recorded scans (e.g. a CARMEN log) with the log-odds mapper.
+//! Mapping recorded scans (e.g. a CARMEN log) with the known-pose mapper.
 
 use std::path::Path;
 
 use super::SimError;
 use super::carmen::read_carmen;
 use super::lidar::Scan;
-use super::log_odds::{GreyMap, LogOddsMap, LogOddsParams, check_resolution};
+use super::log_odds::{GreyMap, LogOddsMap, LogOddsParams, OccupancyRule, check_resolution};
 
 /// What [`map_scans`] built.
 #[derive(Debug, Clone, PartialEq)]
@@ -59,12 +59,14 @@ pub fn map_scans(
     })
 }
 
-/// Reads a CARMEN log (plain or gzip) and maps it: "no return" readings are
-/// skipped, longer ranges are cut at `usable_range_m` (free only).
+/// Reads a CARMEN log (plain or gzip) and maps it by `rule` (usually
+/// [`OccupancyRule::RECORDED`]): "no return" readings are skipped, longer
+/// ranges are cut at `usable_range_m` (free only).
 pub fn map_carmen_log(
     path: &Path,
     resolution_m: f64,
     usable_range_m: f64,
+    rule: OccupancyRule,
 ) -> Result<LogMap, SimError> {
     check_resolution(resolution_m)?;
     if !(usable_range_m > 0.0 && usable_range_m.is_finite()) {
@@ -76,7 +78,18 @@ pub fn map_carmen_log(
         });
     }
     let scans = read_carmen(path)?;
+    if let OccupancyRule::HitRatio { min_ratio, .. } = rule
+        && !(min_ratio > 0.0 && min_ratio <= 1.0)
+    {
+        return Err(SimError::BadParameter {
+            name: "hit ratio",
+            value: min_ratio.to_string(),
+            expected: "a share in (0, 1]",
+            hint: "0.25 is GMapping's",
+        });
+    }
     let params = LogOddsParams {
+        rule,
         usable_range_m,
         clear_on_no_return: false,
         ..LogOddsParams::default()

@@ -37,7 +37,7 @@ pub use floor_plan::{
 };
 pub use ground_truth::ground_truth_image;
 pub use lidar::{LidarParams, Scan, simulate_scans};
-pub use log_odds::{GreyMap, LogOddsMap, LogOddsParams, MAX_CELLS};
+pub use log_odds::{GreyMap, LogOddsMap, LogOddsParams, MAX_CELLS, OccupancyRule};
 pub use map_log::{LogMap, map_carmen_log, map_scans};
 pub use map_writer::{encode_grey_png, encode_pgm, map_yaml, write_map};
 pub use prng::SplitMix64;
