@@ -9,7 +9,7 @@ use std::path::Path;
 use nrgdb::grid::{Cell, OccupancyGrid};
 use serde_json::Value;
 
-use crate::diff_support::{Rect, floor, turned, write_map};
+use crate::diff_support::{Floor, Rect, floor, turned, write_map};
 use crate::support::{nrgdb, nrgdb_ok};
 
 /// The floor's GT image: every free pixel white but the door gaps, which
@@ -26,6 +26,18 @@ fn gt_image(grid: &OccupancyGrid, doors: &[Rect]) -> image::GrayImage {
     })
 }
 
+/// A temporary folder holding the floor as `drawn.yaml` with its GT
+/// `drawn_gt.png`, and the floor.
+fn drawn_floor() -> (tempfile::TempDir, Floor) {
+    let dir = tempfile::tempdir().unwrap();
+    let f = floor();
+    write_map(dir.path(), "drawn", &f.grid);
+    gt_image(&f.grid, &f.doors)
+        .save(dir.path().join("drawn_gt.png"))
+        .unwrap();
+    (dir, f)
+}
+
 fn json(dir: &Path, args: &[&str]) -> Value {
     let out = nrgdb_ok(dir, args);
     serde_json::from_slice(&out.stdout).unwrap()
@@ -33,12 +45,7 @@ fn json(dir: &Path, args: &[&str]) -> Value {
 
 #[test]
 fn a_ground_truth_carried_onto_a_turned_and_moved_map_scores_as_on_its_own() {
-    let dir = tempfile::tempdir().unwrap();
-    let f = floor();
-    write_map(dir.path(), "drawn", &f.grid);
-    gt_image(&f.grid, &f.doors)
-        .save(dir.path().join("drawn_gt.png"))
-        .unwrap();
+    let (dir, f) = drawn_floor();
     // Another run's map: turned, padded, another origin.
     write_map(dir.path(), "run", &turned(&f.grid, 9, [4.0, -7.0, 0.0]));
 
@@ -89,12 +96,7 @@ fn a_ground_truth_carried_onto_a_turned_and_moved_map_scores_as_on_its_own() {
 
 #[test]
 fn a_map_of_another_building_is_refused_by_name() {
-    let dir = tempfile::tempdir().unwrap();
-    let f = floor();
-    write_map(dir.path(), "drawn", &f.grid);
-    gt_image(&f.grid, &f.doors)
-        .save(dir.path().join("drawn_gt.png"))
-        .unwrap();
+    let (dir, _) = drawn_floor();
     // A plain square room: no fit puts half its walls on the floor's.
     let (w, h) = (200u32, 200u32);
     let cells = (0..w * h)
