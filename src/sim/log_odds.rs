@@ -242,21 +242,27 @@ impl LogOddsMap {
         let free = p.l_free - p.l_prior;
         let occ = p.l_occ - p.l_prior;
         let (lo, hi) = (p.l_min, p.l_max);
-        let (cells, counts) = (&mut self.cells, &mut self.counts);
-        bresenham(x0, y0, x1, y1, |x, y| {
-            if x < 0 || y < 0 || x >= w || y >= h {
-                return;
-            }
-            let ends_here = hit && x == x1 && y == y1;
-            let i = (y * w + x) as usize;
-            if let Some(c) = cells.get_mut(i) {
-                *c = (*c + if ends_here { occ } else { free }).clamp(lo, hi);
-            }
-            if let Some(c) = counts.get_mut(i) {
-                let k = usize::from(!ends_here);
-                c[k] = c[k].saturating_add(1);
-            }
-        });
+        let inside = move |x: i64, y: i64| {
+            (x >= 0 && y >= 0 && x < w && y < h).then(|| (y * w + x) as usize)
+        };
+        // One loop per rule, so the log-odds loop stays as it was.
+        if matches!(p.rule, OccupancyRule::LogOdds) {
+            let cells = &mut self.cells;
+            bresenham(x0, y0, x1, y1, |x, y| {
+                let tau = if hit && x == x1 && y == y1 { occ } else { free };
+                if let Some(c) = inside(x, y).and_then(|i| cells.get_mut(i)) {
+                    *c = (*c + tau).clamp(lo, hi);
+                }
+            });
+        } else {
+            let counts = &mut self.counts;
+            bresenham(x0, y0, x1, y1, |x, y| {
+                let k = usize::from(!(hit && x == x1 && y == y1));
+                if let Some(c) = inside(x, y).and_then(|i| counts.get_mut(i)) {
+                    c[k] = c[k].saturating_add(1);
+                }
+            });
+        }
     }
 
     /// The map in ROS trinary grey: occupied 0, free 254, unknown 205.
