@@ -77,7 +77,6 @@ pub fn map_carmen_log(
             hint: "20 m suits indoor logs",
         });
     }
-    let scans = read_carmen(path)?;
     if let OccupancyRule::HitRatio { min_ratio, .. } = rule
         && !(min_ratio > 0.0 && min_ratio <= 1.0)
     {
@@ -88,6 +87,7 @@ pub fn map_carmen_log(
             hint: "0.25 is GMapping's",
         });
     }
+    let scans = read_carmen(path)?;
     let params = LogOddsParams {
         rule,
         usable_range_m,
