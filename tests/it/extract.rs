@@ -299,18 +299,9 @@ fn a_lidar_ray_into_unknown_space_is_not_a_room() {
     check_plan(&g, &ExtractParams::default());
 }
 
+/// The shared maps folder, or `None` with a notice (see `support::shared_dir`).
 fn shared() -> Option<PathBuf> {
-    let dir = std::env::var("NRGDB_SHARED")
-        .map(PathBuf::from)
-        .unwrap_or_else(|_| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../shared"));
-    if dir.join("maps").is_dir() {
-        return Some(dir.join("maps"));
-    }
-    if std::env::var("NRGDB_REQUIRE_SHARED").as_deref() == Ok("1") {
-        panic!("NRGDB_REQUIRE_SHARED=1 but {} has no maps/", dir.display());
-    }
-    eprintln!("skipping: shared maps not found at {}", dir.display());
-    None
+    crate::support::shared_dir("maps").map(|dir| dir.join("maps"))
 }
 
 #[test]

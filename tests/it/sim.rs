@@ -297,23 +297,9 @@ fn sim_map_log_maps_a_generated_log() {
     assert!(occupied > 15.0 && occupied < 40.0, "wall length {occupied}");
 }
 
-/// `NRGDB_SHARED` (default `../shared` next to the crate), or `None` with a
-/// notice when it is missing and `NRGDB_REQUIRE_SHARED` is not `1`.
+/// A file of the shared reference data, by its path inside it.
 fn shared_file(rel: &str) -> Option<PathBuf> {
-    let root = std::env::var_os("NRGDB_SHARED")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared"));
-    let path = root.join(rel);
-    if path.is_file() {
-        return Some(path);
-    }
-    assert!(
-        std::env::var("NRGDB_REQUIRE_SHARED").as_deref() != Ok("1"),
-        "{} is missing and NRGDB_REQUIRE_SHARED=1",
-        path.display()
-    );
-    eprintln!("skipping: {} not found (set NRGDB_SHARED)", path.display());
-    None
+    crate::support::shared_dir(rel).map(|dir| dir.join(rel))
 }
 
 #[test]

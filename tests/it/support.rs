@@ -6,13 +6,15 @@ use std::process::{Command, Output};
 
 use nrgdb::model::Nrg;
 
-/// `$NRGDB_SHARED` (default `../shared`), or `None` with a printed notice
-/// when it is missing; panics when `NRGDB_REQUIRE_SHARED=1` demands it.
+/// `$NRGDB_SHARED` (default `../shared`) as an absolute path, so that
+/// commands run in a temporary folder find it too, or `None` with a
+/// printed notice when it is missing; panics when `NRGDB_REQUIRE_SHARED=1`
+/// demands it.
 pub fn shared_dir(what: &str) -> Option<PathBuf> {
     let dir =
         std::env::var_os("NRGDB_SHARED").map_or_else(|| PathBuf::from("../shared"), PathBuf::from);
     if dir.join(what).exists() {
-        return Some(dir);
+        return Some(std::fs::canonicalize(&dir).unwrap_or(dir));
     }
     if std::env::var("NRGDB_REQUIRE_SHARED").as_deref() == Ok("1") {
         panic!(
