@@ -5,7 +5,7 @@
 //! under 15 m²); with their holes filled they are as wide as their walls
 //! make them (11 corridors, the corridor network).
 
-use crate::imaging::{Labels, Mask, distance_to_background, max_distance};
+use crate::imaging::{Labels, Mask, Run, distance_within_labels, label_runs};
 
 /// The widest inscribed diameter (px) of each region `1..=regions` with
 /// its holes filled (index 0 and labels above `regions`: 0). A hole is
@@ -14,132 +14,140 @@ use crate::imaging::{Labels, Mask, distance_to_background, max_distance};
 /// corridor, a courtyard) stays outside, and so does a hole wider than
 /// `max_hole` px (its widest inscribed diameter): a block of rooms the
 /// sensor never entered, which a corridor runs round.
+///
+/// The unlabelled pixels are taken apart once into 4-connected pieces; a
+/// piece is a hole of region `l` when every pixel beside it is `l` and it
+/// does not reach the map's edge. The holes' widths and then every
+/// region's filled width come from one distance transform each over the
+/// whole map ([`distance_within_labels`]).
 pub(crate) fn filled_diameters(labels: &Labels, regions: u32, max_hole: f64) -> Vec<f64> {
     let (w, h) = (labels.width as usize, labels.height as usize);
-    let boxes = labels.bounding_boxes();
     let mut out = vec![0.0; labels.count as usize + 1];
-    for l in 1..=regions.min(labels.count) {
-        let b = boxes[l as usize];
-        if b[0] > b[2] {
-            continue;
-        }
-        // The box grown by one, so the outside surrounds the region.
-        let (x0, y0) = (b[0] as i64 - 1, b[1] as i64 - 1);
-        let (bw, bh) = ((b[2] - b[0] + 3) as usize, (b[3] - b[1] + 3) as usize);
-        // The label at box pixel (x, y); None beyond the map.
-        let label_at = |x: usize, y: usize| {
-            let (gx, gy) = (x0 + x as i64, y0 + y as i64);
-            (gx >= 0 && gy >= 0 && (gx as usize) < w && (gy as usize) < h)
-                .then(|| labels.data[gy as usize * w + gx as usize])
-        };
-        // Outside: reached from the box's edge without crossing the region.
-        let mut outside = vec![false; bw * bh];
-        let mut stack: Vec<(usize, usize)> = Vec::new();
-        for x in 0..bw {
-            stack.push((x, 0));
-            stack.push((x, bh - 1));
-        }
-        for y in 0..bh {
-            stack.push((0, y));
-            stack.push((bw - 1, y));
-        }
-        // A hole holding another space (a block of rooms inside a ring
-        // corridor, a courtyard) is no clutter: outside too.
-        for y in 0..bh {
-            for x in 0..bw {
-                if label_at(x, y).is_some_and(|m| m != 0 && m != l) {
-                    stack.push((x, y));
-                }
+    if w == 0 || h == 0 || labels.data.len() != w * h {
+        return out;
+    }
+    let regions = regions.min(labels.count);
+    let holes = holes(labels, regions);
+    let mut filled = labels.data.clone();
+    if !holes.runs.is_empty() {
+        // A hole w px wide has pixels (w + 1) / 2 from its edge.
+        let radius = ((max_hole + 1.0) / 2.0) as f32;
+        let wide = wide_holes(&holes, w, h, radius);
+        for (run, &owner) in holes.runs.iter().zip(&holes.owner_of_run) {
+            if !wide[run.label as usize] {
+                let row = run.y as usize * w;
+                filled[row + run.x0 as usize..row + run.x1 as usize].fill(owner);
             }
         }
-        flood(&mut stack, bw, bh, |i| {
-            let enter = !outside[i] && label_at(i % bw, i / bw) != Some(l);
-            outside[i] |= enter;
-            enter
-        });
-        wide_holes_outside(
-            &mut outside,
-            bw,
-            bh,
-            |x, y| label_at(x, y) == Some(l),
-            max_hole,
-        );
-        let mask = Mask::from_fn(bw as u32, bh as u32, |x, y| {
-            image::Luma([if outside[y as usize * bw + x as usize] {
-                0
-            } else {
-                255
-            }])
-        });
-        let d = distance_to_background(&mask);
-        out[l as usize] = 2.0 * f64::from(max_distance(&d));
+    }
+    let d = distance_within_labels(&filled, w, h);
+    let mut widest = vec![0f32; labels.count as usize + 1];
+    for (&l, &v) in filled.iter().zip(&d) {
+        if let Some(m) = widest.get_mut(l as usize) {
+            *m = m.max(v);
+        }
+    }
+    for l in 1..=regions as usize {
+        out[l] = 2.0 * f64::from(widest[l]);
     }
     out
 }
 
-/// Marks outside every hole (a 4-connected piece of the box that is
-/// neither outside nor the region: `mine(x, y)`) wider than `max_hole` px.
-fn wide_holes_outside(
-    outside: &mut [bool],
-    bw: usize,
-    bh: usize,
-    mine: impl Fn(usize, usize) -> bool,
-    max_hole: f64,
-) {
-    let mut hole: Vec<bool> = (0..bw * bh)
-        .map(|i| !outside[i] && !mine(i % bw, i / bw))
-        .collect();
-    if !hole.contains(&true) {
-        return;
-    }
-    let mask = Mask::from_fn(bw as u32, bh as u32, |x, y| {
-        image::Luma([if hole[y as usize * bw + x as usize] {
-            255
-        } else {
-            0
-        }])
-    });
-    let d = distance_to_background(&mask);
-    // A hole w px wide has pixels (w + 1) / 2 from its edge.
-    let radius = ((max_hole + 1.0) / 2.0) as f32;
-    let mut stack: Vec<(usize, usize)> = (0..bw * bh)
-        .filter(|&i| d[i] > radius)
-        .map(|i| (i % bw, i / bw))
-        .collect();
-    flood(&mut stack, bw, bh, |i| {
-        let enter = hole[i];
-        hole[i] = false;
-        outside[i] |= enter;
-        enter
-    });
+/// The holes of the regions `1..=regions`: the 4-connected pieces of
+/// unlabelled pixels that stay off the map's edge with pixels of one such
+/// region all round them.
+struct Holes {
+    /// The holes' runs, `label` numbering the piece of unlabelled pixels.
+    runs: Vec<Run>,
+    /// The region enclosing each run's hole.
+    owner_of_run: Vec<u32>,
 }
 
-/// A 4-connected flood over a `bw` × `bh` box from the pixels on `stack`:
-/// `enter(i)` marks pixel `i` and says whether the flood goes on from it
-/// (it must say no once a pixel is marked).
-fn flood(
-    stack: &mut Vec<(usize, usize)>,
-    bw: usize,
-    bh: usize,
-    mut enter: impl FnMut(usize) -> bool,
-) {
-    while let Some((x, y)) = stack.pop() {
-        if !enter(y * bw + x) {
-            continue;
-        }
-        if x > 0 {
-            stack.push((x - 1, y));
-        }
-        if x + 1 < bw {
-            stack.push((x + 1, y));
-        }
-        if y > 0 {
-            stack.push((x, y - 1));
-        }
-        if y + 1 < bh {
-            stack.push((x, y + 1));
+/// The [`Holes`] of `labels`' regions `1..=regions`.
+fn holes(labels: &Labels, regions: u32) -> Holes {
+    const MIXED: u32 = u32::MAX;
+    let (w, h) = (labels.width as usize, labels.height as usize);
+    let unlabelled = Mask::from_raw(
+        labels.width,
+        labels.height,
+        labels
+            .data
+            .iter()
+            .map(|&l| if l == 0 { 255 } else { 0 })
+            .collect(),
+    )
+    .unwrap_or_else(|| Mask::new(labels.width, labels.height));
+    let pieces = label_runs(&unlabelled, false);
+    // The one label beside each piece (0: none yet, MIXED: several or the
+    // map's edge).
+    let mut beside = vec![0u32; pieces.count as usize + 1];
+    for (piece, edge) in beside.iter_mut().zip(pieces.touches_border()) {
+        if edge {
+            *piece = MIXED;
         }
     }
+    let mut meet = |piece: u32, l: u32| {
+        let b = &mut beside[piece as usize];
+        if l != 0 && *b != l {
+            *b = if *b == 0 { l } else { MIXED };
+        }
+    };
+    for run in &pieces.runs {
+        let (y, x0, x1) = (run.y as usize, run.x0 as usize, run.x1 as usize);
+        let row = &labels.data[y * w..(y + 1) * w];
+        if x0 > 0 {
+            meet(run.label, row[x0 - 1]);
+        }
+        if x1 < w {
+            meet(run.label, row[x1]);
+        }
+        for near in [y.wrapping_sub(1), y + 1].into_iter().filter(|&r| r < h) {
+            for &l in &labels.data[near * w + x0..near * w + x1] {
+                meet(run.label, l);
+            }
+        }
+    }
+    let owner = |piece: u32| {
+        let l = beside[piece as usize];
+        (l != 0 && l != MIXED && l <= regions).then_some(l)
+    };
+    let (runs, owner_of_run) = pieces
+        .runs
+        .iter()
+        .filter_map(|r| owner(r.label).map(|l| (*r, l)))
+        .unzip();
+    Holes { runs, owner_of_run }
+}
+
+/// Which pieces (by their number in `holes.runs`) are wider than a hole:
+/// some pixel lies more than `radius` from everything but the holes of the
+/// same region (the map's outside included), in a `w` × `h` map.
+fn wide_holes(holes: &Holes, w: usize, h: usize, radius: f32) -> Vec<bool> {
+    let pieces = holes.runs.iter().map(|r| r.label).max().unwrap_or(0);
+    let mut wide = vec![false; pieces as usize + 1];
+    // Only the holes' bounding box: every pixel outside it is no hole, as
+    // the transform takes the outside of its image to be.
+    let (mut x0, mut y0, mut x1, mut y1) = (w, h, 0, 0);
+    for r in &holes.runs {
+        (x0, y0) = (x0.min(r.x0 as usize), y0.min(r.y as usize));
+        (x1, y1) = (x1.max(r.x1 as usize), y1.max(r.y as usize + 1));
+    }
+    let bw = x1.saturating_sub(x0);
+    let bh = y1.saturating_sub(y0);
+    let mut owners = vec![0u32; bw * bh];
+    for (r, &owner) in holes.runs.iter().zip(&holes.owner_of_run) {
+        let row = (r.y as usize - y0) * bw;
+        owners[row + r.x0 as usize - x0..row + r.x1 as usize - x0].fill(owner);
+    }
+    let d = distance_within_labels(&owners, bw, bh);
+    for r in &holes.runs {
+        let row = (r.y as usize - y0) * bw;
+        let part = &d[row + r.x0 as usize - x0..row + r.x1 as usize - x0];
+        if part.iter().any(|&v| v > radius) {
+            wide[r.label as usize] = true;
+        }
+    }
+    wide
 }
 
 #[cfg(test)]
@@ -210,5 +218,47 @@ mod tests {
         assert_eq!(filled_diameters(&l, 1, 4.0)[1], 2.0);
         assert_eq!(filled_diameters(&l, 1, 5.0)[1], 8.0);
         assert_eq!(filled_diameters(&l, 1, 100.0)[1], 8.0);
+    }
+
+    #[test]
+    fn holes_at_the_maps_edge_or_beside_a_door_stay_outside() {
+        // Room `a` with a desk `#` in its middle and a notch `#` open to the
+        // map's edge at the right; `b` (above `regions`, a door) touches the
+        // second desk at the bottom.
+        let l = ascii_labels(&[
+            "aaaaaaaaa",
+            "aaaaaaaaa",
+            "aaa##aaa#",
+            "aaa##aaa#",
+            "aaaaaaaaa",
+            "aa##aaaaa",
+            "aa##bbaaa",
+        ]);
+        // Filled: the first desk only, so the room's width is that of the
+        // room with the desk's four pixels given to it.
+        let d = filled_diameters(&l, 1, 100.0);
+        let mut filled = l.clone();
+        for (x, y) in [(3, 2), (4, 2), (3, 3), (4, 3)] {
+            filled.data[y * 9 + x] = 1;
+        }
+        let want = 2.0
+            * f64::from(crate::imaging::max_distance(
+                &crate::imaging::distance_within_labels(&filled.data, 9, 7)
+                    .iter()
+                    .zip(&filled.data)
+                    .map(|(&d, &m)| if m == 1 { d } else { 0.0 })
+                    .collect::<Vec<_>>(),
+            ));
+        assert_eq!(d[1], want, "{d:?}");
+        assert_eq!(d[2], 0.0, "labels above `regions` are not measured");
+        // Filling the notch and the desk beside the door too would widen
+        // it, so the test tells the two apart.
+        let mut all = filled.clone();
+        for (x, y) in [(8, 2), (8, 3), (2, 5), (3, 5), (2, 6), (3, 6)] {
+            all.data[y * 9 + x] = 1;
+        }
+        let wider = crate::imaging::distance_within_labels(&all.data, 9, 7);
+        let wider = 2.0 * f64::from(wider.iter().copied().fold(0.0, f32::max));
+        assert!(wider > want, "{wider} {want}");
     }
 }

@@ -85,6 +85,34 @@ impl Frame {
             Frame::Right => (w - 1 - y, x),
         }
     }
+
+    /// Whether the frame's rows run the other way from those of its
+    /// upright image (`Down` of the image, `Right` of the transposed one).
+    fn flipped(self) -> bool {
+        matches!(self, Frame::Down | Frame::Right)
+    }
+
+    /// Whether the frame reads the image transposed (rows are columns).
+    fn transposed(self) -> bool {
+        matches!(self, Frame::Left | Frame::Right)
+    }
+}
+
+/// The `w` × `h` image `data` transposed (`h` × `w`), in 32-pixel tiles so
+/// that reads and writes both stay in cache.
+fn transpose(data: &[u8], w: usize, h: usize) -> Vec<u8> {
+    const TILE: usize = 32;
+    let mut out = vec![0u8; w * h];
+    for y0 in (0..h).step_by(TILE) {
+        for x0 in (0..w).step_by(TILE) {
+            for y in y0..(y0 + TILE).min(h) {
+                for x in x0..(x0 + TILE).min(w) {
+                    out[x * h + y] = data[y * w + x];
+                }
+            }
+        }
+    }
+    out
 }
 
 /// [`wall_stub_openings`] for walls along rows and columns.
@@ -92,13 +120,27 @@ fn axis_stub_openings(free: &Mask, limits: &WallStubLimits) -> Vec<WallGap> {
     let (w, h) = (i64::from(free.width()), i64::from(free.height()));
     let data = free.as_raw();
     let mut out = Vec::new();
+    let transposed = transpose(data, w as usize, h as usize);
     for frame in [Frame::Up, Frame::Down, Frame::Left, Frame::Right] {
         let (fw, fh) = frame.size(w, h);
+        if fw == 0 || fh == 0 {
+            continue;
+        }
+        // The image as the frame sees it, row by row (the rows in reverse
+        // order for a flipped frame), so that the scan below reads along
+        // its rows whatever way the stub points.
+        let upright: &[u8] = if frame.transposed() {
+            &transposed
+        } else {
+            data
+        };
+        let flip = frame.flipped();
+        let row = |y: i64| {
+            let r = if flip { fh - 1 - y } else { y } as usize;
+            &upright[r * fw as usize..(r + 1) * fw as usize]
+        };
         let is_free = |x: i64, y: i64| {
-            (0..fw).contains(&x) && (0..fh).contains(&y) && {
-                let (ix, iy) = frame.pixel(x, y, w, h);
-                data[(iy * w + ix) as usize] != 0
-            }
+            (0..fw).contains(&x) && (0..fh).contains(&y) && row(y)[x as usize] != 0
         };
         let stubs = StubFinder {
             is_free: &is_free,
@@ -106,17 +148,16 @@ fn axis_stub_openings(free: &Mask, limits: &WallStubLimits) -> Vec<WallGap> {
             limits,
         };
         for y in 1..fh {
+            let row = row(y);
             let mut x = 0;
-            while x < fw {
-                if is_free(x, y) {
-                    x += 1;
-                    continue;
-                }
-                let x0 = x;
-                while x < fw && !is_free(x, y) {
-                    x += 1;
-                }
-                if let Some((mid, hit)) = stubs.opening(x0, x, y) {
+            // Each run of wall in the row.
+            while let Some(start) = row[x..].iter().position(|&p| p == 0) {
+                let x0 = x + start;
+                x = row[x0..]
+                    .iter()
+                    .position(|&p| p != 0)
+                    .map_or(row.len(), |e| x0 + e);
+                if let Some((mid, hit)) = stubs.opening(x0 as i64, x as i64, y) {
                     out.push(WallGap {
                         line: (hit + 1..y)
                             .map(|r| {

@@ -109,6 +109,108 @@ fn meijster(mask: &Mask, outside: bool) -> Vec<f32> {
     out
 }
 
+/// Euclidean distance in pixels from each labelled pixel (label ≠ 0) to
+/// the nearest pixel of another label or none (0 on label 0); pixels
+/// outside the image count as another label. Each label's pixels get
+/// [`distance_to_background`] of that label's own mask, all labels in one
+/// pass of Meijster's transform: a column's distance runs to where its
+/// label changes, and a row's lower envelope is taken over each run of
+/// one label. `data` is `width` × `height` labels, row by row.
+///
+/// ```
+/// use nrgdb::imaging::distance_within_labels;
+/// // Two labels side by side: each is as wide as its own run.
+/// let d = distance_within_labels(&[1, 1, 1, 2, 2, 0], 6, 1);
+/// assert_eq!(d, vec![1.0, 1.0, 1.0, 1.0, 1.0, 0.0]);
+/// let d = distance_within_labels(&[1; 25], 5, 5);
+/// assert_eq!(d[12], 3.0);
+/// ```
+pub fn distance_within_labels(data: &[u32], width: usize, height: usize) -> Vec<f32> {
+    let (w, h) = (width, height);
+    let mut out = vec![0f32; data.len()];
+    if w == 0 || h == 0 || data.len() != w * h {
+        return out;
+    }
+    // Phase 1, per column: rows to the nearest pixel of another label (the
+    // rows just outside the image count as one), down then up.
+    let mut g = vec![0u32; w * h];
+    let mut above = vec![0u32; w];
+    for y in 0..h {
+        let row = &data[y * w..(y + 1) * w];
+        let up = if y > 0 {
+            &data[(y - 1) * w..y * w]
+        } else {
+            row
+        };
+        for (x, (a, o)) in above.iter_mut().zip(&mut g[y * w..(y + 1) * w]).enumerate() {
+            let l = row[x];
+            *a = if l == 0 {
+                0
+            } else if y > 0 && up[x] == l {
+                *a + 1
+            } else {
+                1
+            };
+            *o = *a;
+        }
+    }
+    let mut below = vec![0u32; w];
+    for y in (0..h).rev() {
+        let row = &data[y * w..(y + 1) * w];
+        let down = if y + 1 < h {
+            &data[(y + 1) * w..(y + 2) * w]
+        } else {
+            row
+        };
+        for (x, (b, o)) in below.iter_mut().zip(&mut g[y * w..(y + 1) * w]).enumerate() {
+            let l = row[x];
+            *b = if l == 0 {
+                0
+            } else if y + 1 < h && down[x] == l {
+                *b + 1
+            } else {
+                1
+            };
+            *o = (*o).min(*b);
+        }
+    }
+    // Phase 2, per row: each run of one label on its own, the pixels just
+    // beside it (another label) at distance 0.
+    let mut s = vec![0usize; w];
+    let mut t = vec![0i64; w];
+    let mut sq = vec![0i64; w];
+    for ((row, g_row), o_row) in data
+        .chunks_exact(w)
+        .zip(g.chunks_exact(w))
+        .zip(out.chunks_exact_mut(w))
+    {
+        let mut a = 0;
+        while a < w {
+            let l = row[a];
+            let b = row[a..].iter().position(|&m| m != l).map_or(w, |e| a + e);
+            if l != 0 {
+                let (lo, hi) = (a.saturating_sub(1), (b + 1).min(w));
+                for (x, q) in (lo..hi).zip(sq[lo..hi].iter_mut()) {
+                    *q = if (a..b).contains(&x) {
+                        i64::from(g_row[x]) * i64::from(g_row[x])
+                    } else {
+                        0
+                    };
+                }
+                lower_envelope(&sq[lo..hi], &mut s, &mut t, |i, d2| {
+                    let x = lo + i;
+                    if (a..b).contains(&x) {
+                        let edge = (x + 1).min(w - x) as i64;
+                        o_row[x] = (d2.min(edge * edge) as f64).sqrt() as f32;
+                    }
+                });
+            }
+            a = b;
+        }
+    }
+    out
+}
+
 /// The largest of `dist`, at least 0 (so 0 for an empty slice). Kept in
 /// independent lanes, so there is no chain of dependent compares; max is
 /// exact, so the result is the same as a fold in order.
@@ -281,5 +383,46 @@ mod tests {
         assert_eq!(distance_to_background(&m), reference(&m));
         let full = Mask::from_pixel(64, 33, image::Luma([255]));
         assert_eq!(distance_to_background(&full), reference(&full));
+    }
+
+    #[test]
+    fn within_labels_is_each_labels_own_transform() {
+        // Random label images of 0–3 labels in blobs: every labelled pixel
+        // gets the distance of its own label's mask (imageproc's transform,
+        // outside the image as background).
+        let mut seed = 11u64;
+        let mut next = |n: u64| {
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (seed >> 33) % n
+        };
+        for round in 0..200u32 {
+            let (w, h) = (1 + round % 29, 1 + (round * 5) % 23);
+            let mut data: Vec<u32> = (0..w * h).map(|_| next(4) as u32).collect();
+            // Grow blobs: copy a neighbour's label most of the time.
+            for i in 1..data.len() {
+                if next(4) != 0 {
+                    data[i] = data[i - 1];
+                }
+            }
+            let got = distance_within_labels(&data, w as usize, h as usize);
+            for l in 1..4u32 {
+                let m = Mask::from_fn(w, h, |x, y| {
+                    image::Luma([if data[(y * w + x) as usize] == l {
+                        255
+                    } else {
+                        0
+                    }])
+                });
+                let want = reference(&m);
+                for (i, (&d, &l2)) in got.iter().zip(&data).enumerate() {
+                    if l2 == l {
+                        assert_eq!(d, want[i], "{w}x{h} label {l} pixel {i}");
+                    }
+                }
+            }
+            assert!(got.iter().zip(&data).all(|(&d, &l)| l != 0 || d == 0.0));
+        }
     }
 }

@@ -23,7 +23,7 @@ mod watershed;
 pub use adjacency::{Adjacency, region_adjacency};
 pub use binarize::binarize;
 pub use distance::{
-    distance_to_background, distance_to_background_inside, max_distance,
+    distance_to_background, distance_to_background_inside, distance_within_labels, max_distance,
     squared_distance_to_foreground,
 };
 pub use label::{Labels, Run, RunLabels, label_components, label_runs};
