@@ -6,7 +6,7 @@
 
 use super::furniture::Islands;
 use crate::grid::{Cell, OccupancyGrid};
-use crate::imaging::{Labels, Mask, label_components};
+use crate::imaging::{Labels, Mask, label_runs};
 
 /// What a chord meets at a pixel.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -108,20 +108,22 @@ pub(crate) fn outside_pixels(
         .zip(&speck)
         .map(|(c, &s)| *c == Cell::Occupied && !s)
         .collect();
-    // The occupied pieces and their areas (cells).
-    let pieces = Mask::from_raw(
+    // The occupied cells of pieces of at least `obstacle_min` cells.
+    let mut big = vec![false; occupied.len()];
+    if let Some(mask) = Mask::from_raw(
         grid.width,
         grid.height,
         occupied.iter().map(|&o| if o { 255 } else { 0 }).collect(),
-    )
-    .map(|m| label_components(&m, true));
-    let areas = pieces.as_ref().map(Labels::areas).unwrap_or_default();
-    let big = |i: usize| {
-        pieces
-            .as_ref()
-            .and_then(|p| areas.get(p.data[i] as usize))
-            .is_some_and(|&a| a >= obstacle_min)
-    };
+    ) {
+        let pieces = label_runs(&mask, true);
+        let areas = pieces.areas();
+        for r in &pieces.runs {
+            if areas[r.label as usize] >= obstacle_min {
+                let i = r.y as usize * w;
+                big[i + r.x0 as usize..i + r.x1 as usize].fill(true);
+            }
+        }
+    }
     let mut rows = occupied.clone();
     for (row, out) in occupied.chunks(w.max(1)).zip(rows.chunks_mut(w.max(1))) {
         for x in 0..row.len() {
@@ -131,7 +133,7 @@ pub(crate) fn outside_pixels(
     (0..rows.len())
         .map(|i| {
             let wall = rows[i] || (i >= w && rows[i - w]) || rows.get(i + w).is_some_and(|&r| r);
-            if occupied[i] && big(i) {
+            if big[i] {
                 Pixel::Obstacle
             } else if wall {
                 Pixel::Wall

@@ -5,7 +5,7 @@
 //! under 15 m²); with their holes filled they are as wide as their walls
 //! make them (11 corridors, the corridor network).
 
-use crate::imaging::{Labels, Mask, Run, distance_within_labels, label_runs};
+use crate::imaging::{Labels, Mask, Run, distance_within_labels, label_runs, widest_within_labels};
 
 /// The widest inscribed diameter (px) of each region `1..=regions` with
 /// its holes filled (index 0 and labels above `regions`: 0). A hole is
@@ -40,13 +40,7 @@ pub(crate) fn filled_diameters(labels: &Labels, regions: u32, max_hole: f64) -> 
             }
         }
     }
-    let d = distance_within_labels(&filled, w, h);
-    let mut widest = vec![0f32; labels.count as usize + 1];
-    for (&l, &v) in filled.iter().zip(&d) {
-        if let Some(m) = widest.get_mut(l as usize) {
-            *m = m.max(v);
-        }
-    }
+    let widest = widest_within_labels(&filled, w, h, regions);
     for l in 1..=regions as usize {
         out[l] = 2.0 * f64::from(widest[l]);
     }

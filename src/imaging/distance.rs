@@ -126,10 +126,43 @@ fn meijster(mask: &Mask, outside: bool) -> Vec<f32> {
 /// assert_eq!(d[12], 3.0);
 /// ```
 pub fn distance_within_labels(data: &[u32], width: usize, height: usize) -> Vec<f32> {
-    let (w, h) = (width, height);
     let mut out = vec![0f32; data.len()];
+    within_label_runs(data, width, height, |y, a, _, run| {
+        out[y * width + a..y * width + a + run.len()].copy_from_slice(run);
+    });
+    out
+}
+
+/// The largest of [`distance_within_labels`] per label `0..=count` (labels
+/// above `count` are left out): twice it is the widest circle inside each
+/// label's pixels. The distances are not kept.
+///
+/// ```
+/// use nrgdb::imaging::widest_within_labels;
+/// let w = widest_within_labels(&[1, 1, 1, 2, 2, 0, 3], 7, 1, 2);
+/// assert_eq!(w, vec![0.0, 1.0, 1.0]);
+/// ```
+pub fn widest_within_labels(data: &[u32], width: usize, height: usize, count: u32) -> Vec<f32> {
+    let mut widest = vec![0f32; count as usize + 1];
+    within_label_runs(data, width, height, |_, _, l, run| {
+        if let Some(m) = widest.get_mut(l as usize) {
+            *m = run.iter().copied().fold(*m, f32::max);
+        }
+    });
+    widest
+}
+
+/// Meijster's transform for every label's own mask (see
+/// [`distance_within_labels`]): calls `run(y, a, label, distances)` for each
+/// run of one label ≠ 0 in row `y` starting at column `a`.
+fn within_label_runs(
+    data: &[u32],
+    w: usize,
+    h: usize,
+    mut run: impl FnMut(usize, usize, u32, &[f32]),
+) {
     if w == 0 || h == 0 || data.len() != w * h {
-        return out;
+        return;
     }
     // Phase 1, per column: rows to the nearest pixel of another label (the
     // rows just outside the image count as one), down then up.
@@ -179,11 +212,8 @@ pub fn distance_within_labels(data: &[u32], width: usize, height: usize) -> Vec<
     let mut s = vec![0usize; w];
     let mut t = vec![0i64; w];
     let mut sq = vec![0i64; w];
-    for ((row, g_row), o_row) in data
-        .chunks_exact(w)
-        .zip(g.chunks_exact(w))
-        .zip(out.chunks_exact_mut(w))
-    {
+    let mut found = vec![0f32; w];
+    for (y, (row, g_row)) in data.chunks_exact(w).zip(g.chunks_exact(w)).enumerate() {
         let mut a = 0;
         while a < w {
             let l = row[a];
@@ -201,14 +231,14 @@ pub fn distance_within_labels(data: &[u32], width: usize, height: usize) -> Vec<
                     let x = lo + i;
                     if (a..b).contains(&x) {
                         let edge = (x + 1).min(w - x) as i64;
-                        o_row[x] = (d2.min(edge * edge) as f64).sqrt() as f32;
+                        found[x] = (d2.min(edge * edge) as f64).sqrt() as f32;
                     }
                 });
+                run(y, a, l, &found[a..b]);
             }
             a = b;
         }
     }
-    out
 }
 
 /// The largest of `dist`, at least 0 (so 0 for an empty slice). Kept in

@@ -24,7 +24,7 @@ pub use adjacency::{Adjacency, region_adjacency};
 pub use binarize::binarize;
 pub use distance::{
     distance_to_background, distance_to_background_inside, distance_within_labels, max_distance,
-    squared_distance_to_foreground,
+    squared_distance_to_foreground, widest_within_labels,
 };
 pub use label::{Labels, Run, RunLabels, label_components, label_runs};
 pub(crate) use moments::{Moments, Principal};
