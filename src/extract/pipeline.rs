@@ -9,7 +9,7 @@ use std::time::{Duration, Instant};
 
 use super::build::{DoorLines, build};
 use super::ccl::segment_ccl;
-use super::chord_pixels::outside_pixels;
+use super::chord_pixels::{Pixel, outside_pixels};
 use super::clean::{FreeSpace, clean_free};
 use super::door_choice::{DoorCues, choose_doors};
 use super::doors::{Border, cut_doors};
@@ -103,24 +103,50 @@ pub fn extract(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extractio
 /// [`extract`] at the grid's own resolution.
 fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction, ExtractError> {
     let px = PixelConfig::new(params, grid.resolution);
-    let mut clock = Clock {
+    let clock = Clock {
         last: Instant::now(),
         timings: Vec::new(),
     };
     // The obstacles standing free, labelled once for the furniture filter,
     // the clutter the wall support rule knows and the doorway chords.
     let islands = islands(grid);
-    let mut free = clean(grid, &islands, params, &px)?;
+    // The doorway chords' pixel classes (see `chord_pixels::Pixel`) need
+    // only the map and its obstacles: they are worked out on another core
+    // while the free space is cleaned and segmented.
+    std::thread::scope(|scope| {
+        let outside =
+            scope.spawn(|| outside_pixels(grid, &islands, px.chord_speck_max, px.obstacle_min));
+        let outside = || {
+            outside
+                .join()
+                .unwrap_or_else(|panic| std::panic::resume_unwind(panic))
+        };
+        stages(grid, params, &px, &islands, clock, outside)
+    })
+}
+
+/// The stages of [`extract_at`] after the obstacles are labelled;
+/// `outside` gives the doorway chords' pixel classes when the doors are
+/// cut.
+fn stages(
+    grid: &OccupancyGrid,
+    params: &ExtractParams,
+    px: &PixelConfig,
+    islands: &Islands,
+    mut clock: Clock,
+    outside: impl FnOnce() -> Vec<Pixel>,
+) -> Result<Extraction, ExtractError> {
+    let mut free = clean(grid, islands, params, px)?;
     // The building's two directions, from the free space without noise.
     let deg = dominant_orientation(&free.clean);
     // Those of wings built at other angles.
     let further = further_wall_directions(&free.clean, deg);
-    let support = WallSupport::new(grid, &islands, deg, &further, px.support);
+    let support = WallSupport::new(grid, islands, deg, &further, px.support);
     let mut gaps = match &px.gaps {
         Some(limits) => doorway_gaps(&free.clean, deg, &further, *limits, &support),
         None => Vec::new(),
     };
-    let openings = openings(grid, &free, deg, &support, &px, &gaps);
+    let openings = openings(grid, &free, deg, &support, px, &gaps);
     gaps.extend(openings.iter().cloned());
     // A gap between pieces of clutter is no doorway in a wall.
     gaps.retain(|g| !support.lacks_gap(&g.line));
@@ -135,25 +161,26 @@ fn extract_at(grid: &OccupancyGrid, params: &ExtractParams) -> Result<Extraction
     close_gaps(&mut free.clean, &mut free.reachable, &gaps);
     let dist = distance_to_background(&free.clean);
     clock.lap("distance");
-    let mut labels = segment(&free, &dist, &px);
+    let mut labels = segment(&free, &dist, px);
     clock.lap("segment");
     merge_small(&mut labels, px.min_room_area);
     reopen_gaps(&mut labels, &gaps);
     let mut regions = Regions::new(labels, dist);
     clock.lap("merge");
-    regions.split_passages(&px);
+    regions.split_passages(px);
     clock.lap("passages");
-    regions.join_open(&gaps, &support, &px);
+    regions.join_open(&gaps, &support, px);
     clock.lap("joins");
     let cues = DoorCues {
         gaps: &gaps,
         skeleton: skeleton.as_deref(),
     };
-    let chosen = choose_doors(&mut regions, &cues, &px);
+    let chosen = choose_doors(&mut regions, &cues, px);
     let doors: Vec<&Border> = chosen.iter().map(|&k| &regions.borders[k]).collect();
     let door_pairs: Vec<(u32, u32)> = doors.iter().map(|b| b.pair).collect();
     let n_regions = regions.labels.count;
-    let (mut labels, mut door_lines) = span_doors(grid, &islands, &regions, &doors, &px);
+    let outside = outside();
+    let (mut labels, mut door_lines) = span_doors(grid, &outside, &regions, &doors, px);
     // An opening's door is as wide as the opening, jamb to jamb.
     let crossed = GapIndex::new(&openings, grid.width);
     for (line, door) in door_lines.iter_mut().zip(&doors) {
@@ -334,19 +361,19 @@ fn segment(free: &FreeSpace, dist: &[f32], px: &PixelConfig) -> Labels {
 /// Stage `doors` (the spans): each door cut across its doorway, from one
 /// face of the wall to the other, with its doorway line (pixels); then
 /// the unknown pockets and specks inside spaces joined to them.
+/// Doorway chords end at the map's walls; other pixels outside the
+/// regions may be noise or specks they cross (`outside`, see
+/// `chord_pixels::Pixel`).
 fn span_doors(
     grid: &OccupancyGrid,
-    islands: &Islands,
+    outside: &[Pixel],
     regions: &Regions,
     doors: &[&Border],
     px: &PixelConfig,
 ) -> (Labels, Vec<Option<[[f64; 2]; 2]>>) {
-    // Doorway chords end at the map's walls; other pixels outside the
-    // regions may be noise or specks they cross (see `chord_pixels::Pixel`).
-    let outside = outside_pixels(grid, islands, px.chord_speck_max, px.obstacle_min);
     let (mut labels, door_lines) = cut_doors(
         &regions.labels,
-        Some(&outside),
+        Some(outside),
         doors,
         &regions.dist,
         &px.span,
