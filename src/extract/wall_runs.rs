@@ -29,17 +29,24 @@ impl WallRuns {
             let along = along(a);
             // Each face pixel counts for its own line and the two beside it,
             // so a face a pixel off straight still makes one run.
-            let mut at: Vec<(i64, i64)> = face
+            // Sorted as one number each, the line's offset in the high
+            // half: the order of the pairs (offset, position along).
+            const BIAS: i64 = 1 << 31;
+            let mut keys: Vec<u64> = face
                 .iter()
                 .flat_map(|&p| {
                     let p = [f64::from(p[0]), f64::from(p[1])];
                     let off = project(p, a).round() as i64;
                     let t = project(p, along).round() as i64;
-                    (-1..=1).map(move |k| (off + k, t))
+                    (-1..=1).map(move |k| ((off + k + BIAS) as u64) << 32 | (t + BIAS) as u64)
                 })
                 .collect();
-            at.sort_unstable();
-            at.dedup();
+            keys.sort_unstable();
+            keys.dedup();
+            let at: Vec<(i64, i64)> = keys
+                .iter()
+                .map(|&k| ((k >> 32) as i64 - BIAS, (k & 0xffff_ffff) as i64 - BIAS))
+                .collect();
             let mut lines: HashMap<i64, Vec<Run>> = HashMap::new();
             for line in at.chunk_by(|a, b| a.0 == b.0) {
                 let mut start = line[0].1;

@@ -175,15 +175,24 @@ impl WallSupport {
         let directions: Vec<f64> = std::iter::once(deg)
             .chain(further.iter().copied())
             .collect();
+        // The two sets of runs, one on each core.
+        let runs_of = |face: &[[u32; 2]]| -> Vec<WallRuns> {
+            directions
+                .iter()
+                .map(|&d| WallRuns::new(face, d, min_run, limits.gap))
+                .collect()
+        };
+        let (runs, building_runs) = std::thread::scope(|scope| {
+            let building = scope.spawn(|| runs_of(&building_face));
+            let runs = runs_of(&face);
+            let building = building
+                .join()
+                .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+            (runs, building)
+        });
         WallSupport {
-            runs: directions
-                .iter()
-                .map(|&d| WallRuns::new(&face, d, min_run, limits.gap))
-                .collect(),
-            building_runs: directions
-                .iter()
-                .map(|&d| WallRuns::new(&building_face, d, min_run, limits.gap))
-                .collect(),
+            runs,
+            building_runs,
             ground,
             width: grid.width,
             height: grid.height,
