@@ -96,13 +96,28 @@ fn normal_histogram(mask: &Mask) -> [f64; 90] {
     let free =
         |x: i64, y: i64| x >= 0 && y >= 0 && x < w && y < h && data[(y * w + x) as usize] != 0;
     let r = NORMAL_RADIUS;
+    // The disk's offsets, with their step in the image's pixel order.
+    let disk: Vec<(i64, i64, i64)> = (-r..=r)
+        .flat_map(|dy| (-r..=r).map(move |dx| (dx, dy)))
+        .filter(|&(dx, dy)| dx * dx + dy * dy <= r * r)
+        .map(|(dx, dy)| (dx, dy, dy * w + dx))
+        .collect();
     let mut hist = [0.0f64; 90];
     for p in subsample(boundary_points(mask), NORMAL_POINTS) {
         let (x, y) = (p[0] as i64, p[1] as i64);
         let (mut gx, mut gy) = (0i64, 0i64);
-        for dy in -r..=r {
-            for dx in -r..=r {
-                if dx * dx + dy * dy <= r * r && free(x + dx, y + dy) {
+        if x >= r && y >= r && x + r < w && y + r < h {
+            // The whole disk inside the image: no bounds to check.
+            let at = y * w + x;
+            for &(dx, dy, step) in &disk {
+                if data[(at + step) as usize] != 0 {
+                    gx += dx;
+                    gy += dy;
+                }
+            }
+        } else {
+            for &(dx, dy, _) in &disk {
+                if free(x + dx, y + dy) {
                     gx += dx;
                     gy += dy;
                 }
