@@ -5,6 +5,8 @@
 //! under 15 m²); with their holes filled they are as wide as their walls
 //! make them (11 corridors, the corridor network).
 
+use std::borrow::Cow;
+
 use crate::imaging::{Labels, Mask, Run, distance_within_labels, label_runs, widest_within_labels};
 
 /// The widest inscribed diameter (px) of each region `1..=regions` with
@@ -17,9 +19,10 @@ use crate::imaging::{Labels, Mask, Run, distance_within_labels, label_runs, wide
 ///
 /// The unlabelled pixels are taken apart once into 4-connected pieces; a
 /// piece is a hole of region `l` when every pixel beside it is `l` and it
-/// does not reach the map's edge. The holes' widths and then every
-/// region's filled width come from one distance transform each over the
-/// whole map ([`distance_within_labels`]).
+/// does not reach the map's edge. The holes' widths
+/// ([`distance_within_labels`] over their bounding box) and then every
+/// region's filled width ([`widest_within_labels`] over the map) come from
+/// one distance transform each.
 pub(crate) fn filled_diameters(labels: &Labels, regions: u32, max_hole: f64) -> Vec<f64> {
     let (w, h) = (labels.width as usize, labels.height as usize);
     let mut out = vec![0.0; labels.count as usize + 1];
@@ -28,7 +31,9 @@ pub(crate) fn filled_diameters(labels: &Labels, regions: u32, max_hole: f64) -> 
     }
     let regions = regions.min(labels.count);
     let holes = holes(labels, regions);
-    let mut filled = labels.data.clone();
+    // The labels with the narrow holes given to their regions (a copy only
+    // when there is a hole).
+    let mut filled = Cow::Borrowed(labels.data.as_slice());
     if !holes.runs.is_empty() {
         // A hole w px wide has pixels (w + 1) / 2 from its edge.
         let radius = ((max_hole + 1.0) / 2.0) as f32;
@@ -36,7 +41,7 @@ pub(crate) fn filled_diameters(labels: &Labels, regions: u32, max_hole: f64) -> 
         for (run, &owner) in holes.runs.iter().zip(&holes.owner_of_run) {
             if !wide[run.label as usize] {
                 let row = run.y as usize * w;
-                filled[row + run.x0 as usize..row + run.x1 as usize].fill(owner);
+                filled.to_mut()[row + run.x0 as usize..row + run.x1 as usize].fill(owner);
             }
         }
     }
@@ -80,24 +85,29 @@ fn holes(labels: &Labels, regions: u32) -> Holes {
             *piece = MIXED;
         }
     }
-    let mut meet = |piece: u32, l: u32| {
-        let b = &mut beside[piece as usize];
+    // Meeting label `l` (0: an unlabelled pixel, the same piece).
+    let meet = |b: &mut u32, l: u32| {
         if l != 0 && *b != l {
             *b = if *b == 0 { l } else { MIXED };
         }
     };
     for run in &pieces.runs {
+        let b = &mut beside[run.label as usize];
+        if *b == MIXED {
+            // Already no hole (the map's outside, most of all).
+            continue;
+        }
         let (y, x0, x1) = (run.y as usize, run.x0 as usize, run.x1 as usize);
         let row = &labels.data[y * w..(y + 1) * w];
         if x0 > 0 {
-            meet(run.label, row[x0 - 1]);
+            meet(b, row[x0 - 1]);
         }
         if x1 < w {
-            meet(run.label, row[x1]);
+            meet(b, row[x1]);
         }
         for near in [y.wrapping_sub(1), y + 1].into_iter().filter(|&r| r < h) {
             for &l in &labels.data[near * w + x0..near * w + x1] {
-                meet(run.label, l);
+                meet(b, l);
             }
         }
     }
@@ -235,13 +245,17 @@ mod tests {
         for (x, y) in [(3, 2), (4, 2), (3, 3), (4, 3)] {
             filled.data[y * 9 + x] = 1;
         }
+        // Its width, by the plain transform of that mask.
+        let room = Mask::from_fn(9, 7, |x, y| {
+            image::Luma([if filled.data[(y * 9 + x) as usize] == 1 {
+                255
+            } else {
+                0
+            }])
+        });
         let want = 2.0
             * f64::from(crate::imaging::max_distance(
-                &crate::imaging::distance_within_labels(&filled.data, 9, 7)
-                    .iter()
-                    .zip(&filled.data)
-                    .map(|(&d, &m)| if m == 1 { d } else { 0.0 })
-                    .collect::<Vec<_>>(),
+                &crate::imaging::distance_to_background(&room),
             ));
         assert_eq!(d[1], want, "{d:?}");
         assert_eq!(d[2], 0.0, "labels above `regions` are not measured");

@@ -43,25 +43,24 @@ impl WallRuns {
                 .collect();
             keys.sort_unstable();
             keys.dedup();
-            let at: Vec<(i64, i64)> = keys
-                .iter()
-                .map(|&k| ((k >> 32) as i64 - BIAS, (k & 0xffff_ffff) as i64 - BIAS))
-                .collect();
+            let at = |k: u64| ((k >> 32) as i64 - BIAS, (k & 0xffff_ffff) as i64 - BIAS);
             let mut lines: HashMap<i64, Vec<Run>> = HashMap::new();
-            for line in at.chunk_by(|a, b| a.0 == b.0) {
-                let mut start = line[0].1;
+            for line in keys.chunk_by(|a, b| a >> 32 == b >> 32) {
+                let off = at(line[0]).0;
+                let mut start = at(line[0]).1;
                 let mut keep = |start: i64, last: i64| {
                     if (last - start + 1) as f64 >= min_run {
-                        lines.entry(line[0].0).or_default().push((start, last));
+                        lines.entry(off).or_default().push((start, last));
                     }
                 };
                 for w in line.windows(2) {
-                    if w[1].1 - w[0].1 > gap + 1 {
-                        keep(start, w[0].1);
-                        start = w[1].1;
+                    let (t0, t1) = (at(w[0]).1, at(w[1]).1);
+                    if t1 - t0 > gap + 1 {
+                        keep(start, t0);
+                        start = t1;
                     }
                 }
-                keep(start, line[line.len() - 1].1);
+                keep(start, at(line[line.len() - 1]).1);
             }
             lines
         });
